@@ -1,0 +1,84 @@
+#include "cli_app.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace vt::cli {
+namespace {
+
+const char kProgram[] = "valvetune-cli";
+
+void printHelp(std::ostream &out)
+{
+    out << "Usage: " << kProgram << " [--json] COMMAND [ARGS...]\n"
+        << "       " << kProgram << " --help | --version\n\n"
+        << "ValveTune on the command line: decode and build telegrams, inspect dictionaries and\n"
+        << "talk to devices.\n\n"
+        << "Options:\n"
+        << "  --json      machine-readable output (JSON) on stdout\n"
+        << "  --help      this text; COMMAND --help for a command's own options\n"
+        << "  --version   program version\n\n";
+    if (commands().empty()) {
+        out << "No commands are available in this version yet.\n";
+    } else {
+        out << "Commands:\n";
+        for (const Command &c : commands())
+            out << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ') << c.summary << '\n';
+    }
+    out << "\nExit codes: 0 ok, 1 device or protocol error, 2 usage error, 3 connection error,\n"
+        << "4 verification failed.\n";
+}
+
+} // namespace
+
+int Context::fail(int code, const std::string &message) const
+{
+    err << kProgram << ": " << message << '\n';
+    return code;
+}
+
+const std::vector<Command> &commands()
+{
+    static const std::vector<Command> list = {};
+    return list;
+}
+
+int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err)
+{
+    Context ctx{out, err};
+    QStringList rest = arguments.mid(1);
+    // Global options come before the command; --json is also accepted after it.
+    while (!rest.isEmpty() && rest.first().startsWith(QLatin1String("--"))) {
+        const QString opt = rest.takeFirst();
+        if (opt == QLatin1String("--help")) {
+            printHelp(out);
+            return kExitOk;
+        }
+        if (opt == QLatin1String("--version")) {
+            if (ctx.json)
+                out << nlohmann::ordered_json{{"name", kProgram}, {"version", VT_VERSION}}.dump() << '\n';
+            else
+                out << kProgram << ' ' << VT_VERSION << '\n';
+            return kExitOk;
+        }
+        if (opt == QLatin1String("--json")) {
+            ctx.json = true;
+            continue;
+        }
+        return ctx.fail(kExitUsage, "unknown option '" + opt.toStdString() + "' (see --help)");
+    }
+    if (rest.isEmpty())
+        return ctx.fail(kExitUsage, "no command given (see --help)");
+
+    const std::string name = rest.takeFirst().toStdString();
+    const auto &list = commands();
+    const auto it = std::find_if(list.begin(), list.end(), [&](const Command &c) { return c.name == name; });
+    if (it == list.end())
+        return ctx.fail(kExitUsage, "unknown command '" + name + "' (see --help)");
+    if (rest.removeAll(QStringLiteral("--json")) > 0)
+        ctx.json = true;
+    return it->run(rest, ctx);
+}
+
+} // namespace vt::cli

@@ -1,0 +1,47 @@
+// valvetune: the GUI. Parses the command line, picks the language (command line, then the
+// remembered choice, then the system locale) and shows the main window.
+#include "app/gui/app_settings.h"
+#include "app/gui/gui_options.h"
+#include "app/gui/language.h"
+#include "app/gui/main_window.h"
+
+#include <QApplication>
+#include <QGuiApplication>
+
+#include <cstdio>
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("ValveTune"));
+    QCoreApplication::setApplicationName(QStringLiteral("ValveTune"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));
+
+    QString help;
+    const vt::app::GuiOptions options = vt::app::parseGuiOptions(QCoreApplication::arguments(), &help);
+    if (options.exitNow) {
+        if (options.exitCode == -1) {
+            std::fputs(qPrintable(help), stdout);
+            return 0;
+        }
+        if (options.exitCode == -2) {
+            std::printf("valvetune %s\n", VT_VERSION);
+            return 0;
+        }
+        std::fprintf(stderr, "valvetune: %s\n", qPrintable(options.error));
+        return options.exitCode;
+    }
+
+    vt::app::AppSettings settings;
+    vt::app::Language language;
+    QString code = options.language;
+    if (code.isEmpty())
+        code = settings.language();
+    if (!vt::app::Language::isKnown(code))
+        code = vt::app::Language::systemDefault();
+    language.setLanguage(code);
+
+    vt::app::MainWindow window(settings, language);
+    window.show();
+    return QApplication::exec();
+}

@@ -1,0 +1,48 @@
+// Link: the one narrow interface every byte mover implements (serial, TCP, CAN, in-process
+// simulator, fault injection). A link moves whole frames or raw byte chunks; it knows nothing
+// of protocols. Owned by the session that opened it; lives on the thread it was created on and
+// is used only from there (blocking links run their I/O on a worker behind queued signals).
+#pragma once
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace vt::link {
+
+enum class LinkState { Closed, Opening, Open, Failed };
+
+class Link : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Link(QObject *parent = nullptr) : QObject(parent) {}
+    ~Link() override = default;
+
+    // Starts opening; the result arrives as stateChanged(Open) or failed().
+    virtual void open() = 0;
+    virtual void close() = 0;
+    // Queues bytes for sending; never blocks the calling thread.
+    virtual void send(const QByteArray &bytes) = 0;
+
+    // "serial /dev/ttyUSB0 19200 8E1", "tcp 127.0.0.1:502", "sim opat" — for the status bar
+    // and the telegram log.
+    virtual QString description() const = 0;
+
+    LinkState state() const { return m_state; }
+
+signals:
+    void received(const QByteArray &bytes);
+    void failed(const QString &reason);
+    void stateChanged(vt::link::LinkState state);
+
+protected:
+    void setState(LinkState state);
+
+private:
+    LinkState m_state = LinkState::Closed;
+};
+
+QString linkStateText(LinkState state);
+
+} // namespace vt::link
