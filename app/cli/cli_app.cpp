@@ -1,5 +1,7 @@
 #include "cli_app.h"
 
+#include "commands.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -40,7 +42,9 @@ int Context::fail(int code, const std::string &message) const
 
 const std::vector<Command> &commands()
 {
-    static const std::vector<Command> list = {};
+    static const std::vector<Command> list = {
+        {"dictionary", "list device families, show a family's parameters", runDictionary},
+    };
     return list;
 }
 

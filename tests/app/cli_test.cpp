@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <sstream>
@@ -74,4 +75,51 @@ TEST(Cli, TheInstalledBinaryKeepsTheExitCodes)
     const int status = pclose(p);
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 2);
+}
+
+TEST(CliDictionary, ListsTheFamilies)
+{
+    const CliRun r = cli({"--json", "dictionary", "list"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    ASSERT_EQ(doc.at("families").size(), 8u);
+    EXPECT_EQ(doc["families"][5]["family"], "opat");
+    EXPECT_EQ(doc["families"][5]["protocol"], "hcs");
+    const CliRun text = cli({"dictionary", "list"});
+    EXPECT_NE(text.out.find("wandfluh-sd7"), std::string::npos);
+}
+
+TEST(CliDictionary, ShowsEveryParameterWithItsMetadata)
+{
+    const CliRun r = cli({"dictionary", "show", "opat", "--json"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    const auto &rows = doc.at("parameters");
+    const auto it = std::find_if(rows.begin(), rows.end(), [](const auto &p) { return p["name"] == "C1.07"; });
+    ASSERT_NE(it, rows.end());
+    for (const char *key : {"name", "id", "block", "access", "type", "min", "max", "unit", "scale", "enum", "label_en", "label_de"})
+        EXPECT_TRUE(it->contains(key)) << key;
+    EXPECT_EQ((*it)["id"], 48);
+    EXPECT_EQ((*it)["unit"], "V");
+    EXPECT_EQ((*it)["max"], 9999);
+    EXPECT_EQ((*it)["scale"]["factor"], 0.001);
+    EXPECT_EQ((*it)["label_de"], "Totbereichkompensation A");
+
+    const CliRun wf = cli({"--json", "dictionary", "show", "wandfluh-ed1"});
+    const auto ed1 = nlohmann::json::parse(wf.out);
+    EXPECT_TRUE(ed1["parameters"][0].contains("ind"));
+    EXPECT_TRUE(ed1["parameters"][0].contains("pnu"));
+
+    const CliRun de = cli({"dictionary", "show", "opat", "--lang", "de"});
+    EXPECT_NE(de.out.find("Totbereichkompensation A  [0,000 V … 9,999 V]"), std::string::npos);
+}
+
+TEST(CliDictionary, UsageErrors)
+{
+    EXPECT_EQ(cli({"dictionary"}).code, vt::cli::kExitUsage);
+    EXPECT_EQ(cli({"dictionary", "show"}).code, vt::cli::kExitUsage);
+    EXPECT_EQ(cli({"dictionary", "show", "dma-pn-common"}).code, vt::cli::kExitUsage); // abstract
+    const CliRun r = cli({"dictionary", "show", "nope"});
+    EXPECT_EQ(r.code, vt::cli::kExitUsage);
+    EXPECT_EQ(r.err, "valvetune-cli: unknown family 'nope' (see: valvetune-cli dictionary list)\n");
 }

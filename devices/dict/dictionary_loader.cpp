@@ -1,0 +1,348 @@
+#include "dictionary_loader.h"
+
+#include "dictionary_validate.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <functional>
+#include <set>
+
+namespace vt::dev {
+namespace {
+
+using Json = nlohmann::json;
+
+struct RawFile
+{
+    std::string name;
+    Json doc;
+};
+
+// A family with its inheritance applied, still as JSON.
+struct Resolved
+{
+    Json header;                   // title, vendor, protocol, … (child keys over base keys)
+    Json scales = Json::object();
+    Json types = Json::object();
+    std::vector<Json> rows;
+};
+
+class Loader
+{
+public:
+    explicit Loader(const std::vector<DictionaryFile> &files) { parseAll(files); }
+
+    Result<DictionarySet, DictionaryErrors> run()
+    {
+        DictionarySet set;
+        for (const auto &[family, raw] : m_raw) {
+            try {
+                std::set<std::string> visiting;
+                const Resolved *r = resolve(family, visiting);
+                if (!r)
+                    continue;
+                if (auto dict = build(raw.name, family, *r))
+                    set.add(std::move(dict));
+            } catch (const Json::exception &e) { // a family-level key of the wrong JSON type
+                error(raw.name, {}, e.what());
+            }
+        }
+        if (!m_errors.empty())
+            return m_errors;
+        return set;
+    }
+
+private:
+    void error(const std::string &file, const std::string &row, const std::string &message)
+    {
+        m_errors.push_back({file, row, message});
+    }
+
+    void parseAll(const std::vector<DictionaryFile> &files)
+    {
+        for (const DictionaryFile &f : files) {
+            try {
+                parseOne(f);
+            } catch (const Json::exception &e) { // a file-level key of the wrong JSON type
+                error(f.name, {}, e.what());
+            }
+        }
+    }
+
+    void parseOne(const DictionaryFile &f)
+    {
+        {
+            Json doc = Json::parse(f.text, nullptr, /*allow_exceptions=*/false);
+            if (doc.is_discarded() || !doc.is_object()) {
+                error(f.name, {}, "not a JSON object (syntax error)");
+                return;
+            }
+            if (doc.value("schema", 0) != 1) {
+                error(f.name, {}, "unsupported or missing \"schema\" (expected 1)");
+                return;
+            }
+            const std::string family = doc.value("family", std::string());
+            if (family.empty() || f.name != family + ".json") {
+                error(f.name, {}, "\"family\" must equal the file name without .json");
+                return;
+            }
+            if (!doc.contains("parameters") || !doc["parameters"].is_array()) {
+                error(f.name, {}, "\"parameters\" must be an array");
+                return;
+            }
+            m_raw[family] = RawFile{f.name, std::move(doc)};
+        }
+    }
+
+    const Resolved *resolve(const std::string &family, std::set<std::string> &visiting)
+    {
+        if (auto it = m_resolved.find(family); it != m_resolved.end())
+            return &it->second;
+        const auto rawIt = m_raw.find(family);
+        if (rawIt == m_raw.end())
+            return nullptr;
+        const RawFile &raw = rawIt->second;
+        if (!visiting.insert(family).second) {
+            error(raw.name, {}, "\"extends\" forms a cycle");
+            return nullptr;
+        }
+
+        Resolved out;
+        const std::string base = raw.doc.value("extends", std::string());
+        if (!base.empty()) {
+            if (!m_raw.count(base)) {
+                error(raw.name, {}, "extends unknown family '" + base + "'");
+                return nullptr;
+            }
+            const Resolved *b = resolve(base, visiting);
+            if (!b)
+                return nullptr;
+            out = *b;
+        }
+        for (const char *key : {"title", "vendor", "protocol", "source", "versions", "modes"})
+            if (raw.doc.contains(key))
+                out.header[key] = raw.doc[key];
+        out.header["abstract"] = raw.doc.value("abstract", false);
+        if (raw.doc.contains("scales") && raw.doc["scales"].is_object())
+            out.scales.update(raw.doc["scales"]);
+        if (raw.doc.contains("types") && raw.doc["types"].is_object())
+            out.types.update(raw.doc["types"]);
+
+        std::size_t index = 0;
+        for (const Json &row : raw.doc["parameters"]) {
+            ++index;
+            if (!row.is_object() || !row.contains("name") || !row["name"].is_string()) {
+                error(raw.name, "#" + std::to_string(index), "row without a \"name\"");
+                continue;
+            }
+            const std::string name = row["name"].get<std::string>();
+            auto it = std::find_if(out.rows.begin(), out.rows.end(),
+                                   [&](const Json &r) { return r["name"] == name; });
+            if (it != out.rows.end() && !base.empty())
+                it->update(row); // derived row overrides the inherited one key by key
+            else
+                out.rows.push_back(row); // duplicates inside one file are caught by validation
+        }
+        if (raw.doc.contains("remove") && raw.doc["remove"].is_array()) {
+            for (const Json &n : raw.doc["remove"]) {
+                const auto before = out.rows.size();
+                std::erase_if(out.rows, [&](const Json &r) { return r["name"] == n; });
+                if (out.rows.size() == before)
+                    error(raw.name, n.is_string() ? n.get<std::string>() : "?", "\"remove\" names no inherited row");
+            }
+        }
+        visiting.erase(family);
+        return &m_resolved.emplace(family, std::move(out)).first->second;
+    }
+
+    static LocalText localText(const Json &j)
+    {
+        if (!j.is_object())
+            return {};
+        return {j.value("en", std::string()), j.value("de", std::string())};
+    }
+
+    std::shared_ptr<Dictionary> build(const std::string &file, const std::string &family, const Resolved &r)
+    {
+        auto dict = std::make_shared<Dictionary>();
+        dict->family = family;
+        dict->abstract = r.header.value("abstract", false);
+        dict->title = localText(r.header.value("title", Json::object()));
+        dict->vendor = r.header.value("vendor", std::string());
+        dict->source = r.header.value("source", std::string());
+        dict->versions = r.header.value("versions", std::vector<std::string>());
+        dict->modes = r.header.value("modes", std::vector<std::string>());
+        const std::string protocol = r.header.value("protocol", std::string());
+        if (protocol == "hcs")
+            dict->protocol = DeviceProtocol::Hcs;
+        else if (protocol == "dsp408")
+            dict->protocol = DeviceProtocol::Dsp408;
+        else if (protocol == "hart")
+            dict->protocol = DeviceProtocol::Hart;
+        else
+            error(file, {}, "unknown \"protocol\" '" + protocol + "'");
+
+        const std::size_t errorsBefore = m_errors.size();
+        for (const Json &row : r.rows) {
+            Json merged = row;
+            const std::string name = row["name"].get<std::string>();
+            if (row.contains("kind")) {
+                const std::string kind = row.value("kind", std::string());
+                if (!r.types.contains(kind)) {
+                    error(file, name, "unknown kind '" + kind + "'");
+                    continue;
+                }
+                merged = r.types[kind];
+                merged.update(row);
+            }
+            try {
+                if (auto meta = toMeta(file, name, merged, r.scales))
+                    dict->params.push_back(std::move(*meta));
+            } catch (const Json::exception &e) { // a key of the wrong JSON type
+                error(file, name, e.what());
+            }
+        }
+        dict->buildIndex();
+        for (DictionaryError &e : validateDictionary(*dict))
+            m_errors.push_back({file, e.row, e.message});
+        if (m_errors.size() != errorsBefore)
+            return nullptr;
+        return dict;
+    }
+
+    std::optional<ParamMeta> toMeta(const std::string &file, const std::string &name, const Json &j,
+                                    const Json &scales)
+    {
+        ParamMeta p;
+        p.name = name;
+        auto optInt = [&](const char *key) -> std::optional<int> {
+            if (!j.contains(key))
+                return std::nullopt;
+            if (!j[key].is_number_integer()) {
+                error(file, name, std::string("\"") + key + "\" must be an integer");
+                return std::nullopt;
+            }
+            return j[key].get<int>();
+        };
+        auto number = [&](const char *key, double fallback) {
+            if (!j.contains(key))
+                return fallback;
+            if (!j[key].is_number()) {
+                error(file, name, std::string("\"") + key + "\" must be a number");
+                return fallback;
+            }
+            return j[key].get<double>();
+        };
+        p.id = optInt("id");
+        p.ind = optInt("ind");
+        p.pnu = optInt("pnu");
+        p.instance = optInt("instance").value_or(0);
+        p.pzd = optInt("pzd");
+        p.branch = optInt("branch").value_or(0);
+        p.length = optInt("length").value_or(0);
+        p.block = j.value("block", std::string());
+
+        const auto access = parseAccess(j.value("access", std::string()));
+        if (!access) {
+            error(file, name, "missing or unknown \"access\"");
+            return std::nullopt;
+        }
+        p.access = *access;
+        const auto type = parseRawType(j.value("type", std::string()));
+        if (!type) {
+            error(file, name, "missing or unknown \"type\"");
+            return std::nullopt;
+        }
+        p.type = *type;
+        p.min = number("min", typeMin(p.type));
+        p.max = number("max", typeMax(p.type));
+        p.step = number("step", 1);
+        p.minParam = j.value("min_param", std::string());
+        p.maxParam = j.value("max_param", std::string());
+        if (j.contains("default"))
+            p.defaultValue = number("default", 0);
+        p.defaultAssumed = j.value("default_assumed", false);
+        p.unit = j.value("unit", std::string());
+
+        if (j.contains("scale")) {
+            const std::string s = j.value("scale", std::string());
+            if (!scales.contains(s)) {
+                error(file, name, "unknown scale '" + s + "'");
+                return std::nullopt;
+            }
+            const Json &sj = scales[s];
+            p.scale.name = s;
+            p.scale.factor = sj.value("factor", 0.0);
+            p.scale.decimals = sj.value("decimals", 0);
+            p.scale.rounding = sj.value("rounding", std::string("nearest")) == "truncate" ? Rounding::Truncate
+                                                                                           : Rounding::Nearest;
+            p.scale.assumed = sj.value("assumed", false);
+            p.scale.note = sj.value("note", std::string());
+            if (!(p.scale.factor > 0) || !std::isfinite(p.scale.factor) || p.scale.decimals < 0 || p.scale.decimals > 9) {
+                error(file, name, "scale '" + s + "' needs a positive factor and 0..9 decimals");
+                return std::nullopt;
+            }
+            // Every raw step must show as its own display value, or editing loses precision
+            // silently (and display -> raw no longer round-trips).
+            if (std::pow(10.0, -p.scale.decimals) > p.scale.factor * (1 + 1e-9)) {
+                error(file, name, "scale '" + s + "' shows too few decimals for one raw step");
+                return std::nullopt;
+            }
+        }
+        if (j.contains("enum")) {
+            for (const Json &e : j["enum"]) {
+                if (!e.contains("value") || !e["value"].is_number_integer()) {
+                    error(file, name, "enum entry without an integer \"value\"");
+                    continue;
+                }
+                p.enums.push_back({e["value"].get<std::int64_t>(), localText(e)});
+            }
+        }
+        if (j.contains("bits")) {
+            for (const Json &b : j["bits"]) {
+                if (!b.contains("bit") || !b["bit"].is_number_integer()) {
+                    error(file, name, "bit entry without an integer \"bit\"");
+                    continue;
+                }
+                p.bits.push_back({b["bit"].get<int>(), localText(b)});
+            }
+        }
+        p.modes = j.value("modes", std::vector<std::string>());
+        p.versions = j.value("versions", std::vector<std::string>());
+        const std::string persistence = j.value("persistence", std::string());
+        p.persistence = persistence == "eeprom"     ? Persistence::Eeprom
+                        : persistence == "volatile" ? Persistence::Volatile
+                                                    : Persistence::Unspecified;
+        if (j.contains("canopen")) {
+            const Json &c = j["canopen"];
+            p.canopen = CanObject{static_cast<std::uint16_t>(c.value("index", 0)), static_cast<std::uint8_t>(c.value("sub", 0))};
+        } else if (p.id) {
+            // ARCHITECTURE.md "CAN": HCS parameters live at the manufacturer object 0x2000 + ID.
+            p.canopen = CanObject{static_cast<std::uint16_t>(0x2000 + *p.id), 0};
+        }
+        p.label = localText(j.value("label", Json::object()));
+        p.description = localText(j.value("description", Json::object()));
+        p.note = j.value("note", std::string());
+        return p;
+    }
+
+    std::map<std::string, RawFile> m_raw;
+    std::map<std::string, Resolved> m_resolved;
+    DictionaryErrors m_errors;
+};
+
+} // namespace
+
+Result<DictionarySet, DictionaryErrors> loadDictionaries(const std::vector<DictionaryFile> &files)
+{
+    return Loader(files).run();
+}
+
+const Result<DictionarySet, DictionaryErrors> &builtinDictionaries()
+{
+    static const Result<DictionarySet, DictionaryErrors> set = loadDictionaries(embeddedDictionaryFiles());
+    return set;
+}
+
+} // namespace vt::dev
