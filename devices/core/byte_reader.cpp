@@ -2,34 +2,6 @@
 
 namespace vt::dev {
 
-bool ByteReader::take(std::size_t n)
-{
-    if (m_failed)
-        return false;
-    if (n > m_data.size() - m_pos) {
-        m_failed = true;
-        m_failOffset = m_data.size();
-        return false;
-    }
-    return true;
-}
-
-std::uint8_t ByteReader::u8()
-{
-    if (!take(1))
-        return 0;
-    return m_data[m_pos++];
-}
-
-std::uint16_t ByteReader::u16be()
-{
-    if (!take(2))
-        return 0;
-    const auto v = static_cast<std::uint16_t>((m_data[m_pos] << 8) | m_data[m_pos + 1]);
-    m_pos += 2;
-    return v;
-}
-
 std::uint16_t ByteReader::u16le()
 {
     if (!take(2))

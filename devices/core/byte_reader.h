@@ -14,8 +14,21 @@ class ByteReader
 public:
     explicit ByteReader(std::span<const std::uint8_t> data) : m_data(data) {}
 
-    std::uint8_t u8();
-    std::uint16_t u16be();
+    // Inline: codecs call these per field, and the wire decoders sit on the receive path.
+    std::uint8_t u8()
+    {
+        if (!take(1))
+            return 0;
+        return m_data[m_pos++];
+    }
+    std::uint16_t u16be()
+    {
+        if (!take(2))
+            return 0;
+        const auto v = static_cast<std::uint16_t>((m_data[m_pos] << 8) | m_data[m_pos + 1]);
+        m_pos += 2;
+        return v;
+    }
     std::uint16_t u16le();
     std::uint32_t u32be();
     std::int16_t i16be() { return static_cast<std::int16_t>(u16be()); }
@@ -33,7 +46,17 @@ public:
     std::span<const std::uint8_t> data() const { return m_data; }
 
 private:
-    bool take(std::size_t n);
+    bool take(std::size_t n)
+    {
+        if (m_failed)
+            return false;
+        if (n > m_data.size() - m_pos) {
+            m_failed = true;
+            m_failOffset = m_data.size();
+            return false;
+        }
+        return true;
+    }
 
     std::span<const std::uint8_t> m_data;
     std::size_t m_pos = 0;
