@@ -6,8 +6,9 @@ function(vt_warnings target)
         -Woverloaded-virtual -Wconversion -Wsign-conversion -Wformat=2
         -Werror)
     if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-        # -Wrestrict: GCC 12 at -O3 reports false positives inside std::string's operator+
-        # (GCC bug 105329, fixed in GCC 13).
-        target_compile_options(${target} PRIVATE -Wduplicated-cond -Wlogical-op -Wno-restrict)
+        # -Wrestrict and -Wstringop-overflow: GCC 12 at -O3 reports false positives inside
+        # libstdc++'s std::string and std::vector code (GCC bugs 105329 and 106199, fixed in 13).
+        target_compile_options(${target} PRIVATE -Wduplicated-cond -Wlogical-op -Wno-restrict
+                                                 -Wno-stringop-overflow)
     endif()
 endfunction()

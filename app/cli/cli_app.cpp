@@ -43,6 +43,8 @@ int Context::fail(int code, const std::string &message) const
 const std::vector<Command> &commands()
 {
     static const std::vector<Command> list = {
+        {"decode", "explain a telegram field by field (any protocol)", runDecode},
+        {"encode", "build gateway CMD 3/6/15 and Modbus RTU frames", runEncode},
         {"dictionary", "list device families, show a family's parameters", runDictionary},
     };
     return list;

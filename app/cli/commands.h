@@ -6,5 +6,7 @@
 namespace vt::cli {
 
 int runDictionary(const QStringList &args, Context &ctx);
+int runDecode(const QStringList &args, Context &ctx);
+int runEncode(const QStringList &args, Context &ctx);
 
 } // namespace vt::cli

@@ -59,10 +59,11 @@ void expectField(const ParamMeta &p, const std::string &key, const Json &want, c
             EXPECT_EQ(key == "enum" ? e->text.en : e->text.de, text.get<std::string>()) << ctx << " enum " << value;
         }
     } else if (key == "bit") {
-        for (const auto &[bit, text] : want.items()) {
-            const auto it = std::find_if(p.bits.begin(), p.bits.end(), [&](const BitLabel &b) { return b.bit == std::stoi(bit); });
+        for (const auto &item : want.items()) {
+            const int bit = std::stoi(item.key());
+            const auto it = std::find_if(p.bits.begin(), p.bits.end(), [bit](const BitLabel &b) { return b.bit == bit; });
             ASSERT_NE(it, p.bits.end()) << ctx << ": no bit " << bit;
-            EXPECT_EQ(it->text.en, text.get<std::string>()) << ctx << " bit " << bit;
+            EXPECT_EQ(it->text.en, item.value().get<std::string>()) << ctx << " bit " << bit;
         }
     } else {
         ADD_FAILURE() << ctx << ": unknown expectation key '" << key << "'";

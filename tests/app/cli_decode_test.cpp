@@ -1,0 +1,115 @@
+// valvetune-cli decode / encode golden tests (Protocol core issue, "CLI"): the manuals' worked
+// examples, error exits, and every protocol surviving garbage.
+#include "app/cli/cli_app.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace {
+
+struct Out
+{
+    int code;
+    std::string out;
+    std::string err;
+};
+
+Out run(QStringList args)
+{
+    args.prepend("valvetune-cli");
+    std::ostringstream out, err;
+    const int code = vt::cli::runCli(args, out, err);
+    return {code, out.str(), err.str()};
+}
+
+} // namespace
+
+// OPAT manual §2.7: write C1.07 = 1.000 V to the OPAT master: 23 00 06 00 30 03 E8.
+TEST(CliDecode, OpatWriteExampleFieldByField)
+{
+    const Out r = run({"--json", "decode", "--protocol", "gateway", "--family", "opat", "23 00 06 00 30 03 E8"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc["protocol"], "gateway");
+    EXPECT_EQ(doc["ok"], true);
+    EXPECT_TRUE(doc["error"].is_null());
+    const auto &f = doc["fields"];
+    ASSERT_GE(f.size(), 5u);
+    EXPECT_EQ(f[0]["key"], "TADR");
+    EXPECT_EQ(f[0]["value"], "0x23");
+    EXPECT_EQ(f[3]["offset"], 3);
+    EXPECT_EQ(f[3]["length"], 2);
+    EXPECT_NE(f[3]["text"].get<std::string>().find("C1.07"), std::string::npos); // named from the dictionary
+    EXPECT_NE(f[4]["text"].get<std::string>().find("1.000 V"), std::string::npos);
+    const Out de = run({"decode", "--protocol", "gateway", "--family", "opat", "--lang", "de", "23 00 06 00 30 03 E8"});
+    EXPECT_NE(de.out.find("1,000 V"), std::string::npos);
+}
+
+TEST(CliDecode, AFrameThatDoesNotDecodeIsOkFalseExitOne)
+{
+    const Out r = run({"--json", "decode", "--protocol", "gateway", "23 00"});
+    EXPECT_EQ(r.code, vt::cli::kExitDeviceError);
+    const auto doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc["ok"], false);
+    EXPECT_EQ(doc["error"]["offset"], 2);
+    EXPECT_FALSE(doc["error"]["reason"].get<std::string>().empty());
+    EXPECT_EQ(doc["fields"].size(), 2u); // as far as the bytes go
+}
+
+TEST(CliDecode, EveryProtocolSurvivesGarbage)
+{
+    for (const char *p : {"gateway", "modbus-rtu", "modbus-tcp", "profidrive", "pkw", "pzd", "hart", "canopen"}) {
+        for (const char *hex : {"00", "FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF", "83"}) {
+            const Out r = run({"--json", "decode", "--protocol", p, "--direction", "response", hex});
+            EXPECT_TRUE(r.code == 0 || r.code == 1) << p << " " << hex;
+            const auto doc = nlohmann::json::parse(r.out);
+            EXPECT_EQ(doc["protocol"], p);
+            EXPECT_EQ(doc["ok"], r.code == 0) << p << " " << hex;
+        }
+    }
+}
+
+TEST(CliDecode, UsageErrors)
+{
+    EXPECT_EQ(run({"decode", "23 00"}).code, vt::cli::kExitUsage);                                  // no --protocol
+    EXPECT_EQ(run({"decode", "--protocol", "smoke-signals", "23"}).code, vt::cli::kExitUsage);
+    EXPECT_EQ(run({"decode", "--protocol", "gateway", "23 0G"}).code, vt::cli::kExitUsage);        // not hex
+    EXPECT_EQ(run({"decode", "--protocol", "gateway"}).code, vt::cli::kExitUsage);                 // no frame
+    EXPECT_EQ(run({"decode", "--protocol", "gateway", "--family", "xyz", "23"}).code, vt::cli::kExitUsage);
+    EXPECT_EQ(run({"decode", "--protocol", "gateway", "--profile", "nope", "23 00 03"}).code, vt::cli::kExitUsage);
+}
+
+// OPAT manual §2.7 (CMD 6) and the classic Modbus reference frame 01 03 00 00 00 01 84 0A.
+TEST(CliEncode, BuildsTheManualsFrames)
+{
+    EXPECT_EQ(run({"encode", "gateway", "write", "--tadr", "0x23", "--sadr", "0", "--id", "0x30", "--value", "1000"}).out,
+              "23 00 06 00 30 03 E8\n");
+    EXPECT_EQ(run({"encode", "gateway", "read", "--tadr", "0x23", "--sadr", "0", "--id", "0x30"}).out,
+              "23 00 03 00 30 00 01\n");
+    EXPECT_EQ(run({"encode", "modbus-rtu", "read", "--unit", "1", "--id", "0"}).out, "01 03 00 00 00 01 84 0A\n");
+    const Out neg = run({"--json", "encode", "gateway", "write", "--tadr", "1", "--sadr", "2", "--id", "31", "--value", "-3000"});
+    EXPECT_EQ(nlohmann::json::parse(neg.out)["hex"], "01 02 06 00 1F F4 48");
+    // DMA CMD 15 for two modules: 3 + 5·2 bytes, SNUM = 2.
+    const Out cyc = run({"encode", "gateway", "cyclic", "--family", "dma", "--tadr", "1", "--module", "0,1000,0",
+                         "--module", "0,2000,0"});
+    EXPECT_EQ(cyc.out, "01 02 0F 00 03 E8 00 00 00 07 D0 00 00\n");
+}
+
+TEST(CliEncode, ImpossibleFramesAreUsageErrorsThatSayWhy)
+{
+    QStringList six = {"encode", "gateway", "cyclic", "--family", "dma", "--tadr", "1"};
+    for (int i = 0; i < 6; ++i)
+        six << "--module" << "0,0,0";
+    const Out r = run(six);
+    EXPECT_EQ(r.code, vt::cli::kExitUsage);
+    EXPECT_NE(r.err.find("cannot carry 6 modules"), std::string::npos) << r.err;
+    const Out count = run({"encode", "modbus-rtu", "read", "--unit", "1", "--id", "0", "--count", "9"});
+    EXPECT_EQ(count.code, vt::cli::kExitUsage);
+    EXPECT_NE(count.err.find("1 to 8"), std::string::npos);
+    EXPECT_EQ(run({"encode", "gateway", "write", "--tadr", "1", "--sadr", "0", "--id", "1"}).code, vt::cli::kExitUsage);
+    EXPECT_EQ(run({"encode", "gateway", "write", "--tadr", "256", "--sadr", "0", "--id", "1", "--value", "0"}).code,
+              vt::cli::kExitUsage);
+}
