@@ -1,0 +1,298 @@
+// SerialLink against a pseudo-terminal pair: the test holds the master, the link opens the slave
+// (issue "Links and session engine": serial link on libserialport, settings, unplug, reopen).
+// libserialport needs two test-only workarounds on a pty: the symlink path (pty_pair.h) and the
+// TIOCMGET shim (ioctl_shim.cpp).
+#include "ioctl_shim.h"
+#include "pty_pair.h"
+#include "qt_printers.h"
+#include "test_wait.h"
+#include "transports/serial_link.h"
+#include "transports/serial_ports.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <gtest/gtest.h>
+#include <memory>
+
+namespace {
+
+using vt::link::LinkState;
+using vt::link::Parity;
+using vt::link::SerialLink;
+using vt::link::SerialSettings;
+using vt::link::StopBits;
+using vt::test::PtyPair;
+using vt::test::waitForCount;
+using vt::test::waitForState;
+
+class SerialLinkPty : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        ASSERT_TRUE(m_dir.isValid());
+        m_symlink = m_dir.filePath(QStringLiteral("port"));
+        newPty();
+    }
+
+    // A fresh pty behind the same symlink: what re-plugging an adapter looks like to the link.
+    void newPty()
+    {
+        m_pty = std::make_unique<PtyPair>();
+        ASSERT_TRUE(m_pty->ok()) << m_pty->error().toStdString();
+        QFile::remove(m_symlink);
+        ASSERT_TRUE(QFile::link(m_pty->slavePath(), m_symlink));
+    }
+
+    QString portName() const { return vt::test::libserialportPath(m_symlink); }
+
+    // What the pty itself kept: speed, stop bits, PARODD, the raw-mode flags.
+    termios slaveTermios() const
+    {
+        termios t{};
+        EXPECT_TRUE(m_pty->slaveTermios(&t));
+        return t;
+    }
+
+    // What libserialport asked the driver for; the only place PARENB and CSIZE survive on a
+    // pty (see ioctl_shim.h).
+    termios requested() const
+    {
+        termios t{};
+        EXPECT_TRUE(vt::test::lastTermiosRequest(m_pty->slaveDevice(), &t));
+        return t;
+    }
+
+    QTemporaryDir m_dir;
+    QString m_symlink;
+    std::unique_ptr<PtyPair> m_pty;
+};
+
+TEST_F(SerialLinkPty, OpensAsynchronouslyAndMovesBytesBothWays)
+{
+    SerialLink link(SerialSettings::hcsDefault(portName()));
+    QSignalSpy received(&link, &SerialLink::received);
+    QSignalSpy failed(&link, &SerialLink::failed);
+
+    link.open();
+    // STYLE.md rule 9: open() only queues work for the worker; the caller never waits.
+    EXPECT_EQ(link.state(), LinkState::Opening);
+    ASSERT_TRUE(waitForState(link, LinkState::Open))
+        << failed.value(0).value(0).toString().toStdString();
+    m_pty->startReading();
+
+    const QByteArray request = QByteArray::fromHex("0103000000084a0c");
+    link.send(request);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return m_pty->received().size() >= request.size(); },
+                                vt::test::kTimeoutMs));
+    EXPECT_EQ(m_pty->received(), request);
+
+    const QByteArray answer = QByteArray::fromHex("010310000100020003000400050006000700089f4b");
+    ASSERT_TRUE(m_pty->write(answer));
+    QByteArray got;
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            for (; !received.isEmpty(); received.removeFirst())
+                got += received.first().value(0).toByteArray();
+            return got.size() >= answer.size();
+        },
+        vt::test::kTimeoutMs));
+    EXPECT_EQ(got, answer);
+    EXPECT_EQ(failed.count(), 0);
+
+    link.close();
+    EXPECT_EQ(link.state(), LinkState::Closed);
+}
+
+TEST_F(SerialLinkPty, HcsDefaultIs19200Baud8E1OnTheLine)
+{
+    SerialLink link(SerialSettings::hcsDefault(portName()));
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    const termios kept = slaveTermios();
+    EXPECT_EQ(cfgetospeed(&kept), static_cast<speed_t>(B19200));
+    EXPECT_EQ(cfgetispeed(&kept), static_cast<speed_t>(B19200));
+    EXPECT_EQ(kept.c_cflag & PARODD, 0u);
+    EXPECT_EQ(kept.c_cflag & CSTOPB, 0u);
+    EXPECT_EQ(kept.c_iflag & IGNPAR, 0u); // parity errors are not ignored: parity is on
+    // Raw: no canonical processing, echo or CR/LF translation that would eat or invent bytes.
+    EXPECT_EQ(kept.c_lflag & (ICANON | ECHO | ISIG), 0u);
+    EXPECT_EQ(kept.c_iflag & (ICRNL | INLCR | IGNCR), 0u);
+    EXPECT_EQ(kept.c_oflag & OPOST, 0u);
+
+    const termios asked = requested();
+    EXPECT_EQ(cfgetospeed(&asked), static_cast<speed_t>(B19200));
+    EXPECT_EQ(asked.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
+    EXPECT_NE(asked.c_cflag & PARENB, 0u);
+    EXPECT_EQ(asked.c_cflag & PARODD, 0u);
+    EXPECT_EQ(asked.c_cflag & CSTOPB, 0u);
+    EXPECT_EQ(link.description(), QStringLiteral("serial %1 19200 8E1").arg(portName()));
+}
+
+TEST_F(SerialLinkPty, HartPresetIs1200Baud8O1OnTheLine)
+{
+    SerialLink link(SerialSettings::hart(portName()));
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    const termios kept = slaveTermios();
+    EXPECT_EQ(cfgetospeed(&kept), static_cast<speed_t>(B1200));
+    EXPECT_NE(kept.c_cflag & PARODD, 0u);
+    EXPECT_EQ(kept.c_cflag & CSTOPB, 0u);
+
+    const termios asked = requested();
+    EXPECT_EQ(cfgetospeed(&asked), static_cast<speed_t>(B1200));
+    EXPECT_EQ(asked.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
+    EXPECT_NE(asked.c_cflag & PARENB, 0u);
+    EXPECT_NE(asked.c_cflag & PARODD, 0u);
+    EXPECT_EQ(asked.c_cflag & CSTOPB, 0u);
+}
+
+TEST_F(SerialLinkPty, NoParityTwoStopBitsAndSevenDataBits)
+{
+    SerialSettings s;
+    s.portName = portName();
+    s.baudRate = 9600;
+    ASSERT_TRUE(s.setFormatText(u"7N2"));
+    SerialLink link(s);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    const termios kept = slaveTermios();
+    EXPECT_EQ(cfgetospeed(&kept), static_cast<speed_t>(B9600));
+    EXPECT_NE(kept.c_cflag & CSTOPB, 0u);
+    EXPECT_NE(kept.c_iflag & IGNPAR, 0u); // libserialport's mark for "no parity"
+
+    const termios asked = requested();
+    EXPECT_EQ(asked.c_cflag & CSIZE, static_cast<tcflag_t>(CS7));
+    EXPECT_EQ(asked.c_cflag & PARENB, 0u);
+    EXPECT_NE(asked.c_cflag & CSTOPB, 0u);
+    EXPECT_EQ(link.description(), QStringLiteral("serial %1 9600 7N2").arg(portName()));
+}
+
+TEST_F(SerialLinkPty, UnpluggedFarSideFailsAndReopenWorks)
+{
+    SerialLink link(SerialSettings::hcsDefault(portName()));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    QSignalSpy received(&link, &SerialLink::received);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+
+    m_pty->closeMaster();
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+    EXPECT_FALSE(failed.first().value(0).toString().isEmpty());
+    // Sending on a failed link is a logged no-op, not a crash.
+    link.send(QByteArrayLiteral("ignored"));
+
+    newPty();
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    m_pty->startReading();
+    link.send(QByteArrayLiteral("again"));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return m_pty->received() == "again"; }, vt::test::kTimeoutMs));
+    ASSERT_TRUE(m_pty->write(QByteArrayLiteral("back")));
+    ASSERT_TRUE(waitForCount(received, 1));
+    EXPECT_EQ(received.first().value(0).toByteArray(), QByteArrayLiteral("back"));
+    EXPECT_EQ(failed.count(), 1);
+}
+
+TEST_F(SerialLinkPty, DestroyingAnOpenLinkJoinsTheWorker)
+{
+    auto link = std::make_unique<SerialLink>(SerialSettings::hcsDefault(portName()));
+    link->open();
+    ASSERT_TRUE(waitForState(*link, LinkState::Open));
+    link->send(QByteArrayLiteral("bye"));
+    link.reset();
+    // The port was released: a new link on the same pty opens again.
+    SerialLink again(SerialSettings::hcsDefault(portName()));
+    again.open();
+    EXPECT_TRUE(waitForState(again, LinkState::Open));
+}
+
+TEST(SerialLink, MissingPortFailsWithItsNameInTheReason)
+{
+    const QString name = QStringLiteral("/dev/ttyVT_no_such_port");
+    SerialLink link(SerialSettings::hcsDefault(name));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+    EXPECT_TRUE(failed.first().value(0).toString().contains(name))
+        << failed.first().value(0).toString().toStdString();
+}
+
+TEST(SerialLink, InvalidSettingsFailCleanly)
+{
+    SerialSettings s = SerialSettings::hcsDefault(QString());
+    SerialLink link(s);
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+}
+
+TEST(SerialLink, CloseBeforeOpenCompletesStaysClosed)
+{
+    SerialLink link(SerialSettings::hcsDefault(QStringLiteral("/dev/ttyVT_no_such_port")));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    QSignalSpy states(&link, &SerialLink::stateChanged);
+    link.open();
+    link.close();
+    EXPECT_EQ(link.state(), LinkState::Closed);
+    // The worker's late "not found" belongs to the closed session and is ignored.
+    EXPECT_FALSE(failed.wait(300));
+    EXPECT_EQ(link.state(), LinkState::Closed);
+}
+
+TEST(SerialPorts, EnumerationReturnsWithoutCrashing)
+{
+    const auto ports = vt::link::availableSerialPorts(); // may well be empty in a container
+    for (const auto &port : ports) {
+        EXPECT_FALSE(port.name.isEmpty());
+        EXPECT_FALSE(port.description.isEmpty());
+        EXPECT_TRUE(port.displayText().startsWith(port.name));
+    }
+}
+
+TEST(SerialPorts, DisplayTextShowsUsbIds)
+{
+    vt::link::SerialPortInfo info;
+    info.name = QStringLiteral("/dev/ttyUSB0");
+    info.description = QStringLiteral("FT232R USB UART");
+    info.transport = vt::link::SerialTransport::Usb;
+    info.usbVid = 0x0403;
+    info.usbPid = 0x6001;
+    EXPECT_EQ(info.displayText(), QStringLiteral("/dev/ttyUSB0 — FT232R USB UART (0403:6001)"));
+}
+
+TEST(SerialSettings, PresetsFromTheArchitecture)
+{
+    const auto hcs = SerialSettings::hcsDefault(QStringLiteral("/dev/ttyUSB0"));
+    EXPECT_EQ(hcs.baudRate, 19200);
+    EXPECT_EQ(hcs.formatText(), QStringLiteral("8E1"));
+    EXPECT_EQ(hcs.bitsPerCharacter(), 11);
+    const auto hart = SerialSettings::hart(QStringLiteral("/dev/ttyUSB1"));
+    EXPECT_EQ(hart.baudRate, 1200);
+    EXPECT_EQ(hart.formatText(), QStringLiteral("8O1"));
+    EXPECT_EQ(SerialLink(hart).description(), QStringLiteral("serial /dev/ttyUSB1 1200 8O1"));
+}
+
+TEST(SerialSettings, FormatTextParsesAndRejects)
+{
+    SerialSettings s;
+    EXPECT_TRUE(s.setFormatText(u"8n2"));
+    EXPECT_EQ(s.parity, Parity::None);
+    EXPECT_EQ(s.stopBits, StopBits::Two);
+    EXPECT_EQ(s.bitsPerCharacter(), 11);
+    for (const char16_t *bad : {u"", u"8E", u"9E1", u"8X1", u"8E3", u"8E11"}) {
+        EXPECT_FALSE(s.setFormatText(bad)) << QString::fromUtf16(bad).toStdString();
+    }
+    EXPECT_EQ(s.formatText(), QStringLiteral("8N2")); // untouched by the failures
+    s.portName = QStringLiteral("/dev/ttyS0");
+    EXPECT_FALSE(s.problem());
+    s.baudRate = 0;
+    EXPECT_TRUE(s.problem());
+}
+
+} // namespace

@@ -1,0 +1,52 @@
+// SerialWorker: the blocking half of SerialLink. It owns the libserialport handle and lives on
+// SerialLink's worker QThread; SerialLink reaches it only through queued calls and it answers
+// only through queued signals (STYLE.md rule 9). Every call and signal carries the session id of
+// the open() it belongs to, so the link can ignore what a previous session left in flight.
+// Created and destroyed by SerialLink; touched only on the worker thread once moved there.
+#pragma once
+
+#include "transports/serial_settings.h"
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+struct sp_port;
+class QSocketNotifier;
+
+namespace vt::link {
+
+class SerialWorker : public QObject
+{
+    Q_OBJECT
+public:
+    explicit SerialWorker(QObject *parent = nullptr);
+    ~SerialWorker() override;
+
+    // Closes whatever is open, then opens and configures the port: opened() or failed().
+    void openPort(quint64 session, const vt::link::SerialSettings &settings);
+    // Silent: the link already considers itself closed.
+    void closePort();
+    // Writes all bytes or fails; a write of the current session only.
+    void write(quint64 session, const QByteArray &bytes);
+
+signals:
+    void opened(quint64 session);
+    void failed(quint64 session, const QString &reason);
+    void received(quint64 session, const QByteArray &bytes);
+
+private:
+    void onReadable();
+    void fail(const QString &reason);
+    void release();
+    void warnIfNotApplied() const;
+    // libserialport's description of its last error ("No such file or directory").
+    static QString lastError();
+
+    sp_port *m_port = nullptr;
+    QSocketNotifier *m_notifier = nullptr;
+    quint64 m_session = 0;
+    SerialSettings m_settings;
+};
+
+} // namespace vt::link
