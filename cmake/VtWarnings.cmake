@@ -10,5 +10,10 @@ function(vt_warnings target)
         # libstdc++'s std::string and std::vector code (GCC bugs 105329 and 106199, fixed in 13).
         target_compile_options(${target} PRIVATE -Wduplicated-cond -Wlogical-op -Wno-restrict
                                                  -Wno-stringop-overflow)
+        if(VT_SANITIZE)
+            # ASan's instrumentation defeats GCC's flow analysis: std::variant members are then
+            # reported "maybe uninitialized" (GCC documents such false positives with sanitizers).
+            target_compile_options(${target} PRIVATE -Wno-maybe-uninitialized)
+        endif()
     endif()
 endfunction()
