@@ -71,7 +71,7 @@ void describeWordBits(std::uint16_t word, std::size_t offset, bool control,
 {
     for (int bit = 0; bit < 16; ++bit) {
         const LocalText text = control ? controlBitText(bit) : statusBitText(bit);
-        const bool set = (word >> bit) & 1u;
+        const bool set = ((static_cast<unsigned>(word) >> static_cast<unsigned>(bit)) & 1u) != 0;
         // Only the bits the manual names, plus any reserved bit that is set.
         if (!set && text.en == "reserved")
             continue;

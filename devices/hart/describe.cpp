@@ -56,7 +56,7 @@ void describeStatus(std::uint8_t rc, std::uint8_t status, std::size_t at, std::v
         out.push_back({"hart.response_code", at, 1, 0, hexByte(rc),
                        {"communication error", "Kommunikationsfehler"}});
         for (int bit = 6; bit >= 0; --bit)
-            if ((rc >> bit) & 1u)
+            if (((static_cast<unsigned>(rc) >> static_cast<unsigned>(bit)) & 1u) != 0)
                 out.push_back({"hart.comm_error.bit" + std::to_string(bit), at, 1, 1, "1", commErrorBitText(bit)});
     } else {
         out.push_back({"hart.response_code", at, 1, 0, std::to_string(rc), responseCodeText(rc)});
@@ -65,7 +65,7 @@ void describeStatus(std::uint8_t rc, std::uint8_t status, std::size_t at, std::v
                    status == 0 ? LocalText{"field device status: OK", "Feldgerätestatus: OK"}
                                : LocalText{"field device status", "Feldgerätestatus"}});
     for (int bit = 7; bit >= 0; --bit)
-        if ((status >> bit) & 1u)
+        if (((static_cast<unsigned>(status) >> static_cast<unsigned>(bit)) & 1u) != 0)
             out.push_back({"hart.device_status.bit" + std::to_string(bit), at + 1, 1, 1, "1",
                            deviceStatusBitText(bit)});
 }
