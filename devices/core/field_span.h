@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vt::dev {
@@ -30,6 +31,14 @@ struct Description
     LocalText summary;                // one line for the telegram list
 
     bool ok() const { return !error.has_value(); }
+    // The first field with this key, or nullptr (tests, the inspector's "jump to field").
+    const FieldSpan *field(std::string_view key) const
+    {
+        for (const FieldSpan &f : fields)
+            if (f.key == key)
+                return &f;
+        return nullptr;
+    }
 };
 
 } // namespace vt::dev

@@ -45,23 +45,11 @@ std::string signedText(std::uint16_t raw)
     return std::to_string(asSigned(raw));
 }
 
-// "ID 0x0030 (C1.07 …)" with the dictionary's name when the hook knows it.
-LocalText idText(std::uint16_t id, const DescribeOptions &o)
-{
-    LocalText t{"ID " + hexWord(id), "ID " + hexWord(id)};
-    if (o.parameters.name)
-        if (auto name = o.parameters.name(id))
-            t = {t.en + " (" + name->en + ")", t.de + " (" + name->de + ")"};
-    return t;
-}
+LocalText idText(std::uint16_t id, const DescribeOptions &o) { return o.parameters.idText(id, {"ID", "ID"}); }
 
 LocalText valueText(std::uint16_t id, std::uint16_t raw, bool idKnown, const DescribeOptions &o)
 {
-    LocalText t{hexWord(raw), hexWord(raw)};
-    if (idKnown && o.parameters.cook)
-        if (auto cooked = o.parameters.cook(id, raw))
-            t = {cooked->en + ", " + t.en, cooked->de + ", " + t.de};
-    return t;
+    return o.parameters.valueText(id, raw, idKnown);
 }
 
 LocalText commandText(std::uint8_t cmd)
@@ -268,6 +256,24 @@ Description describe(std::span<const std::uint8_t> frame, const DescribeOptions 
         d.summary = {"invalid HCS telegram: " + why.en, "ungültiges HCS-Telegramm: " + why.de};
     }
     return d;
+}
+
+LocalText ParameterHooks::idText(std::uint16_t id, const LocalText &prefix) const
+{
+    LocalText t{prefix.en + " " + hexWord(id), prefix.de + " " + hexWord(id)};
+    if (name)
+        if (auto n = name(id))
+            t = {t.en + " (" + n->en + ")", t.de + " (" + n->de + ")"};
+    return t;
+}
+
+LocalText ParameterHooks::valueText(std::uint16_t id, std::uint16_t raw, bool idKnown) const
+{
+    LocalText t{hexWord(raw), hexWord(raw)};
+    if (idKnown && cook)
+        if (auto cooked = cook(id, raw))
+            t = {cooked->en + ", " + t.en, cooked->de + ", " + t.de};
+    return t;
 }
 
 } // namespace vt::dev::hcs

@@ -22,6 +22,11 @@ struct ParameterHooks
 {
     std::function<std::optional<LocalText>(std::uint16_t id)> name{};
     std::function<std::optional<LocalText>(std::uint16_t id, std::uint16_t raw)> cook{};
+
+    // "<prefix> 0x0030 (C1.07 …)": the ID with the dictionary's name when the hook knows it.
+    LocalText idText(std::uint16_t id, const LocalText &prefix) const;
+    // "1.000 V, 0x03E8" when the value can be cooked (and the ID is known), else "0x03E8".
+    LocalText valueText(std::uint16_t id, std::uint16_t raw, bool idKnown) const;
 };
 
 struct DescribeOptions

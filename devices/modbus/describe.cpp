@@ -30,20 +30,12 @@ LocalText join(const LocalText &a, const LocalText &b, const char *sep = ": ")
 
 LocalText idText(std::uint16_t id, const DescribeOptions &o)
 {
-    LocalText t{"parameter ID " + hexWord(id), "Parameter-ID " + hexWord(id)};
-    if (o.parameters.name)
-        if (auto name = o.parameters.name(id))
-            t = {t.en + " (" + name->en + ")", t.de + " (" + name->de + ")"};
-    return t;
+    return o.parameters.idText(id, {"parameter ID", "Parameter-ID"});
 }
 
 LocalText valueText(std::uint16_t id, std::uint16_t raw, bool idKnown, const DescribeOptions &o)
 {
-    LocalText t{hexWord(raw), hexWord(raw)};
-    if (idKnown && o.parameters.cook)
-        if (auto cooked = o.parameters.cook(id, raw))
-            t = {cooked->en + ", " + t.en, cooked->de + ", " + t.de};
-    return t;
+    return o.parameters.valueText(id, raw, idKnown);
 }
 
 std::string signedText(std::uint16_t raw)

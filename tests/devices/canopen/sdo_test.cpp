@@ -11,12 +11,6 @@ using namespace vt::dev::canopen;
 
 namespace {
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 } // namespace
 
 TEST(CanopenSdo, Cia301CobIdRule)
@@ -155,10 +149,10 @@ TEST(CanopenSdo, DescribeUsesTheCobId)
     const CanFrame f = makeCanFrame(0x585, Bytes{0x4B, 0x41, 0x60, 0x00, 0x37, 0x02, 0x00, 0x00});
     const Description d = describeSdo(f);
     ASSERT_TRUE(d.ok()) << d.summary.en;
-    EXPECT_EQ(field(d, "can.id")->text.de, "COB-ID: SDO-Antwort von Knoten 5 (0x580 + Knoten)");
-    EXPECT_EQ(field(d, "sdo.index")->value, "0x6041");
-    EXPECT_EQ(field(d, "sdo.data")->value, "37 02 (567)");
-    EXPECT_EQ(field(d, "sdo.data")->length, 2u);
+    EXPECT_EQ(d.field("can.id")->text.de, "COB-ID: SDO-Antwort von Knoten 5 (0x580 + Knoten)");
+    EXPECT_EQ(d.field("sdo.index")->value, "0x6041");
+    EXPECT_EQ(d.field("sdo.data")->value, "37 02 (567)");
+    EXPECT_EQ(d.field("sdo.data")->length, 2u);
     EXPECT_EQ(d.summary.en, "node 5: upload response (value read) 0x6041/0 = 567 (2 bytes)");
     EXPECT_EQ(d.summary.de, "Knoten 5: Upload-Antwort (gelesener Wert) 0x6041/0 = 567 (2 Byte)");
     for (const FieldSpan &fs : d.fields)
@@ -166,7 +160,7 @@ TEST(CanopenSdo, DescribeUsesTheCobId)
 
     const Description a = describeSdo(makeCanFrame(0x605, Bytes{0x80, 0x40, 0x60, 0x00, 0x22, 0x00, 0x00, 0x08}));
     ASSERT_TRUE(a.ok());
-    EXPECT_EQ(field(a, "sdo.abort_code")->value, "0x08000022");
+    EXPECT_EQ(a.field("sdo.abort_code")->value, "0x08000022");
     // Without a COB-ID the direction option decides; a non-SDO id is an error.
     DescribeOptions response;
     response.direction = Direction::Response;

@@ -21,12 +21,6 @@ Options options(Direction direction, IndPosition ind = IndPosition::Byte2)
 const Options kRequest = options(Direction::Request);
 const Options kResponse = options(Direction::Response);
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 } // namespace
 
 // §4.6.1 example 1: write dop_drivePos_AsideVal (IND 3, PNU 73, uint16) = 450.
@@ -77,7 +71,7 @@ TEST(Dsp408Pkw, Section461Example2ReadByte)
 
     const Description d = describePkw(response, kResponse);
     ASSERT_TRUE(d.ok());
-    const FieldSpan *value = field(d, "pkw.value");
+    const FieldSpan *value = d.field("pkw.value");
     ASSERT_NE(value, nullptr);
     EXPECT_EQ(value->offset, 7u);
     EXPECT_EQ(value->length, 1u);
@@ -98,7 +92,7 @@ TEST(Dsp408Pkw, Section46ErrorResponse)
     EXPECT_TRUE(answers(*r, writeRequest(3, 73, ParamLength::Word, 5)));
     const Description d = describePkw(wire, kResponse);
     ASSERT_TRUE(d.ok());
-    const FieldSpan *err = field(d, "pkw.error");
+    const FieldSpan *err = d.field("pkw.error");
     ASSERT_NE(err, nullptr);
     EXPECT_EQ(err->offset, 6u);
     EXPECT_EQ(err->text.de, "Parameterwert nicht änderbar");
@@ -128,7 +122,7 @@ TEST(Dsp408Pkw, IndPositionOption)
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r->ind, 3);
     const Description d = describePkw(wire, swapped);
-    EXPECT_EQ(field(d, "pkw.ind")->offset, 3u);
+    EXPECT_EQ(d.field("pkw.ind")->offset, 3u);
 }
 
 TEST(Dsp408Pkw, RejectsWrongLengthAndReservedIds)
@@ -142,7 +136,7 @@ TEST(Dsp408Pkw, RejectsWrongLengthAndReservedIds)
     EXPECT_EQ(decodePkw(reserved).error().code, DecodeErrc::UnexpectedCommand);
     const Description d = describePkw(reserved);
     EXPECT_FALSE(d.ok());
-    EXPECT_NE(field(d, "pkw.pnu"), nullptr); // the layout is still shown
+    EXPECT_NE(d.field("pkw.pnu"), nullptr); // the layout is still shown
     // AK 10 is a request id only, AK 7 a response id only.
     const Bytes ak10{0xA0, 0x62, 0x03, 0, 0, 0, 0, 0};
     EXPECT_TRUE(decodePkw(ak10, kRequest).ok());

@@ -10,12 +10,6 @@ using namespace vt::dev::dsp408;
 
 namespace {
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 Options options(Direction direction, WordOrder order = WordOrder::HighWordFirst)
 {
     Options o;
@@ -54,13 +48,13 @@ TEST(Dsp408Pzd, Section451TelegramType1Response)
 
     const Description desc = describeTelegram(wire, response);
     ASSERT_TRUE(desc.ok()) << desc.summary.en;
-    EXPECT_EQ(field(desc, "telegram.type")->value, "1");
-    EXPECT_EQ(field(desc, "pkw.value")->value, "100");
-    const FieldSpan *actual = field(desc, "pzd.actual_value");
+    EXPECT_EQ(desc.field("telegram.type")->value, "1");
+    EXPECT_EQ(desc.field("pkw.value")->value, "100");
+    const FieldSpan *actual = desc.field("pzd.actual_value");
     ASSERT_NE(actual, nullptr);
     EXPECT_EQ(actual->offset, 10u);
     EXPECT_EQ(actual->value, "-2");
-    const FieldSpan *ready = field(desc, "pzd.status.bit3");
+    const FieldSpan *ready = desc.field("pzd.status.bit3");
     ASSERT_NE(ready, nullptr);
     EXPECT_EQ(ready->value, "1");
     EXPECT_EQ(ready->offset, 9u); // low byte of the big-endian status word
@@ -86,10 +80,10 @@ TEST(Dsp408Pzd, Section482ControlWordBitsDescribed)
     const Bytes wire{0x40, 0x0F, 0x00, 0x00, 0x00, 0x00};
     const Description d = describeTelegram(wire);
     ASSERT_TRUE(d.ok());
-    EXPECT_EQ(field(d, "pzd.control_word")->value, "0x400F");
-    EXPECT_EQ(field(d, "pzd.control.bit14")->offset, 0u);
-    EXPECT_EQ(field(d, "pzd.control.bit3")->text.de, "Fehler quittieren (R)");
-    EXPECT_EQ(field(d, "pzd.control.bit5"), nullptr); // reserved and clear: not shown
+    EXPECT_EQ(d.field("pzd.control_word")->value, "0x400F");
+    EXPECT_EQ(d.field("pzd.control.bit14")->offset, 0u);
+    EXPECT_EQ(d.field("pzd.control.bit3")->text.de, "Fehler quittieren (R)");
+    EXPECT_EQ(d.field("pzd.control.bit5"), nullptr); // reserved and clear: not shown
     EXPECT_EQ(d.summary.en, "control word 0x400F, set value 0");
 }
 
@@ -110,5 +104,5 @@ TEST(Dsp408Pzd, LengthsAndTypes)
     bad[0] = 0x40;
     const Description d = describeTelegram(bad);
     EXPECT_FALSE(d.ok());
-    EXPECT_NE(field(d, "pkw.ak"), nullptr);
+    EXPECT_NE(d.field("pkw.ak"), nullptr);
 }

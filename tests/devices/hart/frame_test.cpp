@@ -12,12 +12,6 @@ using namespace vt::dev::hart;
 
 namespace {
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 Bytes withPreambles(Bytes pdu, std::size_t n = 5)
 {
     pdu.insert(pdu.begin(), n, 0xFF);
@@ -127,16 +121,16 @@ TEST(HartFrame, Section441DescribeExample1Response)
     const Bytes response = withPreambles({0x86, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x07, 0x00, 0x00, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x1E});
     const Description d = describeFrame(response);
     ASSERT_TRUE(d.ok()) << d.summary.en;
-    EXPECT_EQ(field(d, "hart.preambles")->length, 5u);
-    EXPECT_EQ(field(d, "hart.address.device_type")->value, "0x23F0");
-    EXPECT_EQ(field(d, "hart.address.device_id")->value, std::to_string(0x123456));
-    EXPECT_EQ(field(d, "hart.command")->value, "131");
-    EXPECT_EQ(field(d, "hart.byte_count")->value, "7");
-    EXPECT_EQ(field(d, "hart.response_code")->text.de, "kein Fehler");
-    EXPECT_EQ(field(d, "hart.param.ind")->value, "250");
-    EXPECT_EQ(field(d, "hart.param.ind")->offset, 15u);
-    EXPECT_EQ(field(d, "hart.param.value")->value, "450 (0x01C2)");
-    EXPECT_EQ(field(d, "hart.checksum")->offset, 20u);
+    EXPECT_EQ(d.field("hart.preambles")->length, 5u);
+    EXPECT_EQ(d.field("hart.address.device_type")->value, "0x23F0");
+    EXPECT_EQ(d.field("hart.address.device_id")->value, std::to_string(0x123456));
+    EXPECT_EQ(d.field("hart.command")->value, "131");
+    EXPECT_EQ(d.field("hart.byte_count")->value, "7");
+    EXPECT_EQ(d.field("hart.response_code")->text.de, "kein Fehler");
+    EXPECT_EQ(d.field("hart.param.ind")->value, "250");
+    EXPECT_EQ(d.field("hart.param.ind")->offset, 15u);
+    EXPECT_EQ(d.field("hart.param.value")->value, "450 (0x01C2)");
+    EXPECT_EQ(d.field("hart.checksum")->offset, 20u);
     EXPECT_EQ(d.summary.en, "ACK 0x23F0/1193046 cmd 131 Write parameter (2 bytes): no error");
     for (const FieldSpan &f : d.fields)
         EXPECT_TRUE(f.text.complete()) << f.key;
@@ -148,21 +142,21 @@ TEST(HartFrame, DescribeShowsStatusBitsAndErrors)
     Frame f = makeResponse(shortAddress(0), 131, 5, 0x30);
     const Description d = describeFrame(*encodeFrame(f));
     ASSERT_TRUE(d.ok()) << d.summary.en;
-    EXPECT_EQ(field(d, "hart.response_code")->text.en, "wrong byte count (too few data bytes)");
-    EXPECT_EQ(field(d, "hart.device_status.bit5")->text.de, "Kaltstart");
-    EXPECT_NE(field(d, "hart.device_status.bit4"), nullptr);
+    EXPECT_EQ(d.field("hart.response_code")->text.en, "wrong byte count (too few data bytes)");
+    EXPECT_EQ(d.field("hart.device_status.bit5")->text.de, "Kaltstart");
+    EXPECT_NE(d.field("hart.device_status.bit4"), nullptr);
     // Communication error: bit 7 set, bits name the faults.
     f.responseCode = 0x88;
     const Description c = describeFrame(*encodeFrame(f));
-    EXPECT_EQ(field(c, "hart.comm_error.bit3")->text.en, "longitudinal parity error");
+    EXPECT_EQ(c.field("hart.comm_error.bit3")->text.en, "longitudinal parity error");
     // A bad checksum still shows the whole frame.
     Bytes bad = *encodeFrame(makeRequest(kSd733, 132, {0xEE, 0x08, 0x00}));
     bad.back() ^= 0xFF;
     const Description b = describeFrame(bad);
     EXPECT_FALSE(b.ok());
     EXPECT_EQ(b.error->code, DecodeErrc::BadChecksum);
-    EXPECT_EQ(field(b, "hart.param.pnu")->value, "8");
-    EXPECT_NE(field(b, "hart.checksum")->text.en.find("expected"), std::string::npos);
+    EXPECT_EQ(b.field("hart.param.pnu")->value, "8");
+    EXPECT_NE(b.field("hart.checksum")->text.en.find("expected"), std::string::npos);
     // Malformed payload: command 131 with 4 data bytes.
     const Description p = describeFrame(*encodeFrame(makeRequest(kSd733, 131, {0xFA, 0x06, 0x00, 0x01})));
     EXPECT_FALSE(p.ok());

@@ -12,12 +12,6 @@ using namespace vt::dev::hart;
 
 namespace {
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 // A Wandfluh SD733 as §3.4 / §6.4 describe it: manufacturer 24835 (0x6103), device type 58352.
 Identity sd733()
 {
@@ -157,16 +151,16 @@ TEST(HartUniversal, DescribeCommand0Response)
     const Frame f = makeResponse(shortAddress(0), 0, 0, 0, encodePayload(sd733()));
     const Description d = describeFrame(*encodeFrame(f));
     ASSERT_TRUE(d.ok()) << d.summary.en;
-    const FieldSpan *mfr = field(d, "hart.cmd0.manufacturer_id");
+    const FieldSpan *mfr = d.field("hart.cmd0.manufacturer_id");
     ASSERT_NE(mfr, nullptr);
     EXPECT_EQ(mfr->value, "24835");
     EXPECT_EQ(mfr->offset, 5u + 6u + 17u); // preambles, header + status, byte 17 of the data
-    EXPECT_EQ(field(d, "hart.cmd0.device_id")->value, std::to_string(0x123456));
-    EXPECT_EQ(field(d, "hart.cmd0.expanded_device_type")->value, "0xE3F0");
+    EXPECT_EQ(d.field("hart.cmd0.device_id")->value, std::to_string(0x123456));
+    EXPECT_EQ(d.field("hart.cmd0.expanded_device_type")->value, "0xE3F0");
     for (const FieldSpan &fs : d.fields)
         EXPECT_TRUE(fs.text.complete()) << fs.key;
     // A truncated identity is an error, shown as far as it goes.
     const Description t = describeFrame(*encodeFrame(makeResponse(shortAddress(0), 0, 0, 0, Bytes(5, 1))));
     EXPECT_FALSE(t.ok());
-    EXPECT_NE(field(t, "hart.cmd0.min_request_preambles"), nullptr);
+    EXPECT_NE(t.field("hart.cmd0.min_request_preambles"), nullptr);
 }

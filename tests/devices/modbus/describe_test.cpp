@@ -14,12 +14,6 @@ using namespace vt::test::modbus_vectors;
 
 namespace {
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 bool contains(const std::string &text, const std::string &part)
 {
     return text.find(part) != std::string::npos;
@@ -39,18 +33,18 @@ TEST(ModbusDescribe, RtuReadRequest)
     const Description d = describeRtu(kRtuReadD107, opts(Direction::Request));
     ASSERT_TRUE(d.ok());
     EXPECT_EQ(d.protocol, "modbus-rtu");
-    EXPECT_EQ(field(d, "unit")->value, "1");
-    EXPECT_EQ(field(d, "pdu.function")->value, "0x03");
-    EXPECT_TRUE(contains(field(d, "pdu.function")->text.en, "HCS CMD 3"));
-    EXPECT_EQ(field(d, "pdu.start")->value, "0x0007");
-    EXPECT_TRUE(contains(field(d, "pdu.start")->text.en, "parameter ID 0x0007"));
-    EXPECT_EQ(field(d, "pdu.count")->value, "1");
-    const FieldSpan *crc = field(d, "crc");
+    EXPECT_EQ(d.field("unit")->value, "1");
+    EXPECT_EQ(d.field("pdu.function")->value, "0x03");
+    EXPECT_TRUE(contains(d.field("pdu.function")->text.en, "HCS CMD 3"));
+    EXPECT_EQ(d.field("pdu.start")->value, "0x0007");
+    EXPECT_TRUE(contains(d.field("pdu.start")->text.en, "parameter ID 0x0007"));
+    EXPECT_EQ(d.field("pdu.count")->value, "1");
+    const FieldSpan *crc = d.field("crc");
     ASSERT_NE(crc, nullptr);
     EXPECT_EQ(crc->offset, 6u);
     EXPECT_EQ(crc->value, "0xCB35"); // sent low byte first: 35 CB
     EXPECT_TRUE(contains(crc->text.en, "correct"));
-    EXPECT_EQ(field(d, "note"), nullptr);
+    EXPECT_EQ(d.field("note"), nullptr);
     EXPECT_TRUE(contains(d.summary.en, "FC 3 read 1 register(s) from 0x0007 (unit 1)"));
 }
 
@@ -65,7 +59,7 @@ TEST(ModbusDescribe, RtuResponseNamesRegistersByTheRequestStart)
     };
     const Description d = describeRtu(kRtuReadD107Response, o);
     ASSERT_TRUE(d.ok());
-    const FieldSpan *r1 = field(d, "pdu.register1");
+    const FieldSpan *r1 = d.field("pdu.register1");
     ASSERT_NE(r1, nullptr);
     EXPECT_EQ(r1->offset, 3u);
     EXPECT_EQ(r1->value, "307");
@@ -78,11 +72,11 @@ TEST(ModbusDescribe, ExceptionWithHcsMeaning)
     DescribeOptions o = opts(Direction::Response);
     const Description d = describeRtu(kRtuReadWrongId, o);
     ASSERT_TRUE(d.ok());
-    EXPECT_TRUE(contains(field(d, "pdu.function")->text.en, "exception response to function 3"));
-    EXPECT_TRUE(contains(field(d, "pdu.exception")->text.en, "illegal data address — HCS: wrong ID"));
+    EXPECT_TRUE(contains(d.field("pdu.function")->text.en, "exception response to function 3"));
+    EXPECT_TRUE(contains(d.field("pdu.exception")->text.en, "illegal data address — HCS: wrong ID"));
     o.family = hcs::Family::Opat;
     const Description w = describeRtu(kRtuWriteWrongData, o);
-    EXPECT_TRUE(contains(field(w, "pdu.exception")->text.de, "HCS: Falscher Datenwert"));
+    EXPECT_TRUE(contains(w.field("pdu.exception")->text.de, "HCS: Falscher Datenwert"));
 }
 
 TEST(ModbusDescribe, BadCrcIsShownWithTheExpectedValue)
@@ -92,16 +86,16 @@ TEST(ModbusDescribe, BadCrcIsShownWithTheExpectedValue)
     const Description d = describeRtu(bad, opts(Direction::Request));
     ASSERT_FALSE(d.ok());
     EXPECT_EQ(d.error->code, DecodeErrc::BadChecksum);
-    EXPECT_TRUE(contains(field(d, "crc")->text.en, "wrong, expected 0x7B89"));
-    EXPECT_EQ(field(d, "pdu.value")->value, "1000"); // the PDU is still explained
+    EXPECT_TRUE(contains(d.field("crc")->text.en, "wrong, expected 0x7B89"));
+    EXPECT_EQ(d.field("pdu.value")->value, "1000"); // the PDU is still explained
 }
 
 TEST(ModbusDescribe, MoreThanEightRegistersGetsTheHcsNote)
 {
     const Description d = describeRtu(kClassicRead10, opts(Direction::Request));
     ASSERT_TRUE(d.ok());
-    ASSERT_NE(field(d, "note"), nullptr);
-    EXPECT_TRUE(contains(field(d, "note")->text.en, "exception 3"));
+    ASSERT_NE(d.field("note"), nullptr);
+    EXPECT_TRUE(contains(d.field("note")->text.en, "exception 3"));
 }
 
 TEST(ModbusDescribe, TcpHeaderFields)
@@ -109,12 +103,12 @@ TEST(ModbusDescribe, TcpHeaderFields)
     const Description d = describeTcp(kTcpWriteC107, opts(Direction::Request));
     ASSERT_TRUE(d.ok());
     EXPECT_EQ(d.protocol, "modbus-tcp");
-    EXPECT_EQ(field(d, "mbap.transaction")->value, "2");
-    EXPECT_EQ(field(d, "mbap.protocol")->value, "0");
-    EXPECT_EQ(field(d, "mbap.length")->value, "6");
-    EXPECT_EQ(field(d, "mbap.unit")->value, "1");
-    EXPECT_EQ(field(d, "pdu.address")->offset, 8u);
-    EXPECT_EQ(field(d, "pdu.value")->value, "1000");
+    EXPECT_EQ(d.field("mbap.transaction")->value, "2");
+    EXPECT_EQ(d.field("mbap.protocol")->value, "0");
+    EXPECT_EQ(d.field("mbap.length")->value, "6");
+    EXPECT_EQ(d.field("mbap.unit")->value, "1");
+    EXPECT_EQ(d.field("pdu.address")->offset, 8u);
+    EXPECT_EQ(d.field("pdu.value")->value, "1000");
 }
 
 TEST(ModbusDescribe, TruncatedTcpDescribesTheHeader)
@@ -123,9 +117,9 @@ TEST(ModbusDescribe, TruncatedTcpDescribesTheHeader)
     ASSERT_FALSE(d.ok());
     EXPECT_EQ(d.error->code, DecodeErrc::Truncated);
     EXPECT_EQ(d.error->offset, 9u);
-    EXPECT_NE(field(d, "mbap.unit"), nullptr);
-    EXPECT_NE(field(d, "pdu.function"), nullptr);
-    EXPECT_EQ(field(d, "pdu.start"), nullptr); // only 1 of its 2 bytes is there
+    EXPECT_NE(d.field("mbap.unit"), nullptr);
+    EXPECT_NE(d.field("pdu.function"), nullptr);
+    EXPECT_EQ(d.field("pdu.start"), nullptr); // only 1 of its 2 bytes is there
 }
 
 TEST(ModbusDescribe, AllVectorsCompleteInBothLanguagesAndTileTheFrame)

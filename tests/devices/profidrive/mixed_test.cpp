@@ -17,12 +17,6 @@ using namespace vt::test::profidrive_examples;
 
 namespace {
 
-const FieldSpan *field(const Description &d, const std::string &key)
-{
-    auto it = std::find_if(d.fields.begin(), d.fields.end(), [&](const FieldSpan &f) { return f.key == key; });
-    return it == d.fields.end() ? nullptr : &*it;
-}
-
 bool contains(const std::string &text, const std::string &part)
 {
     return text.find(part) != std::string::npos;
@@ -101,24 +95,24 @@ TEST(ProfidriveDescribe, Sec5_6_SendTelegramFields)
     const Description d = describe(kSec56Request, opts(Direction::Request));
     ASSERT_TRUE(d.ok());
     EXPECT_EQ(d.protocol, "profidrive");
-    EXPECT_EQ(field(d, "STW1")->value, "0x047F");
-    EXPECT_TRUE(contains(field(d, "STW1.ON/OFF1")->text.en, "enable OPAT"));
-    EXPECT_EQ(field(d, "STW1.ON/OFF1")->offset, 1u); // bit 0 lives in the second (low) byte
-    EXPECT_EQ(field(d, "STW1.CONTROL_BY_PLC")->offset, 0u);
-    EXPECT_EQ(field(d, "STW1.FAULT_ACK"), nullptr); // 0 and no meaning of its own when clear
-    EXPECT_EQ(field(d, "note"), nullptr);
-    const FieldSpan *n = field(d, "NSOLL_A");
+    EXPECT_EQ(d.field("STW1")->value, "0x047F");
+    EXPECT_TRUE(contains(d.field("STW1.ON/OFF1")->text.en, "enable OPAT"));
+    EXPECT_EQ(d.field("STW1.ON/OFF1")->offset, 1u); // bit 0 lives in the second (low) byte
+    EXPECT_EQ(d.field("STW1.CONTROL_BY_PLC")->offset, 0u);
+    EXPECT_EQ(d.field("STW1.FAULT_ACK"), nullptr); // 0 and no meaning of its own when clear
+    EXPECT_EQ(d.field("note"), nullptr);
+    const FieldSpan *n = d.field("NSOLL_A");
     ASSERT_NE(n, nullptr);
     EXPECT_EQ(n->value, "1792");
     EXPECT_TRUE(contains(n->text.en, "0x0700 = 10.94 % = 1.094 V"));
     EXPECT_TRUE(contains(n->text.de, "10,94 % = 1,094 V"));
     // The CMD 15 part keeps its keys, offsets in the whole image, one level deeper.
-    const FieldSpan *tadr = field(d, "TADR");
+    const FieldSpan *tadr = d.field("TADR");
     ASSERT_NE(tadr, nullptr);
     EXPECT_EQ(tadr->offset, 4u);
     EXPECT_EQ(tadr->depth, 1);
-    EXPECT_EQ(field(d, "SNUM")->value, "1");
-    const FieldSpan *slave = field(d, "DAT1.2");
+    EXPECT_EQ(d.field("SNUM")->value, "1");
+    const FieldSpan *slave = d.field("DAT1.2");
     ASSERT_NE(slave, nullptr);
     EXPECT_EQ(slave->offset, 13u);
     EXPECT_TRUE(contains(slave->text.en, "6.144 V"));
@@ -128,12 +122,12 @@ TEST(ProfidriveDescribe, Sec5_6_CableFractureNamesTheErrorTwice)
 {
     const Description d = describe(kSec56ResponseCableFracture, opts(Direction::Response));
     ASSERT_TRUE(d.ok());
-    EXPECT_TRUE(contains(field(d, "ZSW1.FAULT")->text.en, "fault present"));
-    const FieldSpan *nist = field(d, "NIST_A");
+    EXPECT_TRUE(contains(d.field("ZSW1.FAULT")->text.en, "fault present"));
+    const FieldSpan *nist = d.field("NIST_A");
     EXPECT_TRUE(contains(nist->text.en, "error number 2"));
     EXPECT_TRUE(contains(nist->text.en, "wire break sensor 1"));
     EXPECT_TRUE(contains(nist->text.de, "Drahtbruch Sensor 1"));
-    const FieldSpan *e = field(d, "DAT.1L.error");
+    const FieldSpan *e = d.field("DAT.1L.error");
     ASSERT_NE(e, nullptr);
     EXPECT_EQ(e->offset, 8u);
     EXPECT_TRUE(contains(e->text.en, "wire break sensor 1"));
@@ -145,9 +139,9 @@ TEST(ProfidriveDescribe, Telegram1AloneAndLayouts)
     DescribeOptions o = opts(Direction::Request);
     Description d = describe(t1, o);
     ASSERT_TRUE(d.ok());
-    EXPECT_TRUE(contains(field(d, "STW1.ON/OFF1")->text.en, "OFF1"));
-    EXPECT_EQ(field(d, "STW1.ON/OFF1")->value, "0");
-    ASSERT_NE(field(d, "note"), nullptr); // not 0x047F: the OPAT ignores the set value
+    EXPECT_TRUE(contains(d.field("STW1.ON/OFF1")->text.en, "OFF1"));
+    EXPECT_EQ(d.field("STW1.ON/OFF1")->value, "0");
+    ASSERT_NE(d.field("note"), nullptr); // not 0x047F: the OPAT ignores the set value
     o.layout = Layout::MixedCmd15;
     d = describe(t1, o);
     EXPECT_FALSE(d.ok());
@@ -156,7 +150,7 @@ TEST(ProfidriveDescribe, Telegram1AloneAndLayouts)
     d = describe(kSec56Request, o);
     EXPECT_FALSE(d.ok());
     EXPECT_EQ(d.error->code, DecodeErrc::TooLong);
-    EXPECT_NE(field(d, "extra"), nullptr);
+    EXPECT_NE(d.field("extra"), nullptr);
 }
 
 TEST(ProfidriveDescribe, EveryExampleCompleteInBothLanguages)
