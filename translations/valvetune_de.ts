@@ -125,6 +125,110 @@
     </message>
 </context>
 <context>
+    <name>vt::link</name>
+    <message>
+        <source>empty item (two commas in a row?)</source>
+        <translation>leerer Eintrag (zwei Kommas hintereinander?)</translation>
+    </message>
+    <message>
+        <source>expected key=value</source>
+        <translation>erwartet Schlüssel=Wert</translation>
+    </message>
+    <message>
+        <source>given twice</source>
+        <translation>doppelt angegeben</translation>
+    </message>
+    <message>
+        <source>probability must be a number between 0 and 1</source>
+        <translation>Wahrscheinlichkeit muss eine Zahl zwischen 0 und 1 sein</translation>
+    </message>
+    <message>
+        <source>delay must be whole milliseconds, 0 to 60000</source>
+        <translation>Verzögerung muss ganze Millisekunden sein, 0 bis 60000</translation>
+    </message>
+    <message>
+        <source>cut must be a whole number of frames</source>
+        <translation>cut muss eine ganze Anzahl Telegramme sein</translation>
+    </message>
+    <message>
+        <source>seed must be a whole number from 0 to 4294967295</source>
+        <translation>seed muss eine ganze Zahl von 0 bis 4294967295 sein</translation>
+    </message>
+    <message>
+        <source>cut and seed apply to both directions; drop the tx./rx. prefix</source>
+        <translation>cut und seed gelten für beide Richtungen; das Präfix tx./rx. weglassen</translation>
+    </message>
+    <message>
+        <source>unknown key (known: drop, corrupt, delay, cut, seed; drop, corrupt and delay may take a tx. or rx. prefix)</source>
+        <translation>unbekannter Schlüssel (bekannt: drop, corrupt, delay, cut, seed; drop, corrupt und delay erlauben das Präfix tx. oder rx.)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::link::CanLink</name>
+    <message>
+        <source>CAN socket %1 was closed and cannot be reopened</source>
+        <translation>CAN-Socket %1 wurde geschlossen und kann nicht wieder geöffnet werden</translation>
+    </message>
+    <message>
+        <source>CAN socket %1 is unusable: %2</source>
+        <translation>CAN-Socket %1 ist unbrauchbar: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open CAN interface %1: SocketCAN is not available in this kernel (%2)</source>
+        <translation>CAN-Schnittstelle %1 kann nicht geöffnet werden: SocketCAN ist in diesem Kernel nicht verfügbar (%2)</translation>
+    </message>
+    <message>
+        <source>Cannot open CAN interface %1: %2</source>
+        <translation>CAN-Schnittstelle %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open CAN interface %1: no such network interface</source>
+        <translation>CAN-Schnittstelle %1 kann nicht geöffnet werden: keine solche Netzwerkschnittstelle</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: transmit backlog overflow</source>
+        <translation>CAN-Schnittstelle %1: Sendepuffer übergelaufen</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: short write (%2 bytes)</source>
+        <translation>CAN-Schnittstelle %1: unvollständig geschrieben (%2 Bytes)</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: transmit queue stays full (bus off?)</source>
+        <translation>CAN-Schnittstelle %1: Sendewarteschlange bleibt voll (Bus-off?)</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: write failed: %2</source>
+        <translation>CAN-Schnittstelle %1: Schreiben fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: read failed: %2</source>
+        <translation>CAN-Schnittstelle %1: Lesen fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: socket closed</source>
+        <translation>CAN-Schnittstelle %1: Socket geschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::link::FaultLink</name>
+    <message>
+        <source>Fault injection cut the link after %1 frames</source>
+        <translation>Die Fehlerinjektion hat die Verbindung nach %1 Telegrammen getrennt</translation>
+    </message>
+</context>
+<context>
+    <name>vt::link::FaultSpecError</name>
+    <message>
+        <source>fault spec: %1</source>
+        <translation>Fehlerangabe: %1</translation>
+    </message>
+    <message>
+        <source>fault spec item &apos;%1&apos;: %2</source>
+        <translation>Fehlerangabe, Eintrag &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
     <name>vt::link::Link</name>
     <message>
         <source>Not connected</source>
@@ -141,6 +245,63 @@
     <message>
         <source>Connection failed</source>
         <translation>Verbindung fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::link::SerialWorker</name>
+    <message>
+        <source>Serial port %1 not found</source>
+        <translation>Serielle Schnittstelle %1 nicht gefunden</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot apply %1 baud %2 to %3: %4</source>
+        <translation>%1 Baud %2 kann nicht auf %3 eingestellt werden: %4</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: no file descriptor</source>
+        <translation>%1 kann nicht geöffnet werden: kein Dateideskriptor</translation>
+    </message>
+    <message>
+        <source>Write to %1 failed: %2</source>
+        <translation>Schreiben auf %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Write to %1 timed out</source>
+        <translation>Schreiben auf %1: Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <source>Read from %1 failed: %2</source>
+        <translation>Lesen von %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Serial port %1 was disconnected</source>
+        <translation>Serielle Schnittstelle %1 wurde getrennt</translation>
+    </message>
+</context>
+<context>
+    <name>vt::link::SimLink</name>
+    <message>
+        <source>No simulator is attached to %1</source>
+        <translation>An %1 ist kein Simulator angeschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::link::TcpLink</name>
+    <message>
+        <source>Connection to %1 timed out after %2 ms</source>
+        <translation>Verbindung zu %1: Zeitüberschreitung nach %2 ms</translation>
+    </message>
+    <message>
+        <source>Connection to %1 closed by the peer</source>
+        <translation>Verbindung zu %1 von der Gegenstelle geschlossen</translation>
+    </message>
+    <message>
+        <source>Connection to %1 failed: %2</source>
+        <translation>Verbindung zu %1 fehlgeschlagen: %2</translation>
     </message>
 </context>
 <context>
