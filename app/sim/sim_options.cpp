@@ -1,0 +1,297 @@
+// valvetune-sim's command line: QCommandLineParser for the syntax, then the combinations a
+// simulator can honestly serve (which protocol on which endpoint for which device).
+#include "sim_options.h"
+
+#include "app/cli/exit_codes.h"
+#include "dict/dictionary_loader.h"
+#include "sim/hcs_module.h"
+#include "sim/node_config.h"
+
+#include <QCommandLineParser>
+#include <QHostAddress>
+#include <algorithm>
+
+namespace vt::simapp {
+namespace {
+
+// DMA Profinet manual §1.5: CMD 15 (the node image's cyclic telegram) reaches modules 1..5 only.
+constexpr std::size_t kDmaImageModules = 5;
+constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400};
+
+OptionsExit usage(const std::string &message)
+{
+    return {cli::kExitUsage, "valvetune-sim: " + message};
+}
+
+std::string joined(const std::vector<std::string> &list)
+{
+    std::string out;
+    for (const std::string &s : list)
+        out += (out.empty() ? "" : ", ") + s;
+    return out;
+}
+
+// "HOST:PORT", ":PORT", "PORT" or "[v6]:PORT"; the host defaults to loopback.
+bool parseTcp(const QString &text, SimOptions &o, std::string &why)
+{
+    QString host, port = text;
+    const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
+    if (colon >= 0) {
+        host = text.left(colon);
+        port = text.mid(colon + 1);
+    }
+    if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+        host = host.mid(1, host.size() - 2);
+    bool ok = false;
+    const uint value = port.toUInt(&ok);
+    if (!ok || value > 65535) {
+        why = "--tcp '" + text.toStdString() + "': expected HOST:PORT, :PORT or PORT (0..65535)";
+        return false;
+    }
+    o.tcpPort = static_cast<quint16>(value);
+    if (host.isEmpty())
+        return true;
+    if (host == QLatin1String("localhost")) {
+        o.tcpHost = QStringLiteral("127.0.0.1");
+        return true;
+    }
+    if (QHostAddress(host).isNull()) {
+        why = "--tcp '" + text.toStdString() + "': the host must be an IP address or localhost";
+        return false;
+    }
+    o.tcpHost = host;
+    return true;
+}
+
+std::optional<Protocol> parseProtocol(const QString &text)
+{
+    if (text == QLatin1String("modbus-rtu"))
+        return Protocol::ModbusRtu;
+    if (text == QLatin1String("modbus-tcp"))
+        return Protocol::ModbusTcp;
+    if (text == QLatin1String("node-image"))
+        return Protocol::NodeImage;
+    if (text == QLatin1String("hart"))
+        return Protocol::Hart;
+    return std::nullopt;
+}
+
+// The device, protocol and endpoint fit together (the options are syntactically fine).
+std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOptions &o,
+                                            bool protocolGiven, bool modeGiven, bool modulesGiven)
+{
+    const bool tcp = o.endpoint == Endpoint::Tcp;
+    if (dict.protocol == dev::DeviceProtocol::Dsp408)
+        return o.family + " talks PROFIBUS DP (DSP-408 profile) and a PC has no PROFIBUS "
+                          "transport, so valvetune-sim cannot serve it";
+    if (dict.protocol == dev::DeviceProtocol::Hart) {
+        if (!protocolGiven)
+            o.protocol = Protocol::Hart;
+        if (o.protocol != Protocol::Hart)
+            return o.family + " speaks HART only (--protocol hart)";
+        if (tcp)
+            return "HART runs on a serial line: use --pty or --serial PATH, not --tcp";
+        if (modeGiven || modulesGiven)
+            return "--mode and --modules apply to HCS families; " + o.family + " is one device";
+        return std::nullopt;
+    }
+    if (!protocolGiven)
+        o.protocol = tcp ? Protocol::ModbusTcp : Protocol::ModbusRtu;
+    switch (o.protocol) {
+    case Protocol::Hart: return o.family + " is an HCS device; HART is the Wandfluh SD7's protocol";
+    case Protocol::ModbusRtu:
+        if (tcp)
+            return "modbus-rtu runs on --pty or --serial; over TCP use --protocol modbus-tcp";
+        break;
+    case Protocol::ModbusTcp:
+    case Protocol::NodeImage:
+        if (!tcp)
+            return std::string(protocolName(o.protocol)) + " needs --tcp HOST:PORT";
+        break;
+    }
+    if (o.protocol == Protocol::NodeImage && dev::sim::hcsFamilyOf(dict) == dev::hcs::Family::Dma &&
+        o.modules > kDmaImageModules)
+        return "node-image: CMD 15 reaches DMA modules 1..5 only (DMA Profinet manual §1.5), not " +
+               std::to_string(o.modules) + "; use --protocol modbus-tcp for more";
+    return std::nullopt;
+}
+
+} // namespace
+
+const char *protocolName(Protocol protocol)
+{
+    switch (protocol) {
+    case Protocol::ModbusRtu: return "modbus-rtu";
+    case Protocol::ModbusTcp: return "modbus-tcp";
+    case Protocol::NodeImage: return "node-image";
+    case Protocol::Hart: return "hart";
+    }
+    return "?";
+}
+
+dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &arguments)
+{
+    QCommandLineParser p;
+    p.setApplicationDescription(QStringLiteral(
+        "Serves a simulated device on a pseudo terminal, a serial port or a TCP port.\n"
+        "Prints 'listening on <path or host:port>' when ready; stops on SIGINT / SIGTERM.\n"
+        "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 connection error."));
+    const QCommandLineOption device(
+        QStringLiteral("device"),
+        QStringLiteral("Dictionary family (opat, dma-pn-v51, wandfluh-sd7, ...)."),
+        QStringLiteral("FAMILY"));
+    const QCommandLineOption mode(
+        QStringLiteral("mode"),
+        QStringLiteral("HCS mode (E00) of every module; default the family's first."),
+        QStringLiteral("M"));
+    const QCommandLineOption modules(QStringLiteral("modules"),
+                                     QStringLiteral("HCS modules of the node (default 1)."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption pty(
+        QStringLiteral("pty"),
+        QStringLiteral("Serve on a new pseudo terminal (its path is printed)."));
+    const QCommandLineOption serial(QStringLiteral("serial"),
+                                    QStringLiteral("Serve on a serial port."),
+                                    QStringLiteral("PATH"));
+    const QCommandLineOption tcp(
+        QStringLiteral("tcp"),
+        QStringLiteral(
+            "Serve on TCP (HOST:PORT, :PORT or PORT; host 127.0.0.1 by default, port 0 = any)."),
+        QStringLiteral("ADDR"));
+    const QCommandLineOption protocol(
+        QStringLiteral("protocol"),
+        QStringLiteral("modbus-rtu | modbus-tcp | node-image | hart | canopen."),
+        QStringLiteral("P"));
+    const QCommandLineOption fault(
+        QStringLiteral("fault"),
+        QStringLiteral("Faults on the answers: drop=P,corrupt=P,delay=MS,cut=N,seed=S."),
+        QStringLiteral("SPEC"));
+    const QCommandLineOption seed(
+        QStringLiteral("seed"),
+        QStringLiteral("Seed of the fault schedule (overrides the spec's)."), QStringLiteral("S"));
+    const QCommandLineOption baud(QStringLiteral("baud"),
+                                  QStringLiteral("Serial baud rate (HCS 19200, HART 1200)."),
+                                  QStringLiteral("B"));
+    const QCommandLineOption parity(QStringLiteral("parity"),
+                                    QStringLiteral("none | even | odd (HCS even, HART odd)."),
+                                    QStringLiteral("P"));
+    const QCommandLineOption verbose(QStringList{QStringLiteral("v"), QStringLiteral("verbose")},
+                                     QStringLiteral("Log every frame in and out on stderr."));
+    p.addOptions(
+        {device, mode, modules, pty, serial, tcp, protocol, fault, seed, baud, parity, verbose});
+    const QCommandLineOption help = p.addHelpOption();
+    // Not addVersionOption(): its -v would clash with --verbose.
+    const QCommandLineOption version(QStringLiteral("version"), QStringLiteral("Program version."));
+    p.addOption(version);
+
+    if (!p.parse(arguments))
+        return usage(p.errorText().toStdString());
+    if (p.isSet(help))
+        return OptionsExit{cli::kExitOk, p.helpText().toStdString()};
+    if (p.isSet(version))
+        return OptionsExit{cli::kExitOk, "valvetune-sim " VT_VERSION "\n"};
+    if (!p.positionalArguments().isEmpty())
+        return usage("unexpected argument '" + p.positionalArguments().first().toStdString() + "'");
+
+    SimOptions o;
+    if (!p.isSet(device))
+        return usage("--device FAMILY is required (see --help)");
+    o.family = p.value(device).toStdString();
+    o.verbose = p.isSet(verbose);
+
+    const int endpoints = int(p.isSet(pty)) + int(p.isSet(serial)) + int(p.isSet(tcp));
+    if (endpoints != 1)
+        return usage("give exactly one of --pty, --serial PATH, --tcp HOST:PORT");
+    if (p.isSet(serial)) {
+        o.endpoint = Endpoint::Serial;
+        o.serialPath = p.value(serial);
+    } else if (p.isSet(tcp)) {
+        o.endpoint = Endpoint::Tcp;
+        std::string why;
+        if (!parseTcp(p.value(tcp), o, why))
+            return usage(why);
+        if (p.isSet(baud) || p.isSet(parity))
+            return usage("--baud and --parity are for --pty and --serial");
+    }
+
+    const bool protocolGiven = p.isSet(protocol);
+    if (protocolGiven) {
+        const QString name = p.value(protocol);
+        if (name == QLatin1String("canopen"))
+            return usage("canopen needs a CAN bus (SocketCAN), which valvetune-sim does not serve "
+                         "in this build; the CANopen simulator runs in-process only");
+        const auto parsed = parseProtocol(name);
+        if (!parsed)
+            return usage("unknown protocol '" + name.toStdString() +
+                         "' (modbus-rtu, modbus-tcp, node-image, hart, canopen)");
+        o.protocol = *parsed;
+    }
+    bool ok = true;
+    if (p.isSet(mode)) {
+        o.mode = p.value(mode).toInt(&ok);
+        if (!ok || o.mode < 0)
+            return usage("--mode '" + p.value(mode).toStdString() + "': expected a mode number");
+    }
+    if (p.isSet(modules)) {
+        const uint n = p.value(modules).toUInt(&ok);
+        if (!ok || n == 0)
+            return usage("--modules '" + p.value(modules).toStdString() + "': expected 1 or more");
+        o.modules = n;
+    }
+
+    const auto &set = dev::builtinDictionaries();
+    if (!set.ok())
+        return OptionsExit{cli::kExitDeviceError,
+                           "valvetune-sim: the built-in dictionaries do not load"};
+    const dev::Dictionary *dict = set->find(o.family);
+    if (!dict || dict->abstract) {
+        std::vector<std::string> known = dev::sim::simulatedFamilies(*set);
+        known.push_back("wandfluh-sd7");
+        return usage("unknown device family '" + o.family + "' (" + joined(known) + ")");
+    }
+    if (auto why = checkCombination(*dict, o, protocolGiven, p.isSet(mode), p.isSet(modules)))
+        return usage(*why);
+
+    if (o.isHart()) {
+        o.baud = 1200; // ARCHITECTURE.md "HART": 1200 baud 8O1 through a HART modem
+        o.parity = link::Parity::Odd;
+    }
+    if (p.isSet(baud)) {
+        o.baud = p.value(baud).toInt(&ok);
+        if (!ok || std::find(std::begin(kBauds), std::end(kBauds), o.baud) == std::end(kBauds))
+            return usage("--baud '" + p.value(baud).toStdString() +
+                         "': one of 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400");
+    }
+    if (p.isSet(parity)) {
+        const QString v = p.value(parity);
+        if (v == QLatin1String("none"))
+            o.parity = link::Parity::None;
+        else if (v == QLatin1String("even"))
+            o.parity = link::Parity::Even;
+        else if (v == QLatin1String("odd"))
+            o.parity = link::Parity::Odd;
+        else
+            return usage("--parity '" + v.toStdString() + "': none, even or odd");
+    }
+
+    if (p.isSet(fault)) {
+        auto spec = link::parseFaultSpec(p.value(fault));
+        if (!spec.ok())
+            return usage(spec.error().text().toStdString());
+        o.fault = *spec;
+        // A plain key sets both directions; only a tx.* key makes them differ.
+        if (!o.fault.tx.isNull() && o.fault.tx != o.fault.rx)
+            return usage(
+                "--fault: valvetune-sim disturbs its answers only; use plain or rx. keys, not tx.");
+        o.seed = o.fault.seed;
+    }
+    if (p.isSet(seed)) {
+        const uint s = p.value(seed).toUInt(&ok);
+        if (!ok)
+            return usage("--seed '" + p.value(seed).toStdString() + "': expected 0..4294967295");
+        o.seed = s;
+    }
+    return o;
+}
+
+} // namespace vt::simapp

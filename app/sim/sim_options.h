@@ -1,0 +1,54 @@
+// SimOptions: the command line of valvetune-sim (device, endpoint, protocol, faults) parsed and
+// checked against each other, so sim_host only ever sees a combination it can serve. Usage
+// errors are one line for stderr with exit code 2 (app/cli/exit_codes.h).
+// A plain value; the parser needs a QCoreApplication for QCommandLineParser's help text only.
+#pragma once
+
+#include "core/result.h"
+#include "transports/fault_spec.h"
+#include "transports/serial_settings.h"
+
+#include <QString>
+#include <QStringList>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace vt::simapp {
+
+enum class Endpoint { Pty, Serial, Tcp };
+enum class Protocol { ModbusRtu, ModbusTcp, NodeImage, Hart };
+
+struct SimOptions
+{
+    std::string family;      // dictionary family id: an HCS family or "wandfluh-sd7"
+    int mode = 0;            // HCS: E00 of every module; 0 = the family's first mode
+    std::size_t modules = 1; // HCS: modules of the node
+    Endpoint endpoint = Endpoint::Pty;
+    QString serialPath;                            // --serial
+    QString tcpHost = QStringLiteral("127.0.0.1"); // --tcp: loopback unless told otherwise
+    quint16 tcpPort = 0;                           // 0: any free port (the real one is printed)
+    Protocol protocol = Protocol::ModbusRtu;
+    int baud = 19200; // serial line (on a pty it only sets the 3.5-character gap)
+    link::Parity parity = link::Parity::Even; // serial line; a pty takes any parity
+    link::FaultSpec fault;                    // applied to the device's answers (FaultSpec::rx)
+    std::uint32_t seed = link::FaultSpec::kDefaultSeed; // --seed, else the spec's seed
+    bool verbose = false;
+
+    bool isHart() const { return protocol == Protocol::Hart; }
+};
+
+// What parsing ended with when it does not run the simulator: help / version text for stdout
+// (exit 0) or a one-line usage error for stderr (exit 2).
+struct OptionsExit
+{
+    int exitCode = 0;
+    std::string text;
+};
+
+// `arguments` as QCoreApplication::arguments() (program name first).
+dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &arguments);
+
+const char *protocolName(Protocol protocol);
+
+} // namespace vt::simapp
