@@ -23,6 +23,8 @@
 #include <string>
 #include <thread>
 
+#include "pty_support.h"
+
 using namespace vt::dev;
 using namespace vt::dev::modbus;
 using namespace vt::test::modbus_vectors;
@@ -31,47 +33,8 @@ namespace {
 
 constexpr int kTimeoutMs = 2000;
 
-// A pseudo terminal: libmodbus opens the slave side as its serial port, the test uses the master.
-class Pty
-{
-public:
-    Pty()
-    {
-        m_master = posix_openpt(O_RDWR | O_NOCTTY);
-        if (m_master >= 0 && grantpt(m_master) == 0 && unlockpt(m_master) == 0) {
-            const char *name = ptsname(m_master);
-            if (name != nullptr)
-                m_slaveName = name;
-        }
-    }
-    ~Pty()
-    {
-        if (m_master >= 0)
-            close(m_master);
-    }
-    Pty(const Pty &) = delete;
-    Pty &operator=(const Pty &) = delete;
-
-    bool ok() const { return m_master >= 0 && !m_slaveName.empty(); }
-    int fd() const { return m_master; }
-    const std::string &slaveName() const { return m_slaveName; }
-
-private:
-    int m_master = -1;
-    std::string m_slaveName;
-};
-
-bool writeAll(int fd, const Bytes &bytes)
-{
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
-        if (n <= 0)
-            return false;
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
-}
+using vt::test::Pty;
+using vt::test::writeAll;
 
 // Reads until `deframer` yields one frame or the bound expires.
 template <typename Deframer>

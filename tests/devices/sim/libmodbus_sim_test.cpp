@@ -27,6 +27,8 @@
 #include <memory>
 #include <thread>
 
+#include "pty_support.h"
+
 using namespace vt::dev;
 using namespace vt::dev::sim;
 using namespace vt::dev::sim::test;
@@ -36,43 +38,8 @@ namespace {
 constexpr int kTimeoutMs = 2000;
 constexpr int kPumpPollMs = 20; // how often the pump looks at its stop flag
 
-class Pty
-{
-public:
-    Pty()
-    {
-        m_master = posix_openpt(O_RDWR | O_NOCTTY);
-        if (m_master >= 0 && grantpt(m_master) == 0 && unlockpt(m_master) == 0)
-            if (const char *name = ptsname(m_master))
-                m_slaveName = name;
-    }
-    ~Pty()
-    {
-        if (m_master >= 0)
-            close(m_master);
-    }
-    Pty(const Pty &) = delete;
-    Pty &operator=(const Pty &) = delete;
-    bool ok() const { return m_master >= 0 && !m_slaveName.empty(); }
-    int fd() const { return m_master; }
-    const std::string &slaveName() const { return m_slaveName; }
-
-private:
-    int m_master = -1;
-    std::string m_slaveName;
-};
-
-bool writeAll(int fd, const Bytes &bytes)
-{
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
-        if (n <= 0)
-            return false;
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
-}
+using vt::test::Pty;
+using vt::test::writeAll;
 
 // Moves bytes between `fd` and `server` on its own thread until destroyed. The server (and the
 // modules behind it) belong to this thread while it runs. With a listening socket it first
