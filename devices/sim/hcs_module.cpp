@@ -296,7 +296,7 @@ std::optional<int> HcsModule::errorNumber() const
     return std::nullopt;
 }
 
-std::uint8_t HcsModule::signals() const
+std::uint8_t HcsModule::digitalSignals() const
 {
     std::uint8_t s = 0;
     for (std::size_t b = 0; b < 2; ++b) {
@@ -323,7 +323,7 @@ std::uint16_t HcsModule::statusWord() const
         word |= hcs::kStatusError;
         word |= static_cast<std::uint16_t>(*number & 0xFF);
     } else {
-        word |= signals();
+        word |= digitalSignals();
     }
     return word;
 }

@@ -142,7 +142,7 @@ private:
     void applyControl(std::uint8_t control);
     void writeSwitches(std::uint16_t word);
     std::uint8_t setCyclicValue(std::string_view name, std::int16_t value);
-    std::uint8_t signals() const;
+    std::uint8_t digitalSignals() const;
     std::int64_t now() const { return m_clock.nowUs(); }
 
     struct PendingCommit
