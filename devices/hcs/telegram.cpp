@@ -191,56 +191,54 @@ Result<Bytes, DecodeError> encode(const Response &response)
     return std::visit([](const auto &a) -> Result<Bytes, DecodeError> { return encode(a); }, response);
 }
 
-Result<ReadRequest, DecodeError> decodeReadRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+namespace {
+
+// The typed decoders share this: header, then CMD must be `cmd`; in a response the matching
+// error frame (cmd | 0x80, OPAT manual §2.3) becomes DecodeErrc::DeviceException.
+template <typename T, typename Body>
+Result<T, DecodeError> decodeTyped(std::span<const std::uint8_t> frame, const DecodeOptions &options,
+                                   std::uint8_t cmd, bool response, Body body)
 {
     ByteReader r(frame);
     Header h;
     if (auto e = readHeader(r, h))
         return *e;
-    if (h.cmd != kCmdRead)
-        return unexpected(h.cmd, "3");
-    return readRequestBody(r, h, options);
+    const auto errorCmd = static_cast<std::uint8_t>(cmd | kErrorBit);
+    if (response && h.cmd == errorCmd) {
+        auto e = exceptionBody(r, h, options);
+        return e.ok() ? deviceException(*e) : e.error();
+    }
+    if (h.cmd != cmd)
+        return unexpected(h.cmd, std::to_string(cmd) + (response ? " or " + hexByte(errorCmd) : std::string()));
+    return body(r, h);
+}
+
+} // namespace
+
+Result<ReadRequest, DecodeError> decodeReadRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+{
+    return decodeTyped<ReadRequest>(frame, options, kCmdRead, false,
+                                    [&](ByteReader &r, const Header &h) { return readRequestBody(r, h, options); });
 }
 
 Result<ReadResponse, DecodeError> decodeReadResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
 {
-    ByteReader r(frame);
-    Header h;
-    if (auto e = readHeader(r, h))
-        return *e;
-    if (h.cmd == (kCmdRead | kErrorBit)) {
-        auto e = exceptionBody(r, h, options);
-        return e.ok() ? deviceException(*e) : e.error();
-    }
-    if (h.cmd != kCmdRead)
-        return unexpected(h.cmd, "3 or 0x83");
-    return readResponseBody(r, h, options);
+    return decodeTyped<ReadResponse>(frame, options, kCmdRead, true,
+                                     [&](ByteReader &r, const Header &h) { return readResponseBody(r, h, options); });
 }
 
 Result<WriteRequest, DecodeError> decodeWriteRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
 {
-    ByteReader r(frame);
-    Header h;
-    if (auto e = readHeader(r, h))
-        return *e;
-    if (h.cmd != kCmdWrite)
-        return unexpected(h.cmd, "6");
-    return writeBody<WriteRequest>(r, h, options);
+    return decodeTyped<WriteRequest>(frame, options, kCmdWrite, false, [&](ByteReader &r, const Header &h) {
+        return writeBody<WriteRequest>(r, h, options);
+    });
 }
 
 Result<WriteResponse, DecodeError> decodeWriteResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
 {
-    ByteReader r(frame);
-    Header h;
-    if (auto e = readHeader(r, h))
-        return *e;
-    if (h.cmd == (kCmdWrite | kErrorBit)) {
-        auto e = exceptionBody(r, h, options);
-        return e.ok() ? deviceException(*e) : e.error();
-    }
-    if (h.cmd != kCmdWrite)
-        return unexpected(h.cmd, "6 or 0x86");
-    return writeBody<WriteResponse>(r, h, options);
+    return decodeTyped<WriteResponse>(frame, options, kCmdWrite, true, [&](ByteReader &r, const Header &h) {
+        return writeBody<WriteResponse>(r, h, options);
+    });
 }
 
 Result<ExceptionResponse, DecodeError> decodeExceptionResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
