@@ -1,0 +1,94 @@
+// The master side of every protocol, without Qt and without I/O: a ProtocolAdapter turns "read
+// these rows of module M" / "write this value" into transactions, encodes each transaction's
+// request bytes and recognises its reply in the bytes the link delivers. The session (model/)
+// owns the queue, the timers and the retries; an adapter owns only framing state.
+// Owner: one session; single-threaded.
+#pragma once
+
+#include "core/byte_writer.h"
+#include "core/local_text.h"
+#include "dict/param_meta.h"
+#include "dict/raw_value.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vt::dev::access {
+
+enum class TransactionKind { Identify, Read, Write, Raw };
+
+// One request/response exchange on the wire.
+struct Transaction
+{
+    TransactionKind kind = TransactionKind::Read;
+    int module = 0;                       // module address (HCS SADR / unit id, HART poll address, CAN node)
+    std::vector<const ParamMeta *> rows;  // Read: the rows answered by this exchange, in wire order;
+                                          // Write: exactly one row
+    std::vector<RawValue> values;         // Write: the value to write (one)
+    Bytes raw;                            // Raw: bytes to send as they are (the inspector's composer)
+    bool expectsReply = true;             // Raw: false for a frame sent without waiting
+};
+
+enum class ReplyStatus {
+    Ok,              // values hold one entry per row (Read), the echoed value (Write), identity (Identify)
+    DeviceException, // the device refused: code + text
+    Mismatch,        // a well-formed frame that does not answer this request (other unit, other ID…)
+};
+
+struct Identity
+{
+    int versRaw = -1;           // HCS: ID 0, raw = version × 100
+    int mode = -1;              // HCS: E00
+    std::uint16_t manufacturer = 0;       // HART command 0
+    std::uint16_t expandedDeviceType = 0; // HART command 0
+    std::uint32_t deviceId = 0;           // HART command 0
+    std::uint32_t capability = 0;         // DSP-408
+    std::string text;           // free text for people ("HART rev 7, device id 0x000123")
+};
+
+struct Reply
+{
+    ReplyStatus status = ReplyStatus::Ok;
+    std::vector<RawValue> values;
+    Identity identity;
+    int exceptionCode = 0;
+    LocalText exceptionText;
+    Bytes frame; // the reply as it came off the wire
+};
+
+class ProtocolAdapter
+{
+public:
+    virtual ~ProtocolAdapter() = default;
+
+    // "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen" (describeAny's protocol keys).
+    virtual std::string protocolKey() const = 0;
+
+    // The fewest transactions the device allows for reading `rows` of `module` (HCS: ≤ 8
+    // consecutive IDs per request; gaps are not read). Rows the protocol cannot address are
+    // left out; the caller compares.
+    virtual std::vector<Transaction> planRead(int module, std::span<const ParamMeta *const> rows) const = 0;
+    // One transaction writing `value` to `row`.
+    virtual Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const = 0;
+    // What identifies the module (HCS: Vers and E00; HART: command 0).
+    virtual std::vector<Transaction> planIdentify(int module) const = 0;
+
+    // Request bytes for one attempt of `t` (an adapter may change bytes between attempts: the
+    // node image toggles TADR, Modbus TCP numbers transactions). Empty on an encoding error.
+    virtual Bytes encode(const Transaction &t) = 0;
+    // Upper bound of the reply's length in bytes, for the session's timeout.
+    virtual std::size_t expectedReplyBytes(const Transaction &t) const = 0;
+
+    // Feeds bytes from the link while `t` is outstanding. Returns the reply once a whole frame
+    // answering `t` (or a device exception) has arrived; frames that do not answer `t` come back
+    // as Mismatch and the session keeps waiting. Garbage is dropped silently.
+    virtual std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) = 0;
+    // Drops buffered bytes (after a timeout, before a retry, after reconnect).
+    virtual void resetFraming() = 0;
+};
+
+} // namespace vt::dev::access
