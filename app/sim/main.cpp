@@ -1,5 +1,5 @@
-// valvetune-sim: a simulated HCS node or Wandfluh SD7 on a pty, serial port or TCP port, for
-// ValveTune, the CLI, mbpoll or a PLC test rig (README "Simulator"). Prints "listening on …"
+// valvetune-sim: a simulated HCS node or Wandfluh device on a pty, serial port, TCP port or CAN,
+// for ValveTune, the CLI, mbpoll or a PLC test rig (README "Simulator"). Prints "listening on …"
 // once ready, serves until SIGINT / SIGTERM (exit 0).
 #include "app/cli/exit_codes.h"
 #include "app/sim/sim_host.h"

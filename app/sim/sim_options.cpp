@@ -10,6 +10,7 @@
 #include <QCommandLineParser>
 #include <QHostAddress>
 #include <algorithm>
+#include <net/if.h>
 
 namespace vt::simapp {
 namespace {
@@ -17,6 +18,8 @@ namespace {
 // DMA Profinet manual §1.5: CMD 15 (the node image's cyclic telegram) reaches modules 1..5 only.
 constexpr std::size_t kDmaImageModules = 5;
 constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400};
+// CiA 301 §7.3.1: node-IDs 1..127 (0 is reserved).
+constexpr uint kMaxNode = 127;
 
 OptionsExit usage(const std::string &message)
 {
@@ -73,6 +76,8 @@ std::optional<Protocol> parseProtocol(const QString &text)
         return Protocol::NodeImage;
     if (text == QLatin1String("hart"))
         return Protocol::Hart;
+    if (text == QLatin1String("canopen"))
+        return Protocol::Canopen;
     return std::nullopt;
 }
 
@@ -81,24 +86,48 @@ std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOpti
                                             bool protocolGiven, bool modeGiven, bool modulesGiven)
 {
     const bool tcp = o.endpoint == Endpoint::Tcp;
-    if (dict.protocol == dev::DeviceProtocol::Dsp408)
-        return o.family + " talks PROFIBUS DP (DSP-408 profile) and a PC has no PROFIBUS "
-                          "transport, so valvetune-sim cannot serve it";
+    const bool can = o.isCan();
+    const std::string oneDevice =
+        "--mode and --modules apply to HCS families; " + o.family + " is one device";
+    if (dict.protocol == dev::DeviceProtocol::Dsp408) {
+        // The ED1's CiA 408 objects (ARCHITECTURE.md "CAN") are its only PC-reachable face.
+        if (!can)
+            return o.family + " talks PROFIBUS DP (DSP-408 profile), which a PC cannot serve; "
+                              "valvetune-sim serves its CiA 408 objects on --can IFACE";
+        if (protocolGiven && o.protocol != Protocol::Canopen)
+            return o.family + " is served over CANopen only (--protocol canopen)";
+        o.protocol = Protocol::Canopen;
+        if (modeGiven || modulesGiven)
+            return oneDevice;
+        return std::nullopt;
+    }
     if (dict.protocol == dev::DeviceProtocol::Hart) {
         if (!protocolGiven)
             o.protocol = Protocol::Hart;
         if (o.protocol != Protocol::Hart)
             return o.family + " speaks HART only (--protocol hart)";
-        if (tcp)
-            return "HART runs on a serial line: use --pty or --serial PATH, not --tcp";
+        if (tcp || can)
+            return "HART runs on a serial line: use --pty or --serial PATH";
         if (modeGiven || modulesGiven)
-            return "--mode and --modules apply to HCS families; " + o.family + " is one device";
+            return oneDevice;
         return std::nullopt;
     }
     if (!protocolGiven)
-        o.protocol = tcp ? Protocol::ModbusTcp : Protocol::ModbusRtu;
+        o.protocol = can ? Protocol::Canopen : tcp ? Protocol::ModbusTcp : Protocol::ModbusRtu;
+    if (can && o.protocol != Protocol::Canopen)
+        return std::string(protocolName(o.protocol)) +
+               " does not run on a CAN bus; --can and --can-fd serve --protocol canopen";
     switch (o.protocol) {
     case Protocol::Hart: return o.family + " is an HCS device; HART is the Wandfluh SD7's protocol";
+    case Protocol::Canopen:
+        if (!can)
+            return "canopen runs on a CAN bus: use --can IFACE (or --can-fd N)";
+        // One SDO server answers for one node id; a node of several modules would need a
+        // mapping of modules to node ids that neither manual defines.
+        if (o.modules > 1)
+            return "canopen serves one module per node id (--node N), not --modules " +
+                   std::to_string(o.modules) + "; start one valvetune-sim per module";
+        break;
     case Protocol::ModbusRtu:
         if (tcp)
             return "modbus-rtu runs on --pty or --serial; over TCP use --protocol modbus-tcp";
@@ -125,6 +154,7 @@ const char *protocolName(Protocol protocol)
     case Protocol::ModbusTcp: return "modbus-tcp";
     case Protocol::NodeImage: return "node-image";
     case Protocol::Hart: return "hart";
+    case Protocol::Canopen: return "canopen";
     }
     return "?";
 }
@@ -133,8 +163,9 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
 {
     QCommandLineParser p;
     p.setApplicationDescription(QStringLiteral(
-        "Serves a simulated device on a pseudo terminal, a serial port or a TCP port.\n"
-        "Prints 'listening on <path or host:port>' when ready; stops on SIGINT / SIGTERM.\n"
+        "Serves a simulated device on a pseudo terminal, a serial port, a TCP port or a CAN bus.\n"
+        "Prints 'listening on <path, host:port or can:IFACE node N>' when ready; stops on\n"
+        "SIGINT / SIGTERM.\n"
         "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 connection error."));
     const QCommandLineOption device(
         QStringLiteral("device"),
@@ -158,6 +189,18 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
         QStringLiteral(
             "Serve on TCP (HOST:PORT, :PORT or PORT; host 127.0.0.1 by default, port 0 = any)."),
         QStringLiteral("ADDR"));
+    const QCommandLineOption can(
+        QStringLiteral("can"),
+        QStringLiteral("Serve CANopen SDO on a SocketCAN interface (can0, vcan0)."),
+        QStringLiteral("IFACE"));
+    const QCommandLineOption canFd(
+        QStringLiteral("can-fd"),
+        QStringLiteral("Serve CANopen SDO on an open descriptor carrying struct can_frame "
+                       "datagrams (tests: one end of a SOCK_SEQPACKET socketpair)."),
+        QStringLiteral("N"));
+    const QCommandLineOption node(QStringLiteral("node"),
+                                  QStringLiteral("CANopen node id, 1..127 (default 1)."),
+                                  QStringLiteral("N"));
     const QCommandLineOption protocol(
         QStringLiteral("protocol"),
         QStringLiteral("modbus-rtu | modbus-tcp | node-image | hart | canopen."),
@@ -177,8 +220,8 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
                                     QStringLiteral("P"));
     const QCommandLineOption verbose(QStringList{QStringLiteral("v"), QStringLiteral("verbose")},
                                      QStringLiteral("Log every frame in and out on stderr."));
-    p.addOptions(
-        {device, mode, modules, pty, serial, tcp, protocol, fault, seed, baud, parity, verbose});
+    p.addOptions({device, mode, modules, pty, serial, tcp, can, canFd, node, protocol, fault, seed,
+                  baud, parity, verbose});
     const QCommandLineOption help = p.addHelpOption();
     // Not addVersionOption(): its -v would clash with --verbose.
     const QCommandLineOption version(QStringLiteral("version"), QStringLiteral("Program version."));
@@ -199,9 +242,12 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
     o.family = p.value(device).toStdString();
     o.verbose = p.isSet(verbose);
 
-    const int endpoints = int(p.isSet(pty)) + int(p.isSet(serial)) + int(p.isSet(tcp));
+    const int endpoints = int(p.isSet(pty)) + int(p.isSet(serial)) + int(p.isSet(tcp)) +
+                          int(p.isSet(can)) + int(p.isSet(canFd));
     if (endpoints != 1)
-        return usage("give exactly one of --pty, --serial PATH, --tcp HOST:PORT");
+        return usage(
+            "give exactly one of --pty, --serial PATH, --tcp HOST:PORT, --can IFACE, --can-fd N");
+    bool ok = true;
     if (p.isSet(serial)) {
         o.endpoint = Endpoint::Serial;
         o.serialPath = p.value(serial);
@@ -210,23 +256,39 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
         std::string why;
         if (!parseTcp(p.value(tcp), o, why))
             return usage(why);
-        if (p.isSet(baud) || p.isSet(parity))
-            return usage("--baud and --parity are for --pty and --serial");
+    } else if (p.isSet(can)) {
+        o.endpoint = Endpoint::Can;
+        o.canInterface = p.value(can).toStdString();
+        if (o.canInterface.empty() || o.canInterface.size() >= IFNAMSIZ)
+            return usage("--can '" + o.canInterface + "': expected an interface name of 1.." +
+                         std::to_string(IFNAMSIZ - 1) + " characters");
+    } else if (p.isSet(canFd)) {
+        o.endpoint = Endpoint::CanFd;
+        o.canFd = p.value(canFd).toInt(&ok);
+        if (!ok || o.canFd < 0)
+            return usage("--can-fd '" + p.value(canFd).toStdString() +
+                         "': expected an open file descriptor number");
+    }
+    if ((o.endpoint == Endpoint::Tcp || o.isCan()) && (p.isSet(baud) || p.isSet(parity)))
+        return usage("--baud and --parity are for --pty and --serial");
+    if (p.isSet(node)) {
+        if (!o.isCan())
+            return usage("--node is the CANopen node id of --can / --can-fd");
+        const uint n = p.value(node).toUInt(&ok);
+        if (!ok || n == 0 || n > kMaxNode)
+            return usage("--node '" + p.value(node).toStdString() + "': expected 1..127");
+        o.node = static_cast<std::uint8_t>(n);
     }
 
     const bool protocolGiven = p.isSet(protocol);
     if (protocolGiven) {
         const QString name = p.value(protocol);
-        if (name == QLatin1String("canopen"))
-            return usage("canopen needs a CAN bus (SocketCAN), which valvetune-sim does not serve "
-                         "in this build; the CANopen simulator runs in-process only");
         const auto parsed = parseProtocol(name);
         if (!parsed)
             return usage("unknown protocol '" + name.toStdString() +
                          "' (modbus-rtu, modbus-tcp, node-image, hart, canopen)");
         o.protocol = *parsed;
     }
-    bool ok = true;
     if (p.isSet(mode)) {
         o.mode = p.value(mode).toInt(&ok);
         if (!ok || o.mode < 0)
@@ -246,6 +308,7 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
     const dev::Dictionary *dict = set->find(o.family);
     if (!dict || dict->abstract) {
         std::vector<std::string> known = dev::sim::simulatedFamilies(*set);
+        known.push_back("wandfluh-ed1");
         known.push_back("wandfluh-sd7");
         return usage("unknown device family '" + o.family + "' (" + joined(known) + ")");
     }

@@ -16,8 +16,8 @@
 
 namespace vt::simapp {
 
-enum class Endpoint { Pty, Serial, Tcp };
-enum class Protocol { ModbusRtu, ModbusTcp, NodeImage, Hart };
+enum class Endpoint { Pty, Serial, Tcp, Can, CanFd };
+enum class Protocol { ModbusRtu, ModbusTcp, NodeImage, Hart, Canopen };
 
 struct SimOptions
 {
@@ -28,6 +28,9 @@ struct SimOptions
     QString serialPath;                            // --serial
     QString tcpHost = QStringLiteral("127.0.0.1"); // --tcp: loopback unless told otherwise
     quint16 tcpPort = 0;                           // 0: any free port (the real one is printed)
+    std::string canInterface;                      // --can: a SocketCAN interface ("can0", "vcan0")
+    int canFd = -1;        // --can-fd: an open descriptor carrying struct can_frame datagrams
+    std::uint8_t node = 1; // --node: CANopen node id 1..127 (SDO 0x600 + node / 0x580 + node)
     Protocol protocol = Protocol::ModbusRtu;
     int baud = 19200; // serial line (on a pty it only sets the 3.5-character gap)
     link::Parity parity = link::Parity::Even; // serial line; a pty takes any parity
@@ -36,6 +39,7 @@ struct SimOptions
     bool verbose = false;
 
     bool isHart() const { return protocol == Protocol::Hart; }
+    bool isCan() const { return endpoint == Endpoint::Can || endpoint == Endpoint::CanFd; }
 };
 
 // What parsing ended with when it does not run the simulator: help / version text for stdout

@@ -29,6 +29,7 @@ inline constexpr std::uint32_t kInvalidValue = 0x06090030; // value range of par
 inline constexpr std::uint32_t kValueTooHigh = 0x06090031;
 inline constexpr std::uint32_t kValueTooLow = 0x06090032;
 inline constexpr std::uint32_t kGeneral = 0x08000000;
+inline constexpr std::uint32_t kNotStored = 0x08000020;   // cannot be transferred / stored now
 inline constexpr std::uint32_t kDeviceState = 0x08000022; // not allowed in the present state
 } // namespace sdo_abort
 

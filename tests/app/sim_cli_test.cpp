@@ -1,128 +1,24 @@
 // valvetune-sim end to end (Device simulator issue: "valvetune-sim --device FAMILY … prints one
-// line `listening on …` when ready, serves until SIGINT/SIGTERM"): the real binary is spawned
-// and reached the way a user reaches it — mbpoll over its pty (Modbus RTU) and over loopback
-// TCP (Modbus TCP), a raw HART command 0 over its pty; usage errors exit 2 with one line;
-// SIGTERM ends it with 0; --fault drops and cuts. Every wait is bounded; no sleeps.
+// line `listening on …` when ready, serves until SIGINT/SIGTERM"; "mbpoll reads and writes
+// holding registers over a socat pseudo-terminal pair (Modbus RTU) and over Modbus TCP on
+// loopback"): the real binary is spawned and reached the way a user reaches it — mbpoll over its
+// pty, over a socat pty pair and over loopback TCP, a raw HART command 0 over its pty; usage
+// errors exit 2 with one line; SIGTERM ends it with 0; --fault drops and cuts. Every wait is
+// bounded; no sleeps. CANopen on --can-fd: sim_can_test.cpp.
 #include "hart/deframer.h"
 #include "hart/frame.h"
 #include "hart/universal.h"
-#include "sim/node_config.h"
+#include "sim_process.h"
 
 #include <QCoreApplication>
-#include <QDeadlineTimer>
-#include <QProcess>
-#include <QRegularExpression>
-#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <fcntl.h>
 #include <gtest/gtest.h>
-#include <map>
 #include <poll.h>
 #include <termios.h>
 #include <unistd.h>
 
-namespace {
-
-constexpr int kStartMs = 10'000;
-constexpr int kRunMs = 20'000;
-
-// The simulator as a child process; SIGTERM (then SIGKILL) when the test is done with it.
-class Sim
-{
-public:
-    explicit Sim(const QStringList &args)
-    {
-        m_process.setProgram(QStringLiteral(VT_SIM_PATH));
-        m_process.setArguments(args);
-        m_process.start();
-    }
-    ~Sim()
-    {
-        if (m_process.state() == QProcess::NotRunning)
-            return;
-        m_process.terminate();
-        if (!m_process.waitForFinished(kStartMs)) {
-            m_process.kill();
-            m_process.waitForFinished(kStartMs);
-        }
-    }
-    Sim(const Sim &) = delete;
-    Sim &operator=(const Sim &) = delete;
-
-    // What follows "listening on " on the first stdout line; empty when none came in time.
-    QString listening()
-    {
-        const QDeadlineTimer deadline(kStartMs);
-        while (!m_process.canReadLine()) {
-            if (deadline.hasExpired() || m_process.state() == QProcess::NotRunning)
-                return {};
-            m_process.waitForReadyRead(
-                static_cast<int>(std::max<qint64>(1, deadline.remainingTime())));
-        }
-        const QString line = QString::fromUtf8(m_process.readLine()).trimmed();
-        const QString prefix = QStringLiteral("listening on ");
-        return line.startsWith(prefix) ? line.mid(prefix.size()) : QString();
-    }
-    QString stderrText() { return QString::fromUtf8(m_process.readAllStandardError()); }
-    QProcess &process() { return m_process; }
-
-private:
-    QProcess m_process;
-};
-
-struct ProcessRun
-{
-    bool finished = false;
-    int code = -1;
-    QString out, err;
-};
-
-ProcessRun run(const QString &program, const QStringList &args)
-{
-    QProcess p;
-    p.start(program, args);
-    ProcessRun r;
-    r.finished = p.waitForFinished(kRunMs);
-    if (!r.finished)
-        p.kill();
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
-
-QString mbpoll()
-{
-    return QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
-}
-
-// mbpoll's "[ref]: \tvalue" lines, values as the 16-bit register words.
-std::map<int, std::uint16_t> registers(const QString &out)
-{
-    std::map<int, std::uint16_t> values;
-    static const QRegularExpression line(QStringLiteral(R"(^\[(\d+)\]:\s+(-?\d+))"),
-                                         QRegularExpression::MultilineOption);
-    for (auto it = line.globalMatch(out); it.hasNext();) {
-        const auto m = it.next();
-        values[m.captured(1).toInt()] = static_cast<std::uint16_t>(m.captured(2).toInt());
-    }
-    return values;
-}
-
-// A fresh in-process node: what the simulator's modules hold before anyone writes.
-std::uint16_t freshWord(const std::string &family, std::size_t modules, std::size_t index, int id)
-{
-    vt::dev::sim::SimClock clock;
-    auto node = vt::dev::sim::makeNode(clock, family, modules);
-    EXPECT_TRUE(node.ok());
-    return node.ok() ? (*node)->module(index).storage().word(id) : 0;
-}
-
-int lineCount(const QString &text)
-{
-    return static_cast<int>(text.count(QLatin1Char('\n')));
-}
-
-} // namespace
+using namespace vt::simtest;
 
 // Modbus RTU over the pty: IDs 0..3 of an OPAT master (point-to-point, unit 1) read their
 // defaults (Vers = 3400). -P none: a pty takes any parity, the simulator does not insist on 8E1.
@@ -180,6 +76,77 @@ TEST(SimCli, MbpollOverTcpReadsAndGetsIllegalDataValue)
     EXPECT_TRUE(log.contains(QRegularExpression(R"(\] -> .* 01 86 03)"))) << log.toStdString();
 }
 
+// Modbus TCP writes: C1.07 (dead band A, 0..9999) of the DMA-2 with E22 = 2 takes a new value
+// that reads back, while module 1 keeps its default (unit id = module address).
+TEST(SimCli, MbpollWritesOverTcp)
+{
+    if (mbpoll().isEmpty())
+        GTEST_SKIP() << "mbpoll is not installed (scripts/deps test installs it)";
+    Sim sim({"--device", "dma-pn-v51", "--modules", "3", "--tcp", ":0"});
+    const QString where = sim.listening();
+    ASSERT_TRUE(where.startsWith("127.0.0.1:")) << sim.stderrText().toStdString();
+    const int id = paramId("dma-pn-v51", "C1.07");
+    ASSERT_GE(id, 0);
+    auto tcp = [&](const QString &unit, const QStringList &values) {
+        return run(mbpoll(),
+                   QStringList{"-m", "tcp", "-p", where.section(':', -1), "-a", unit, "-t", "4",
+                               "-r", QString::number(id), "-1", "-0", "-o", "2", "127.0.0.1"} +
+                       values);
+    };
+    const ProcessRun writing = tcp("2", {"1234"});
+    ASSERT_TRUE(writing.finished);
+    ASSERT_EQ(writing.code, 0) << writing.out.toStdString() << writing.err.toStdString();
+    EXPECT_TRUE(writing.out.contains("Written 1 references")) << writing.out.toStdString();
+    EXPECT_EQ(registers(tcp("2", {}).out)[id], 1234);
+    EXPECT_EQ(registers(tcp("1", {}).out)[id], freshWord("dma-pn-v51", 3, 0, id));
+}
+
+// Modbus RTU over a socat pseudo-terminal pair, the way a master without a null-modem cable
+// reaches the simulator: valvetune-sim --serial on one end (plain termios, no libserialport, so
+// no pty shim), mbpoll on the other, one mbpoll run per transaction. C1.07 of a DMA-2 V51 reads
+// its default, takes a write and reads it back; 10000 (above 9999) gets exception 3 and leaves
+// the value alone. The runs after the first one also pin down that an empty line is no end of
+// file for --serial (VMIN 1).
+TEST(SimCli, MbpollReadsAndWritesOverSocatPtyPair)
+{
+    if (mbpoll().isEmpty())
+        GTEST_SKIP() << "mbpoll is not installed (scripts/deps test installs it)";
+    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+    if (socat.isEmpty())
+        GTEST_SKIP() << "socat is not installed (scripts/deps test installs it)";
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString simEnd = dir.filePath("sim"), masterEnd = dir.filePath("master");
+    Sim pair({"-d", "-d", "pty,raw,echo=0,link=" + simEnd, "pty,raw,echo=0,link=" + masterEnd}, {},
+             socat);
+    ASSERT_TRUE(pair.waitForStderr("starting data transfer loop"))
+        << pair.stderrSeen().toStdString();
+
+    Sim sim({"--device", "dma-pn-v51", "--serial", simEnd, "--parity", "none"});
+    ASSERT_EQ(sim.listening(), simEnd) << sim.stderrText().toStdString();
+    const int id = paramId("dma-pn-v51", "C1.07");
+    ASSERT_GE(id, 0);
+    auto rtu = [&](const QStringList &values) {
+        return run(mbpoll(),
+                   QStringList{"-m", "rtu", "-b", "19200", "-P", "none", "-a", "1", "-t", "4", "-r",
+                               QString::number(id), "-1", "-0", "-o", "2", masterEnd} +
+                       values);
+    };
+    const ProcessRun before = rtu({});
+    ASSERT_EQ(before.code, 0) << before.out.toStdString() << before.err.toStdString();
+    EXPECT_EQ(registers(before.out)[id], freshWord("dma-pn-v51", 1, 0, id));
+
+    const ProcessRun writing = rtu({"1500"});
+    ASSERT_EQ(writing.code, 0) << writing.out.toStdString() << writing.err.toStdString();
+    EXPECT_TRUE(writing.out.contains("Written 1 references")) << writing.out.toStdString();
+    EXPECT_EQ(registers(rtu({}).out)[id], 1500);
+
+    const ProcessRun refused = rtu({"10000"});
+    EXPECT_TRUE((refused.out + refused.err).contains("Illegal data value"))
+        << refused.out.toStdString() << refused.err.toStdString();
+    EXPECT_EQ(registers(rtu({}).out)[id], 1500);
+}
+
 TEST(SimCli, UsageErrorsExitTwoWithOneLine)
 {
     const QList<QStringList> cases = {
@@ -190,6 +157,16 @@ TEST(SimCli, UsageErrorsExitTwoWithOneLine)
         {"--device", "opat", "--pty", "--protocol", "canopen"},
         {"--device", "opat", "--pty", "--fault", "drop=2"},
         {"--pty"},
+        // CAN: canopen only, one module per node id, node 1..127, no line settings, no HART.
+        {"--device", "opat", "--can", "vcan0", "--protocol", "modbus-rtu"},
+        {"--device", "dma-pn-v51", "--modules", "2", "--can", "vcan0"},
+        {"--device", "dma-pn-v51", "--can", "vcan0", "--node", "128"},
+        {"--device", "dma-pn-v51", "--tcp", ":0", "--node", "3"},
+        {"--device", "dma-pn-v51", "--can-fd", "x"},
+        {"--device", "opat", "--can", "vcan0", "--baud", "9600"},
+        {"--device", "wandfluh-sd7", "--can", "vcan0"},
+        {"--device", "wandfluh-ed1", "--can", "vcan0", "--modules", "2"},
+        {"--device", "opat", "--can", "vcan0", "--pty"},
     };
     for (const QStringList &args : cases) {
         const ProcessRun r = run(QStringLiteral(VT_SIM_PATH), args);
