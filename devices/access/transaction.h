@@ -29,6 +29,8 @@ struct Transaction
     std::vector<const ParamMeta *> rows;  // Read: the rows answered by this exchange, in wire order;
                                           // Write: exactly one row
     std::vector<RawValue> values;         // Write: the value to write (one)
+    int step = 0;                         // Identify: which of the adapter's identify exchanges
+                                          // (HCS: 0 = Vers (ID 0), 1 = E00 (ID 95))
     Bytes raw;                            // Raw: bytes to send as they are (the inspector's composer)
     bool expectsReply = true;             // Raw: false for a frame sent without waiting
 };

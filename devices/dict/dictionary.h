@@ -25,6 +25,10 @@ struct Dictionary
     std::vector<std::string> versions;
     std::vector<std::string> modes;
     std::vector<ParamMeta> params; // in manual order
+    // Least time between two single writes to one module (DMA Profinet manual §3.4.1: the EEPROM
+    // needs up to 25 ms per parameter, "the cycle time of writing … should be greater than 30ms").
+    int writePacingMs = 0;
+    bool writePacingAssumed = false; // carried over from a sister manual, not stated for this family
 
     const ParamMeta *find(const std::string &name) const;
     const ParamMeta *findId(int id) const;

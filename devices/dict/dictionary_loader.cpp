@@ -120,7 +120,7 @@ private:
                 return nullptr;
             out = *b;
         }
-        for (const char *key : {"title", "vendor", "protocol", "source", "versions", "modes"})
+        for (const char *key : {"title", "vendor", "protocol", "source", "versions", "modes", "write_pacing"})
             if (raw.doc.contains(key))
                 out.header[key] = raw.doc[key];
         out.header["abstract"] = raw.doc.value("abstract", false);
@@ -173,6 +173,16 @@ private:
         dict->source = r.header.value("source", std::string());
         dict->versions = r.header.value("versions", std::vector<std::string>());
         dict->modes = r.header.value("modes", std::vector<std::string>());
+        if (r.header.contains("write_pacing")) {
+            const Json &pacing = r.header["write_pacing"];
+            const Json ms = pacing.is_object() ? pacing.value("ms", Json()) : Json();
+            if (ms.is_number_integer() && ms.get<int>() >= 0 && ms.get<int>() <= 10'000) {
+                dict->writePacingMs = ms.get<int>();
+                dict->writePacingAssumed = pacing.value("assumed", false);
+            } else {
+                error(file, {}, "\"write_pacing\" needs \"ms\": 0..10000");
+            }
+        }
         const std::string protocol = r.header.value("protocol", std::string());
         if (protocol == "hcs")
             dict->protocol = DeviceProtocol::Hcs;

@@ -1,0 +1,72 @@
+// HCS modules over Modbus (ARCHITECTURE.md "Protocol decisions"): CMD 3 = FC 3 read holding
+// registers (register = parameter ID, ≤ 8 per request), CMD 6 = FC 6, exceptions FC | 0x80 with
+// the HCS meaning of the code. ModbusRtuAdapter frames with unit id + CRC (serial line),
+// ModbusTcpAdapter with the MBAP header and a transaction number per attempt.
+#pragma once
+
+#include "access/transaction.h"
+#include "hcs/types.h"
+#include "modbus/deframer.h"
+#include "modbus/pdu.h"
+
+#include <cstdint>
+
+namespace vt::dev::access {
+
+// The protocol-independent half: PDUs from transactions and replies from PDUs.
+class ModbusPduAdapter : public ProtocolAdapter
+{
+public:
+    explicit ModbusPduAdapter(hcs::Family family) : m_family(family) {}
+
+    std::vector<Transaction> planRead(int module, std::span<const ParamMeta *const> rows) const override;
+    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
+    std::vector<Transaction> planIdentify(int module) const override;
+
+protected:
+    // nullopt for a transaction this protocol cannot express (a text value, a row without ID).
+    std::optional<modbus::RequestPdu> requestPdu(const Transaction &t) const;
+    // The reply to `t` carried by `pdu` from unit `unit`.
+    Reply replyFromPdu(const Transaction &t, std::uint8_t unit, const modbus::ResponsePdu &pdu) const;
+    // FC 3 response: 1 + 1 + 2 × count; FC 6 and exceptions are shorter.
+    static std::size_t responsePduBytes(const Transaction &t);
+
+private:
+    hcs::Family m_family;
+};
+
+class ModbusRtuAdapter : public ModbusPduAdapter
+{
+public:
+    using ModbusPduAdapter::ModbusPduAdapter;
+
+    std::string protocolKey() const override { return "modbus-rtu"; }
+    Bytes encode(const Transaction &t) override;
+    std::size_t expectedReplyBytes(const Transaction &t) const override;
+    std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) override;
+    void resetFraming() override;
+
+private:
+    modbus::RtuDeframer m_deframer{Direction::Response};
+};
+
+class ModbusTcpAdapter : public ModbusPduAdapter
+{
+public:
+    using ModbusPduAdapter::ModbusPduAdapter;
+
+    std::string protocolKey() const override { return "modbus-tcp"; }
+    // Each call numbers a new transaction (Implementation Guide §4.1.2): a late answer to an
+    // earlier attempt is recognised by its number and ignored.
+    Bytes encode(const Transaction &t) override;
+    std::size_t expectedReplyBytes(const Transaction &t) const override;
+    std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) override;
+    void resetFraming() override;
+
+private:
+    modbus::TcpDeframer m_deframer;
+    std::uint16_t m_nextTransaction = 1;
+    std::uint16_t m_outstanding = 0;
+};
+
+} // namespace vt::dev::access

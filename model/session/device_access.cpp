@@ -1,0 +1,231 @@
+#include "device_access.h"
+
+#include <QTimer>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+
+namespace vt::model {
+
+namespace {
+
+struct IdentifyState
+{
+    dev::access::Identity identity;
+    int remaining = 0;
+    bool failed = false;
+    Outcome failure;
+};
+
+struct ReadState
+{
+    std::vector<const dev::ParamMeta *> asked;
+    std::map<const dev::ParamMeta *, dev::RawValue> got;
+    std::vector<RowFailure> failures;
+    int done = 0;
+    int total = 0;
+    std::function<void(const ReadResult &)> finished;
+    ReadProgress progress;
+};
+
+void merge(dev::access::Identity &into, const dev::access::Identity &from)
+{
+    if (from.versRaw >= 0)
+        into.versRaw = from.versRaw;
+    if (from.mode >= 0)
+        into.mode = from.mode;
+    if (from.manufacturer)
+        into.manufacturer = from.manufacturer;
+    if (from.expandedDeviceType)
+        into.expandedDeviceType = from.expandedDeviceType;
+    if (from.deviceId)
+        into.deviceId = from.deviceId;
+    if (from.capability)
+        into.capability = from.capability;
+    if (!from.text.empty())
+        into.text = from.text;
+}
+
+QString fromLocal(const dev::LocalText &text)
+{
+    return QString::fromStdString(text.en);
+}
+
+// "34.03" → "34": dictionary rows list major versions.
+std::string majorVersion(const std::string &version)
+{
+    std::string major;
+    for (char c : version) {
+        if (!std::isdigit(static_cast<unsigned char>(c)))
+            break;
+        major.push_back(c);
+    }
+    return major;
+}
+
+} // namespace
+
+DeviceAccess::DeviceAccess(Session &session, const dev::DictionarySet &dictionaries, dev::HcsProduct product,
+                           QObject *parent)
+    : QObject(parent), m_session(session), m_dictionaries(dictionaries), m_product(product)
+{
+}
+
+DeviceAccess::~DeviceAccess() = default;
+
+void DeviceAccess::identify(int module, std::function<void(const IdentifyResult &)> done)
+{
+    auto plan = m_session.adapter().planIdentify(module);
+    auto state = std::make_shared<IdentifyState>();
+    state->remaining = static_cast<int>(plan.size());
+    auto conclude = [this, module, state, done = std::move(done)] {
+        IdentifyResult result;
+        result.module.address = module;
+        if (state->failed) {
+            result.failure = state->failure;
+            result.message = state->failure.reason.isEmpty() ? outcomeStatusText(state->failure.status)
+                                                             : state->failure.reason;
+            if (state->failure.status == OutcomeStatus::DeviceException)
+                result.message = fromLocal(state->failure.reply.exceptionText);
+            done(result);
+            return;
+        }
+        const dev::access::Identity &id = state->identity;
+        dev::Result<dev::Identification, dev::LocalText> found = dev::LocalText{"the module did not identify itself",
+                                                                                "das Modul hat sich nicht zu erkennen gegeben"};
+        if (id.manufacturer != 0)
+            found = dev::identifyHart(m_dictionaries, id.manufacturer, id.expandedDeviceType);
+        else if (id.capability != 0)
+            found = dev::identifyDsp408(m_dictionaries, id.capability);
+        else if (id.versRaw >= 0)
+            found = dev::identifyHcs(m_dictionaries, id.versRaw, id.mode, m_product);
+        if (!found) {
+            result.message = fromLocal(found.error());
+            done(result);
+            return;
+        }
+        result.ok = true;
+        result.module.identification = *found;
+        result.module.dictionary = m_dictionaries.find(found->family);
+        result.module.versRaw = id.versRaw;
+        result.module.mode = id.mode;
+        result.module.identityText = QString::fromStdString(id.text);
+        if (!found->exact)
+            result.message = fromLocal(found->warning);
+        done(result);
+    };
+    if (plan.empty()) {
+        QTimer::singleShot(0, this, conclude);
+        return;
+    }
+    for (auto &t : plan) {
+        m_session.submit(std::move(t), Priority::User, [state, conclude](const Outcome &outcome) {
+            if (outcome.status == OutcomeStatus::Ok)
+                merge(state->identity, outcome.reply.identity);
+            else if (!state->failed) {
+                state->failed = true;
+                state->failure = outcome;
+            }
+            if (--state->remaining == 0)
+                conclude();
+        });
+    }
+}
+
+std::shared_ptr<DeviceAccess::ReadHandle> DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows,
+                                                             Priority priority,
+                                                             std::function<void(const ReadResult &)> done,
+                                                             ReadProgress progress)
+{
+    auto handle = std::make_shared<ReadHandle>();
+    handle->m_session = &m_session;
+    auto state = std::make_shared<ReadState>();
+    state->asked = rows;
+    state->finished = std::move(done);
+    state->progress = std::move(progress);
+
+    auto plan = m_session.adapter().planRead(module, rows);
+    // Rows no exchange covers: not readable or not addressable on this protocol.
+    std::vector<const dev::ParamMeta *> planned;
+    for (const auto &t : plan)
+        planned.insert(planned.end(), t.rows.begin(), t.rows.end());
+    std::sort(planned.begin(), planned.end());
+    std::vector<const dev::ParamMeta *> unplanned;
+    for (const dev::ParamMeta *row : rows) {
+        if (!std::binary_search(planned.begin(), planned.end(), row))
+            unplanned.push_back(row);
+    }
+    if (!unplanned.empty()) {
+        state->failures.push_back(RowFailure{std::move(unplanned),
+                                             Outcome{OutcomeStatus::NotEncodable, {}, 0, false,
+                                                     tr("not readable over %1")
+                                                         .arg(QString::fromStdString(m_session.adapter().protocolKey()))}});
+    }
+    state->total = static_cast<int>(plan.size());
+
+    auto conclude = [state, handle] {
+        handle->m_finished = true;
+        ReadResult result;
+        result.cancelled = handle->m_cancelled;
+        for (const dev::ParamMeta *row : state->asked) {
+            auto it = state->got.find(row);
+            if (it != state->got.end())
+                result.values.push_back(RowValue{row, it->second});
+        }
+        result.failures = std::move(state->failures);
+        if (state->finished)
+            state->finished(result);
+    };
+    if (plan.empty()) {
+        QTimer::singleShot(0, this, conclude);
+        return handle;
+    }
+    for (auto &t : plan) {
+        auto rowsOfT = t.rows;
+        handle->m_ids.push_back(m_session.submit(
+            std::move(t), priority, [state, conclude, rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
+                if (outcome.status == OutcomeStatus::Ok && outcome.reply.values.size() == rowsOfT.size()) {
+                    for (std::size_t i = 0; i < rowsOfT.size(); ++i)
+                        state->got[rowsOfT[i]] = outcome.reply.values[i];
+                } else if (outcome.status != OutcomeStatus::Cancelled) {
+                    state->failures.push_back(RowFailure{rowsOfT, outcome});
+                }
+                ++state->done;
+                if (state->progress)
+                    state->progress(state->done, state->total);
+                if (state->done == state->total)
+                    conclude();
+            }));
+    }
+    return handle;
+}
+
+RequestId DeviceAccess::write(int module, const dev::ParamMeta &row, const dev::RawValue &value, Priority priority,
+                              Completion done)
+{
+    return m_session.submit(m_session.adapter().planWrite(module, row, value), priority, std::move(done));
+}
+
+void DeviceAccess::ReadHandle::cancel()
+{
+    if (m_finished || m_cancelled)
+        return;
+    m_cancelled = true;
+    for (RequestId id : m_ids)
+        m_session->cancel(id);
+}
+
+std::vector<const dev::ParamMeta *> readableRows(const dev::Dictionary &dictionary, const std::string &version,
+                                                 const std::string &mode)
+{
+    const std::string major = majorVersion(version);
+    std::vector<const dev::ParamMeta *> rows;
+    for (const dev::ParamMeta &row : dictionary.params) {
+        if (row.readable() && row.appliesTo(major, mode))
+            rows.push_back(&row);
+    }
+    return rows;
+}
+
+} // namespace vt::model

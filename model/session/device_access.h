@@ -1,0 +1,112 @@
+// DeviceAccess: the one API the model, the CLI and the GUI use to talk to modules, over any
+// protocol adapter: identify a module (and pick its dictionary), read rows in the fewest
+// exchanges the device allows, write one value. Results arrive through callbacks from the event
+// loop. Owner: the connection; same thread as its Session, which must outlive it.
+#pragma once
+
+#include "model/session/session.h"
+
+#include "dict/dictionary.h"
+#include "dict/identify.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace vt::model {
+
+struct ModuleInfo
+{
+    int address = 0;
+    dev::Identification identification;
+    const dev::Dictionary *dictionary = nullptr; // from the DictionarySet; outlives the access
+    int versRaw = -1;                            // HCS Vers (ID 0)
+    int mode = -1;                               // HCS E00
+    QString identityText;                        // HART/DSP-408 identity for people
+};
+
+struct IdentifyResult
+{
+    bool ok = false;
+    ModuleInfo module;
+    Outcome failure;  // when !ok and the exchange failed
+    QString message;  // when !ok: why (no answer, unknown device …); when ok: a fallback warning
+};
+
+struct RowValue
+{
+    const dev::ParamMeta *row = nullptr;
+    dev::RawValue value;
+};
+
+struct RowFailure
+{
+    std::vector<const dev::ParamMeta *> rows;
+    Outcome outcome;
+};
+
+struct ReadResult
+{
+    std::vector<RowValue> values;     // in the order the rows were asked for
+    std::vector<RowFailure> failures; // exchanges that failed, with their rows
+    bool cancelled = false;
+    bool complete() const { return failures.empty() && !cancelled; }
+};
+
+// Read progress: exchanges done of all exchanges planned.
+using ReadProgress = std::function<void(int done, int total)>;
+
+class DeviceAccess : public QObject
+{
+    Q_OBJECT
+public:
+    // `product` disambiguates HCS versions (identify.h); Unknown when the link does not tell.
+    DeviceAccess(Session &session, const dev::DictionarySet &dictionaries,
+                 dev::HcsProduct product = dev::HcsProduct::Unknown, QObject *parent = nullptr);
+    ~DeviceAccess() override;
+
+    Session &session() const { return m_session; }
+    const dev::DictionarySet &dictionaries() const { return m_dictionaries; }
+
+    void identify(int module, std::function<void(const IdentifyResult &)> done);
+
+    // Reads `rows` of `module`; the handle cancels the rest. Rows the protocol cannot address and
+    // rows that are not readable are reported as failures with status NotEncodable.
+    class ReadHandle;
+    std::shared_ptr<ReadHandle> read(int module, std::vector<const dev::ParamMeta *> rows, Priority priority,
+                                     std::function<void(const ReadResult &)> done, ReadProgress progress = {});
+
+    // Writes one raw value. The caller range-checks first (dev::checkWrite); this does not read back.
+    RequestId write(int module, const dev::ParamMeta &row, const dev::RawValue &value, Priority priority,
+                    Completion done);
+
+private:
+    Session &m_session;
+    const dev::DictionarySet &m_dictionaries;
+    dev::HcsProduct m_product;
+};
+
+// Cancels what is still queued of one read.
+class DeviceAccess::ReadHandle
+{
+public:
+    void cancel();
+    bool finished() const { return m_finished; }
+
+private:
+    friend class DeviceAccess;
+    Session *m_session = nullptr;
+    std::vector<RequestId> m_ids;
+    bool m_cancelled = false;
+    bool m_finished = false;
+};
+
+// Rows a "read all" asks for: readable, applicable to the module's version and mode; inactive
+// (x) and not-implemented (n) rows are never read.
+std::vector<const dev::ParamMeta *> readableRows(const dev::Dictionary &dictionary, const std::string &version,
+                                                 const std::string &mode);
+
+} // namespace vt::model

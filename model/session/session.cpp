@@ -1,0 +1,284 @@
+#include "session.h"
+
+#include "transports/link.h"
+
+namespace vt::model {
+
+namespace {
+
+QByteArray toQByteArray(const dev::Bytes &bytes)
+{
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
+}
+
+std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
+{
+    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())};
+}
+
+constexpr qsizetype kMaxUnmatched = 4096;
+
+} // namespace
+
+Session::Session(link::Link *link, std::unique_ptr<dev::access::ProtocolAdapter> adapter,
+                 SessionOptions options, QObject *parent)
+    : QObject(parent), m_link(link), m_adapter(std::move(adapter)), m_options(options)
+{
+    m_clock.start();
+    m_timeout.setSingleShot(true);
+    m_timeout.setTimerType(Qt::PreciseTimer);
+    m_backoff.setSingleShot(true);
+    m_backoff.setTimerType(Qt::PreciseTimer);
+    connect(&m_timeout, &QTimer::timeout, this, &Session::onTimeout);
+    connect(&m_backoff, &QTimer::timeout, this, [this] {
+        if (m_current)
+            sendAttempt();
+    });
+    connect(m_link, &link::Link::received, this, &Session::onReceived);
+    connect(m_link, &link::Link::stateChanged, this, &Session::onLinkState);
+    connect(m_link, &link::Link::failed, this, &Session::onLinkFailed);
+}
+
+Session::~Session() = default;
+
+bool Session::linkOpen() const
+{
+    return m_link->state() == link::LinkState::Open;
+}
+
+RequestId Session::submit(dev::access::Transaction t, Priority priority, Completion done)
+{
+    auto pending = std::make_unique<Pending>();
+    pending->id = m_nextId++;
+    pending->transaction = std::move(t);
+    pending->priority = priority;
+    pending->done = std::move(done);
+    const RequestId id = pending->id;
+    if (queued() >= m_options.maxQueued) {
+        finish(std::move(pending), Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("The request queue is full")});
+        return id;
+    }
+    (priority == Priority::User ? m_user : m_monitor).push_back(std::move(pending));
+    schedule();
+    return id;
+}
+
+void Session::cancel(RequestId id)
+{
+    if (m_current && m_current->id == id) {
+        m_current->cancelled = true;
+        return;
+    }
+    for (auto *queue : {&m_user, &m_monitor}) {
+        for (auto it = queue->begin(); it != queue->end(); ++it) {
+            if ((*it)->id == id) {
+                auto pending = std::move(*it);
+                queue->erase(it);
+                finish(std::move(pending), Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("Cancelled")});
+                return;
+            }
+        }
+    }
+}
+
+void Session::cancelAll(Priority priority)
+{
+    auto &queue = priority == Priority::User ? m_user : m_monitor;
+    auto taken = std::move(queue);
+    queue.clear();
+    for (auto &pending : taken)
+        finish(std::move(pending), Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("Cancelled")});
+    if (m_current && m_current->priority == priority)
+        m_current->cancelled = true;
+}
+
+void Session::schedule()
+{
+    if (m_current || m_startScheduled)
+        return;
+    m_startScheduled = true;
+    QTimer::singleShot(0, this, [this] {
+        m_startScheduled = false;
+        startNext();
+    });
+}
+
+void Session::startNext()
+{
+    if (m_current)
+        return;
+    if (m_user.empty() && m_monitor.empty()) {
+        emit idle();
+        return;
+    }
+    const auto state = m_link->state();
+    if (state == link::LinkState::Opening)
+        return; // onLinkState(Open) schedules again
+    if (state != link::LinkState::Open) {
+        failEverything(OutcomeStatus::LinkLost, tr("The link %1 is not open").arg(m_link->description()));
+        return;
+    }
+    auto &queue = m_user.empty() ? m_monitor : m_user;
+    m_current = std::move(queue.front());
+    queue.pop_front();
+    sendAttempt();
+}
+
+void Session::sendAttempt()
+{
+    Pending &p = *m_current;
+    if (p.cancelled) {
+        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, {}, p.attempts, p.sent, tr("Cancelled")});
+        return;
+    }
+    m_adapter->resetFraming();
+    m_unmatched.clear();
+    const dev::Bytes bytes = m_adapter->encode(p.transaction);
+    if (bytes.empty()) {
+        finish(std::move(m_current), Outcome{OutcomeStatus::NotEncodable, {}, p.attempts, p.sent,
+                                             tr("The request cannot be encoded for %1")
+                                                 .arg(QString::fromStdString(m_adapter->protocolKey()))});
+        return;
+    }
+    ++p.attempts;
+    p.sent = true;
+    ++m_counters.attempts;
+    if (p.attempts > 1)
+        ++m_counters.retries;
+    const QByteArray frame = toQByteArray(bytes);
+    emit frameSent(frame, p.transaction.module, elapsedNs());
+    m_link->send(frame);
+    if (p.transaction.kind == dev::access::TransactionKind::Raw && !p.transaction.expectsReply) {
+        finish(std::move(m_current), Outcome{OutcomeStatus::Ok, {}, p.attempts, true, {}});
+        return;
+    }
+    const auto wait = m_options.timeout(bytes.size(), m_adapter->expectedReplyBytes(p.transaction));
+    m_timeout.start(wait);
+}
+
+void Session::onReceived(const QByteArray &bytes)
+{
+    if (!m_current || !m_timeout.isActive()) {
+        emit frameReceived(bytes, -1, elapsedNs(), tr("unsolicited"));
+        return;
+    }
+    Pending &p = *m_current;
+    m_unmatched.append(bytes);
+    if (m_unmatched.size() > kMaxUnmatched) // a babbling line must not grow memory
+        m_unmatched.remove(0, m_unmatched.size() - kMaxUnmatched);
+    auto reply = m_adapter->feed(asSpan(bytes), p.transaction);
+    if (!reply)
+        return;
+    m_unmatched.clear();
+    if (reply->status == dev::access::ReplyStatus::Mismatch) {
+        emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+                           tr("does not answer the request"));
+        return;
+    }
+    m_timeout.stop();
+    const bool refused = reply->status == dev::access::ReplyStatus::DeviceException;
+    emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+                       refused ? QString::fromStdString(reply->exceptionText.en) : QString());
+    if (p.cancelled) {
+        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, std::move(*reply), p.attempts, true, tr("Cancelled")});
+        return;
+    }
+    Outcome outcome{refused ? OutcomeStatus::DeviceException : OutcomeStatus::Ok, std::move(*reply), p.attempts, true, {}};
+    if (refused)
+        ++m_counters.exceptions;
+    finish(std::move(m_current), std::move(outcome));
+}
+
+void Session::onTimeout()
+{
+    if (!m_current)
+        return;
+    Pending &p = *m_current;
+    ++m_counters.timeouts;
+    if (!m_unmatched.isEmpty()) {
+        emit frameReceived(m_unmatched, p.transaction.module, elapsedNs(),
+                           tr("no valid frame (checksum error, corrupted or incomplete)"));
+        m_unmatched.clear();
+    }
+    emit attemptTimedOut(p.transaction.module, p.attempts, elapsedNs());
+    if (p.cancelled) {
+        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, {}, p.attempts, true, tr("Cancelled")});
+        return;
+    }
+    if (p.attempts <= m_options.retries) {
+        emit countersChanged();
+        m_backoff.start(m_options.backoffBefore(p.attempts));
+        return;
+    }
+    ++m_counters.failures;
+    finish(std::move(m_current), Outcome{OutcomeStatus::Timeout, {}, p.attempts, true,
+                                         tr("No answer after %n attempt(s)", nullptr, p.attempts)});
+}
+
+void Session::onLinkState(link::LinkState state)
+{
+    if (state == link::LinkState::Open) {
+        schedule();
+        return;
+    }
+    if (state == link::LinkState::Closed || state == link::LinkState::Failed)
+        failEverything(OutcomeStatus::LinkLost, tr("The link %1 was lost").arg(m_link->description()));
+}
+
+void Session::onLinkFailed(const QString &reason)
+{
+    failEverything(OutcomeStatus::LinkLost, reason);
+}
+
+void Session::failEverything(OutcomeStatus status, const QString &reason)
+{
+    m_timeout.stop();
+    m_backoff.stop();
+    if (m_current) {
+        const int attempts = m_current->attempts;
+        const bool sent = m_current->sent;
+        ++m_counters.failures;
+        finish(std::move(m_current), Outcome{status, {}, attempts, sent, reason});
+    }
+    for (auto *queue : {&m_user, &m_monitor}) {
+        auto taken = std::move(*queue);
+        queue->clear();
+        for (auto &pending : taken) {
+            ++m_counters.failures;
+            finish(std::move(pending), Outcome{status, {}, 0, false, reason});
+        }
+    }
+}
+
+void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
+{
+    ++m_counters.requests;
+    emit countersChanged();
+    // Completions run from the event loop, in order, never inside submit()/cancel().
+    auto done = std::move(pending->done);
+    if (done) {
+        QTimer::singleShot(0, this, [done = std::move(done), outcome = std::move(outcome)] { done(outcome); });
+    }
+    schedule();
+}
+
+QString outcomeStatusText(OutcomeStatus status)
+{
+    switch (status) {
+    case OutcomeStatus::Ok:
+        return Session::tr("ok");
+    case OutcomeStatus::DeviceException:
+        return Session::tr("refused by the device");
+    case OutcomeStatus::Timeout:
+        return Session::tr("no answer");
+    case OutcomeStatus::LinkLost:
+        return Session::tr("link lost");
+    case OutcomeStatus::Cancelled:
+        return Session::tr("cancelled");
+    case OutcomeStatus::NotEncodable:
+        return Session::tr("cannot be encoded");
+    }
+    return {};
+}
+
+} // namespace vt::model

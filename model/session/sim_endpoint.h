@@ -1,0 +1,89 @@
+// SimEndpoint: the built-in simulator as a link — a simulated HCS node (makeNode) or Wandfluh SD7
+// behind the front end of the chosen protocol, driven in real time, reached through a SimLink.
+// It is what `valvetune --simulate` and `valvetune-cli --sim` connect to, and what the session's
+// end-to-end tests talk to (STYLE.md rule 8: the simulator is just another link).
+// Ownership: makeSimLink() returns the SimLink; the endpoint is the link's child QObject, so the
+// device lives exactly as long as the link. GUI thread (the link's).
+#pragma once
+
+#include "core/result.h"
+#include "sim/sim_clock.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <memory>
+#include <string>
+
+namespace vt::dev {
+class ByteServer;
+class DictionarySet;
+namespace sim {
+class HcsNode;
+class HartDevice;
+} // namespace sim
+} // namespace vt::dev
+
+namespace vt::link {
+class SimLink;
+}
+
+namespace vt::model {
+
+struct SimHart;
+
+struct SimSpec
+{
+    std::string family;              // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
+    std::size_t modules = 1;         // HCS node size
+    int mode = 0;                    // E00; 0: the family's first mode
+    std::string protocol;            // "modbus-rtu" (default for HCS), "modbus-tcp", "node-image", "hart"
+    int baudRate = 0;                // simulated wire speed; 0: no wire delay
+    int bitsPerCharacter = 11;
+};
+
+// "dma-pn-v51:3" → family and module count; an error names what is wrong.
+dev::Result<SimSpec, QString> parseSimSpec(const QString &text);
+
+class SimEndpoint : public QObject
+{
+    Q_OBJECT
+public:
+    ~SimEndpoint() override;
+
+    dev::sim::SimClock &clock() { return m_clock; }
+    dev::sim::HcsNode *node() const { return m_node.get(); }        // HCS families
+    dev::sim::HartDevice *hart() const;                             // wandfluh-sd7
+    const SimSpec &spec() const { return m_spec; }
+    // The module address a master uses for module `index` (Modbus unit / node SADR / poll address).
+    int moduleAddress(std::size_t index) const;
+    std::size_t moduleCount() const;
+
+    // Real time (the default): a 1 ms timer moves the simulated clock with the wall clock.
+    void setRunning(bool running);
+
+private:
+    friend dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &spec,
+                                                                            const dev::DictionarySet *set);
+    SimEndpoint(SimSpec spec, QObject *parent);
+    void tick();
+
+    SimSpec m_spec;
+    dev::sim::SimClock m_clock;
+    std::unique_ptr<dev::sim::HcsNode> m_node;
+    std::shared_ptr<SimHart> m_hart; // opaque: see sim_hart.h
+    link::SimLink *m_link = nullptr;
+    QTimer m_timer;
+    QElapsedTimer m_elapsed;
+    std::int64_t m_offsetUs = 0;
+};
+
+// Builds the device and its link (not yet open). `set`: the dictionaries (builtin when null),
+// which must outlive the link. The endpoint is `link->findChild<SimEndpoint *>()`.
+dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &spec,
+                                                                 const dev::DictionarySet *set = nullptr);
+SimEndpoint *simEndpointOf(const link::SimLink &link);
+
+} // namespace vt::model

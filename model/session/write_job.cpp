@@ -1,0 +1,323 @@
+#include "write_job.h"
+
+#include "dict/cooking.h"
+
+#include <algorithm>
+
+namespace vt::model {
+
+namespace {
+
+QString local(const dev::LocalText &text)
+{
+    return QString::fromStdString(text.en);
+}
+
+QString valueText(const dev::ParamMeta &row, const dev::RawValue &value)
+{
+    if (dev::isText(value))
+        return QStringLiteral("\"%1\"").arg(QString::fromStdString(std::get<std::string>(value)));
+    return QString::fromStdString(dev::formatValue(row, dev::rawNumber(value), dev::Language::English)) +
+           QStringLiteral(" (raw %1)").arg(dev::rawNumber(value), 0, 'g', 10);
+}
+
+std::string trimmed(std::string s)
+{
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\0'))
+        s.pop_back();
+    return s;
+}
+
+} // namespace
+
+WriteJob::WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary, std::vector<WriteItem> items,
+                   WriteOptions options, QObject *parent)
+    : QObject(parent), m_access(access), m_module(module), m_dictionary(dictionary), m_items(std::move(items)),
+      m_options(options), m_pacingMs(options.pacingMs.value_or(dictionary.writePacingMs))
+{
+    m_pace.setSingleShot(true);
+    m_pace.setTimerType(Qt::PreciseTimer);
+    connect(&m_pace, &QTimer::timeout, this, [this] {
+        const int index = m_waiting;
+        m_waiting = -1;
+        if (index >= 0)
+            writeItem(index);
+    });
+}
+
+WriteJob::~WriteJob() = default;
+
+bool WriteJob::complete() const
+{
+    return std::all_of(m_items.begin(), m_items.end(), [](const WriteItem &i) { return isOnDevice(i.status); });
+}
+
+void WriteJob::start()
+{
+    if (m_running)
+        return;
+    m_order.clear();
+    for (std::size_t i = 0; i < m_items.size(); ++i) {
+        WriteItem &item = m_items[i];
+        item.readBack.reset();
+        item.exceptionCode = 0;
+        item.reason.clear();
+        item.status = WriteStatus::Pending;
+        if (!item.row) {
+            item.status = WriteStatus::RefusedLocally;
+            item.reason = tr("unknown parameter");
+        } else if (dev::isText(item.value) != item.row->isString()) {
+            item.status = WriteStatus::RefusedLocally;
+            item.reason = tr("%1 expects %2").arg(QString::fromStdString(item.row->name),
+                                                  item.row->isString() ? tr("text") : tr("a number"));
+        } else if (!item.row->writable()) {
+            item.status = WriteStatus::RefusedLocally;
+            item.reason = tr("%1 is not writable").arg(QString::fromStdString(item.row->name));
+        } else if (!dev::isText(item.value)) {
+            if (auto error = dev::checkWrite(*item.row, dev::rawNumber(item.value))) {
+                item.status = WriteStatus::RefusedLocally;
+                item.reason = local(error->message);
+            }
+        }
+        if (item.status == WriteStatus::Pending && m_options.skipUnchanged && item.before &&
+            readBackEquals(item, *item.before)) {
+            item.status = WriteStatus::Unchanged;
+        }
+        if (item.status == WriteStatus::Pending)
+            m_order.push_back(static_cast<int>(i));
+        else
+            emit itemChanged(static_cast<int>(i));
+    }
+    m_cursor = 0;
+    m_done = 0;
+    m_cancelled = false;
+    m_running = true;
+    emit progress(0, static_cast<int>(m_order.size()));
+    QTimer::singleShot(0, this, &WriteJob::next);
+}
+
+void WriteJob::resume()
+{
+    if (m_running)
+        return;
+    m_order.clear();
+    for (std::size_t i = 0; i < m_items.size(); ++i) {
+        WriteItem &item = m_items[i];
+        if (!needsResume(item.status))
+            continue;
+        if (item.status != WriteStatus::Uncertain)
+            item.status = WriteStatus::Pending;
+        m_order.push_back(static_cast<int>(i));
+    }
+    m_cursor = 0;
+    m_done = 0;
+    m_cancelled = false;
+    m_running = true;
+    emit progress(0, static_cast<int>(m_order.size()));
+    QTimer::singleShot(0, this, &WriteJob::next);
+}
+
+void WriteJob::cancel()
+{
+    if (!m_running)
+        return;
+    m_cancelled = true;
+    if (m_waiting >= 0) { // nothing on the wire: stop now
+        m_pace.stop();
+        m_waiting = -1;
+        --m_cursor;
+        stopRemaining(tr("cancelled"));
+        done();
+    }
+}
+
+void WriteJob::next()
+{
+    if (!m_running)
+        return;
+    if (m_cancelled) {
+        stopRemaining(tr("cancelled"));
+        done();
+        return;
+    }
+    if (m_cursor >= m_order.size()) {
+        done();
+        return;
+    }
+    const int index = m_order[m_cursor++];
+    if (m_items[static_cast<std::size_t>(index)].status == WriteStatus::Uncertain) {
+        probeItem(index);
+        return;
+    }
+    if (m_sinceWrite.isValid() && m_sinceWrite.elapsed() < m_pacingMs) {
+        m_waiting = index;
+        m_pace.start(static_cast<int>(m_pacingMs - m_sinceWrite.elapsed()));
+        return;
+    }
+    writeItem(index);
+}
+
+void WriteJob::writeItem(int index)
+{
+    WriteItem &item = m_items[static_cast<std::size_t>(index)];
+    m_access.write(m_module, *item.row, item.value, Priority::User, [this, index](const Outcome &outcome) {
+        m_sinceWrite.start(); // pacing counts from the device's acknowledgement (or the give-up)
+        WriteItem &it = m_items[static_cast<std::size_t>(index)];
+        switch (outcome.status) {
+        case OutcomeStatus::Ok:
+            if (m_options.verify && it.row->readable()) {
+                verifyItem(index);
+                return;
+            }
+            settle(index, WriteStatus::Written, tr("acknowledged; not read back"));
+            next();
+            return;
+        case OutcomeStatus::DeviceException:
+            it.exceptionCode = outcome.reply.exceptionCode;
+            settle(index, WriteStatus::Refused, local(outcome.reply.exceptionText));
+            next();
+            return;
+        case OutcomeStatus::NotEncodable:
+            settle(index, WriteStatus::RefusedLocally, outcome.reason);
+            next();
+            return;
+        case OutcomeStatus::Timeout:
+        case OutcomeStatus::LinkLost:
+        case OutcomeStatus::Cancelled:
+            settle(index, outcome.sent ? WriteStatus::Uncertain : WriteStatus::NotSent,
+                   outcome.sent ? tr("sent, but no answer (%1): the value may or may not be on the device")
+                                      .arg(outcome.reason)
+                                : outcome.reason);
+            stopRemaining(outcome.reason);
+            done();
+            return;
+        }
+    });
+}
+
+void WriteJob::verifyItem(int index)
+{
+    WriteItem &item = m_items[static_cast<std::size_t>(index)];
+    m_access.read(m_module, {item.row}, Priority::User, [this, index](const ReadResult &result) {
+        WriteItem &it = m_items[static_cast<std::size_t>(index)];
+        if (result.values.size() == 1) {
+            it.readBack = result.values.front().value;
+            if (readBackEquals(it, *it.readBack))
+                settle(index, WriteStatus::Verified);
+            else
+                settle(index, WriteStatus::Mismatch,
+                       tr("read back %1, expected %2").arg(valueText(*it.row, *it.readBack), valueText(*it.row, it.value)));
+            next();
+            return;
+        }
+        const Outcome outcome = result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        settle(index, WriteStatus::Written, tr("acknowledged; the read back failed (%1)").arg(outcome.reason));
+        if (outcome.status == OutcomeStatus::LinkLost || outcome.status == OutcomeStatus::Timeout ||
+            outcome.status == OutcomeStatus::Cancelled) {
+            stopRemaining(outcome.reason);
+            done();
+            return;
+        }
+        next();
+    });
+}
+
+void WriteJob::probeItem(int index)
+{
+    WriteItem &item = m_items[static_cast<std::size_t>(index)];
+    m_access.read(m_module, {item.row}, Priority::User, [this, index](const ReadResult &result) {
+        WriteItem &it = m_items[static_cast<std::size_t>(index)];
+        if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
+            it.readBack = result.values.front().value;
+            settle(index, WriteStatus::Verified, tr("found on the device after the interruption"));
+            next();
+            return;
+        }
+        if (result.values.size() == 1) { // not there: write it now, paced like any write
+            it.status = WriteStatus::Pending;
+            --m_cursor;
+            next();
+            return;
+        }
+        const Outcome outcome = result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        stopRemaining(outcome.reason); // it stays Uncertain
+        done();
+    });
+}
+
+void WriteJob::settle(int index, WriteStatus status, const QString &reason)
+{
+    WriteItem &item = m_items[static_cast<std::size_t>(index)];
+    item.status = status;
+    item.reason = reason;
+    ++m_done;
+    emit itemChanged(index);
+    emit progress(m_done, static_cast<int>(m_order.size()));
+}
+
+void WriteJob::stopRemaining(const QString &reason)
+{
+    for (std::size_t k = m_cursor; k < m_order.size(); ++k) {
+        WriteItem &item = m_items[static_cast<std::size_t>(m_order[k])];
+        if (item.status == WriteStatus::Pending) {
+            item.status = WriteStatus::NotSent;
+            item.reason = tr("not sent: the write stopped (%1)").arg(reason);
+            emit itemChanged(m_order[k]);
+        }
+    }
+    m_cursor = m_order.size();
+}
+
+void WriteJob::done()
+{
+    if (!m_running)
+        return;
+    m_running = false;
+    emit finished(complete());
+}
+
+bool WriteJob::readBackEquals(const WriteItem &item, const dev::RawValue &value) const
+{
+    if (dev::isText(item.value) || dev::isText(value)) {
+        if (!dev::isText(item.value) || !dev::isText(value))
+            return false;
+        return trimmed(std::get<std::string>(item.value)) == trimmed(std::get<std::string>(value));
+    }
+    if (item.row && item.row->isFloat())
+        return static_cast<float>(dev::rawNumber(item.value)) == static_cast<float>(dev::rawNumber(value));
+    return dev::rawNumber(item.value) == dev::rawNumber(value);
+}
+
+QString writeStatusText(WriteStatus status)
+{
+    switch (status) {
+    case WriteStatus::Pending: return WriteJob::tr("pending");
+    case WriteStatus::Unchanged: return WriteJob::tr("unchanged");
+    case WriteStatus::RefusedLocally: return WriteJob::tr("refused before sending");
+    case WriteStatus::Verified: return WriteJob::tr("verified");
+    case WriteStatus::Written: return WriteJob::tr("written, not verified");
+    case WriteStatus::Refused: return WriteJob::tr("refused by the device");
+    case WriteStatus::Mismatch: return WriteJob::tr("read back differs");
+    case WriteStatus::Uncertain: return WriteJob::tr("uncertain");
+    case WriteStatus::NotSent: return WriteJob::tr("not sent");
+    }
+    return {};
+}
+
+const char *writeStatusKey(WriteStatus status)
+{
+    switch (status) {
+    case WriteStatus::Pending: return "pending";
+    case WriteStatus::Unchanged: return "unchanged";
+    case WriteStatus::RefusedLocally: return "refused-locally";
+    case WriteStatus::Verified: return "verified";
+    case WriteStatus::Written: return "written";
+    case WriteStatus::Refused: return "refused";
+    case WriteStatus::Mismatch: return "mismatch";
+    case WriteStatus::Uncertain: return "uncertain";
+    case WriteStatus::NotSent: return "not-sent";
+    }
+    return "?";
+}
+
+} // namespace vt::model
