@@ -1,0 +1,156 @@
+// SampleStore: the live monitor's bounded ring of polled values (issue #8) — one shared
+// timestamp per row, because the session polls a module's d-block in one request — with
+// min/max decimation for the plot and time markers for the tuning journal's parameter writes.
+// Owner: the monitor's session owner; GUI thread only (no locking; the session appends there).
+//
+// Memory is fixed at construction: 8 bytes (double time) + 4 bytes (float) per channel per row.
+// The default (1 h at 200 Hz = 720 000 rows) with 5 channels: 720 000 × 28 B = 20 160 000 B
+// (19.2 MiB); markers add at most 1000 × (32 B + 256 UTF-16 chars) = 544 000 B (0.52 MiB).
+// Values are floats: they come from 16-bit fieldbus words, and a float's 24-bit mantissa
+// resolves more than that.
+#pragma once
+
+#include <QCoreApplication>
+#include <QList>
+#include <QString>
+#include <deque>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+class QIODevice;
+
+namespace vt::model {
+
+struct SampleChannel
+{
+    QString id;   // stable key: "d1.11"
+    QString name; // for people: "actual value"
+    QString unit; // "%", "bar"
+    bool operator==(const SampleChannel &) const = default;
+};
+
+struct SampleMarker
+{
+    double t = 0; // seconds, on the samples' time axis
+    QString text; // "C1.07 P gain 1.20 → 1.50"
+    bool operator==(const SampleMarker &) const = default;
+};
+
+// One time slice of a decimated range: its lowest and highest value and when each occurred.
+struct MinMaxBucket
+{
+    double tMin = 0;
+    double min = 0;
+    double tMax = 0;
+    double max = 0;
+};
+
+// Limits of readCsv(), so a hostile or huge file cannot exhaust memory.
+struct SampleCsvLimits
+{
+    qsizetype maxRows = 3600 * 200;
+    qsizetype maxChannels = 64;
+    qsizetype maxLineLength = 64 * 1024;
+    qsizetype maxMarkers = 1000;
+};
+
+class SampleStore
+{
+    Q_DECLARE_TR_FUNCTIONS(vt::model::SampleStore)
+public:
+    static constexpr qsizetype kDefaultCapacity = 3600 * 200; // 1 h at 200 Hz
+    static constexpr qsizetype kDefaultMaxMarkers = 1000;
+    static constexpr qsizetype kMaxMarkerText = 256; // characters; longer texts are cut
+
+    explicit SampleStore(QList<SampleChannel> channels, qsizetype capacity = kDefaultCapacity,
+                         qsizetype maxMarkers = kDefaultMaxMarkers);
+
+    // The ring's fixed footprint for a given shape (what memoryBytes() reports without markers).
+    static qint64 ringBytes(qsizetype channels, qsizetype capacity);
+    // Everything the store holds: the ring, the channel list and the markers.
+    qint64 memoryBytes() const;
+
+    int channelCount() const { return static_cast<int>(m_channels.size()); }
+    const QList<SampleChannel> &channels() const { return m_channels; }
+    int channelIndex(const QString &id) const; // -1 if unknown
+
+    qsizetype capacity() const { return m_capacity; }
+    qsizetype size() const { return m_size; }
+    bool isEmpty() const { return m_size == 0; }
+    quint64 droppedCount() const { return m_dropped; } // rows overwritten by the ring
+
+    // O(1). Times must not go backwards (equal is fine); a missing or non-finite value is stored
+    // as NaN ("no value", skipped by decimation). Extra values are ignored. False for a bad time.
+    bool append(double t, std::span<const double> values);
+    void clear(); // samples and markers
+
+    // Row i, 0 = oldest.
+    double timeAt(qsizetype i) const { return m_times[physical(i)]; }
+    double valueAt(int channel, qsizetype i) const;
+    double firstTime() const
+    {
+        return m_size ? timeAt(0) : std::numeric_limits<double>::quiet_NaN();
+    }
+    double lastTime() const
+    {
+        return m_size ? timeAt(m_size - 1) : std::numeric_limits<double>::quiet_NaN();
+    }
+    // Binary search: first row with time >= t / first row with time > t (size() if none).
+    qsizetype lowerBound(double t) const;
+    qsizetype upperBound(double t) const;
+
+    // Rows with t0 <= time <= t1 split into `buckets` equal time slices; each non-empty slice
+    // gives its min and max (NaN-only slices are left out), in time order. Every extreme of the
+    // range survives, so a single-sample spike stays visible. Pick buckets ≈ plot width in pixels.
+    std::vector<MinMaxBucket> decimate(int channel, double t0, double t1, int buckets) const;
+    // The buckets as a polyline for the plot: min and max of each slice in the order they
+    // occurred (one point when they are the same sample).
+    static void toPolyline(const std::vector<MinMaxBucket> &buckets, QList<double> &times,
+                           QList<double> &values);
+    // Every row of the range, undecimated (zoomed-in plots; the benchmark's baseline).
+    qsizetype copyRange(int channel, double t0, double t1, QList<double> &times,
+                        QList<double> &values) const;
+
+    // Markers are kept in time order, the oldest dropped beyond maxMarkers; texts are cut to
+    // kMaxMarkerText characters so the markers' memory has a bound, too.
+    void addMarker(double t, const QString &text);
+    const std::deque<SampleMarker> &markers() const { return m_markers; }
+    QList<SampleMarker> markersIn(double t0, double t1) const;
+
+    // CSV with '#' header lines naming the channels, one row per sample (empty cell = NaN) and
+    // one row per marker (empty values, text in the last column). Numbers are locale-free and
+    // round-trip exactly. False (and *error) on a write error.
+    bool writeCsv(QIODevice &out, double t0, double t1, QString *error = nullptr) const;
+    bool writeCsv(QIODevice &out, QString *error = nullptr) const;
+    // Reads what writeCsv() wrote into a store with capacity = the rows read (at least 1).
+    static std::optional<SampleStore> readCsv(QIODevice &in, QString *error = nullptr,
+                                              const SampleCsvLimits &limits = {});
+
+private:
+    std::size_t physical(qsizetype i) const
+    {
+        return (m_head + static_cast<std::size_t>(i)) % static_cast<std::size_t>(m_capacity);
+    }
+    const float *column(int channel) const
+    {
+        return m_values.get() +
+               static_cast<std::size_t>(channel) * static_cast<std::size_t>(m_capacity);
+    }
+
+    QList<SampleChannel> m_channels;
+    qsizetype m_capacity;
+    qsizetype m_maxMarkers;
+    // Column-major: channel c's ring is m_values[c * capacity, (c + 1) * capacity), so decimating
+    // one channel scans contiguous memory. Allocated once, never resized.
+    std::unique_ptr<double[]> m_times;
+    std::unique_ptr<float[]> m_values;
+    std::size_t m_head = 0; // physical index of row 0
+    qsizetype m_size = 0;
+    quint64 m_dropped = 0;
+    std::deque<SampleMarker> m_markers;
+};
+
+} // namespace vt::model

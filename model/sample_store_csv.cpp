@@ -1,0 +1,236 @@
+// SampleStore's CSV export and its bounded reader (round trips, loading a saved recording).
+#include "sample_store.h"
+
+#include <QIODevice>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace vt::model {
+
+namespace {
+
+constexpr char kMagic[] = "# ValveTune samples,1";
+constexpr char kChannelPrefix[] = "# channel,";
+constexpr qsizetype kWriteChunk = 64 * 1024;
+
+// Shortest text that reads back to the same number, independent of the locale.
+template<typename T> void appendNumber(QByteArray &line, T value)
+{
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, value);
+    line.append(buf, static_cast<qsizetype>(r.ptr - buf));
+}
+
+// Marker texts and channel names are one line each: a line break would end the CSV row.
+QByteArray csvField(QString text)
+{
+    text.replace(QLatin1Char('\r'), QLatin1Char(' ')).replace(QLatin1Char('\n'), QLatin1Char(' '));
+    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"'))) {
+        text.replace(QLatin1String("\""), QLatin1String("\"\""));
+        text = QLatin1Char('"') + text + QLatin1Char('"');
+    }
+    return text.toUtf8();
+}
+
+// RFC 4180 fields of one line; false for an unterminated quote.
+bool splitCsv(const QString &line, QStringList &fields)
+{
+    fields.clear();
+    QString field;
+    bool quoted = false;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (quoted) {
+            if (c != QLatin1Char('"'))
+                field += c;
+            else if (i + 1 < line.size() && line[i + 1] == QLatin1Char('"'))
+                field += line[++i];
+            else
+                quoted = false;
+        } else if (c == QLatin1Char('"')) {
+            quoted = true;
+        } else if (c == QLatin1Char(',')) {
+            fields.append(field);
+            field.clear();
+        } else {
+            field += c;
+        }
+    }
+    fields.append(field);
+    return !quoted;
+}
+
+template<typename T> bool parseNumber(const QString &text, T &value)
+{
+    const QByteArray latin = text.trimmed().toLatin1();
+    const char *end = latin.constData() + latin.size();
+    const auto r = std::from_chars(latin.constData(), end, value);
+    return !latin.isEmpty() && r.ec == std::errc() && r.ptr == end;
+}
+
+} // namespace
+
+bool SampleStore::writeCsv(QIODevice &out, QString *error) const
+{
+    return writeCsv(out, -std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(), error);
+}
+
+bool SampleStore::writeCsv(QIODevice &out, double t0, double t1, QString *error) const
+{
+    QByteArray buf;
+    const auto put = [&](bool force) {
+        if (buf.size() < kWriteChunk && !force)
+            return true;
+        const bool ok = out.write(buf) == buf.size();
+        buf.clear();
+        if (!ok && error)
+            *error = out.errorString();
+        return ok;
+    };
+    buf += kMagic;
+    buf += '\n';
+    for (const SampleChannel &c : m_channels)
+        buf += kChannelPrefix + csvField(c.id) + ',' + csvField(c.name) + ',' + csvField(c.unit) +
+               '\n';
+    buf += "time_s";
+    for (const SampleChannel &c : m_channels)
+        buf += ',' + csvField(c.id);
+    buf += ",marker\n";
+
+    auto marker = std::lower_bound(m_markers.begin(), m_markers.end(), t0,
+                                   [](const SampleMarker &m, double t) { return m.t < t; });
+    const auto markerEnd =
+        std::upper_bound(m_markers.begin(), m_markers.end(), t1,
+                         [](double t, const SampleMarker &m) { return t < m.t; });
+    const auto putMarkersBefore = [&](double limit, bool inclusive) {
+        for (; marker != markerEnd && (marker->t < limit || (inclusive && marker->t == limit));
+             ++marker) {
+            appendNumber(buf, marker->t);
+            buf += QByteArray(channelCount() + 1, ',') + csvField(marker->text) + '\n';
+        }
+    };
+    const qsizetype end = !(t0 <= t1) ? 0 : upperBound(t1);
+    for (qsizetype i = !(t0 <= t1) ? 0 : lowerBound(t0); i < end; ++i) {
+        const double t = timeAt(i);
+        putMarkersBefore(t, false); // a marker at a sample's time follows that sample
+        appendNumber(buf, t);
+        for (int c = 0; c < channelCount(); ++c) {
+            buf += ',';
+            const float v = column(c)[physical(i)];
+            if (!std::isnan(v))
+                appendNumber(buf, v);
+        }
+        buf += ",\n";
+        if (!put(false))
+            return false;
+    }
+    putMarkersBefore(t1, true);
+    return put(true);
+}
+
+std::optional<SampleStore> SampleStore::readCsv(QIODevice &in, QString *error,
+                                                const SampleCsvLimits &limits)
+{
+    qsizetype lineNo = 0;
+    const auto fail = [&](const QString &why) -> std::optional<SampleStore> {
+        if (error)
+            *error = lineNo > 0 ? tr("line %1: %2").arg(lineNo).arg(why) : why;
+        return std::nullopt;
+    };
+    QString line;
+    bool tooLong = false;
+    const auto nextLine = [&]() {
+        if (in.atEnd())
+            return false;
+        ++lineNo;
+        QByteArray bytes = in.readLine(limits.maxLineLength + 3); // + CR LF and the terminating NUL
+        tooLong = !bytes.endsWith('\n') && !in.atEnd();
+        while (bytes.endsWith('\n') || bytes.endsWith('\r'))
+            bytes.chop(1);
+        tooLong = tooLong || bytes.size() > limits.maxLineLength;
+        line = QString::fromUtf8(bytes);
+        return true;
+    };
+
+    if (!nextLine() || line != QLatin1String(kMagic))
+        return fail(tr("not a ValveTune sample file"));
+    QList<SampleChannel> channels;
+    QStringList fields;
+    bool haveHeader = false;
+    while (!haveHeader && nextLine()) {
+        if (tooLong)
+            return fail(tr("longer than %1 bytes").arg(limits.maxLineLength));
+        if (line.startsWith(QLatin1String(kChannelPrefix))) {
+            if (!splitCsv(line.mid(static_cast<qsizetype>(sizeof kChannelPrefix) - 1), fields) ||
+                fields.size() != 3)
+                return fail(tr("a channel needs an id, a name and a unit"));
+            if (channels.size() >= limits.maxChannels)
+                return fail(tr("more than %1 channels").arg(limits.maxChannels));
+            channels.append({fields[0], fields[1], fields[2]});
+        } else if (!line.startsWith(QLatin1Char('#')) && !line.isEmpty()) {
+            if (!splitCsv(line, fields) || fields.size() != channels.size() + 2 ||
+                fields.front() != QLatin1String("time_s") ||
+                fields.back() != QLatin1String("marker"))
+                return fail(tr("the column header does not match the channels"));
+            for (qsizetype c = 0; c < channels.size(); ++c)
+                if (fields[c + 1] != channels[c].id)
+                    return fail(tr("the column header does not match the channels"));
+            haveHeader = true;
+        }
+    }
+    if (!haveHeader)
+        return fail(tr("the column header is missing"));
+
+    std::vector<double> times;
+    std::vector<float> values; // row-major, channels.size() per row
+    std::deque<SampleMarker> markers;
+    const auto width = static_cast<std::size_t>(channels.size());
+    while (nextLine()) {
+        if (tooLong)
+            return fail(tr("longer than %1 bytes").arg(limits.maxLineLength));
+        if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
+            continue;
+        if (!splitCsv(line, fields) || fields.size() != channels.size() + 2)
+            return fail(tr("expected %1 columns").arg(channels.size() + 2));
+        double t = 0;
+        if (!parseNumber(fields[0], t) || !std::isfinite(t))
+            return fail(tr("'%1' is not a time").arg(fields[0]));
+        bool anyValue = false;
+        for (qsizetype c = 1; c <= channels.size(); ++c)
+            anyValue = anyValue || !fields[c].trimmed().isEmpty();
+        if (!fields.back().isEmpty()) {
+            markers.push_back({t, fields.back().left(kMaxMarkerText)});
+            if (static_cast<qsizetype>(markers.size()) > limits.maxMarkers)
+                markers.pop_front();
+            if (!anyValue)
+                continue;
+        }
+        if (static_cast<qsizetype>(times.size()) >= limits.maxRows)
+            return fail(tr("more than %1 samples").arg(limits.maxRows));
+        if (!times.empty() && t < times.back())
+            return fail(tr("time goes backwards"));
+        times.push_back(t);
+        for (qsizetype c = 1; c <= channels.size(); ++c) {
+            float v = std::numeric_limits<float>::quiet_NaN();
+            if (!fields[c].trimmed().isEmpty() && !parseNumber(fields[c], v))
+                return fail(tr("'%1' is not a number").arg(fields[c]));
+            values.push_back(v);
+        }
+    }
+
+    SampleStore store(std::move(channels), qMax<qsizetype>(1, static_cast<qsizetype>(times.size())),
+                      limits.maxMarkers);
+    std::vector<double> row(width);
+    for (std::size_t r = 0; r < times.size(); ++r) {
+        for (std::size_t c = 0; c < width; ++c)
+            row[c] = static_cast<double>(values[r * width + c]);
+        store.append(times[r], row);
+    }
+    for (const SampleMarker &m : markers)
+        store.addMarker(m.t, m.text);
+    return store;
+}
+
+} // namespace vt::model

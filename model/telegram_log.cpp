@@ -1,0 +1,322 @@
+#include "telegram_log.h"
+
+#include "core/hex.h"
+#include "inspect/describe_any.h"
+
+#include <QIODevice>
+#include <QTextStream>
+#include <span>
+
+namespace vt::model {
+
+using Status = TelegramRecord::Status;
+
+bool TelegramFilter::accepts(const TelegramRecord &r) const
+{
+    if (module >= 0 && r.module != module)
+        return false;
+    if (!protocol.isEmpty() && r.protocol != protocol)
+        return false;
+    return !errorsOnly || r.isError();
+}
+
+TelegramLog::TelegramLog(QObject *parent)
+    : TelegramLog(kDefaultMaxRecords, kDefaultMaxBytes, parent)
+{
+}
+
+TelegramLog::TelegramLog(qsizetype maxRecords, qint64 maxBytes, QObject *parent)
+    : QObject(parent), m_maxRecords(qMax<qsizetype>(1, maxRecords)),
+      m_maxBytes(qMax<qint64>(0, maxBytes))
+{
+    m_clock.start();
+    m_notifyTimer.setSingleShot(true);
+    m_notifyTimer.setInterval(kDefaultNotifyIntervalMs);
+    connect(&m_notifyTimer, &QTimer::timeout, this, &TelegramLog::flush);
+}
+
+void TelegramLog::setLimits(qsizetype maxRecords, qint64 maxBytes)
+{
+    m_maxRecords = qMax<qsizetype>(1, maxRecords);
+    m_maxBytes = qMax<qint64>(0, maxBytes);
+    enforceLimits();
+}
+
+qint64 TelegramLog::recordCost(const TelegramRecord &r)
+{
+    return static_cast<qint64>(sizeof(TelegramRecord)) + r.bytes.size() +
+           r.note.size() * static_cast<qint64>(sizeof(QChar));
+}
+
+quint64 TelegramLog::append(TelegramRecord record)
+{
+    record.seq = m_nextSeq++;
+    if (record.monotonicNs < 0)
+        record.monotonicNs = m_clock.nsecsElapsed();
+    if (!record.wallClock.isValid())
+        record.wallClock = QDateTime::currentDateTimeUtc();
+    m_bytes += recordCost(record);
+    m_records.push_back(std::move(record));
+    enforceLimits();
+    scheduleNotify();
+    return m_nextSeq - 1;
+}
+
+quint64 TelegramLog::append(vt::dev::Direction direction, const QString &link,
+                            const QString &protocol, int module, const QByteArray &bytes,
+                            Status status, const QString &note)
+{
+    TelegramRecord r;
+    r.direction = direction;
+    r.link = link;
+    r.protocol = protocol;
+    r.module = module;
+    r.bytes = bytes;
+    r.status = status;
+    r.note = note;
+    return append(std::move(r));
+}
+
+quint64 TelegramLog::appendTimeout(const QString &link, const QString &protocol, int module,
+                                   const QString &note)
+{
+    // A timeout is the missing response to the last request.
+    return append(vt::dev::Direction::Response, link, protocol, module, {}, Status::Timeout, note);
+}
+
+void TelegramLog::clear()
+{
+    m_records.clear();
+    m_bytes = 0;
+    m_dropped = 0;
+    m_reportedFirst = m_reportedEnd = m_nextSeq;
+    m_notifyTimer.stop();
+    emit cleared();
+}
+
+const TelegramRecord *TelegramLog::find(quint64 seq) const
+{
+    if (seq < firstSeq() || seq >= m_nextSeq)
+        return nullptr;
+    return &m_records[static_cast<std::size_t>(seq - firstSeq())];
+}
+
+void TelegramLog::setPaused(bool paused)
+{
+    if (paused == m_paused)
+        return;
+    m_paused = paused;
+    emit pausedChanged(paused);
+    if (!paused)
+        flush(); // resuming is a user action: show what was recorded at once
+}
+
+void TelegramLog::setNotifyInterval(int ms)
+{
+    m_notifyTimer.setInterval(qMax(0, ms));
+}
+
+void TelegramLog::enforceLimits()
+{
+    bool dropped = false;
+    while (size() > m_maxRecords || (m_bytes > m_maxBytes && m_records.size() > 1)) {
+        m_bytes -= recordCost(m_records.front());
+        m_records.pop_front();
+        ++m_dropped;
+        dropped = true;
+    }
+    if (dropped)
+        scheduleNotify();
+}
+
+void TelegramLog::scheduleNotify()
+{
+    if (!m_notifyTimer.isActive())
+        m_notifyTimer.start();
+}
+
+void TelegramLog::flush()
+{
+    m_notifyTimer.stop();
+    const quint64 first = firstSeq();
+    if (first > m_reportedFirst) {
+        const bool reportedOnesGone = m_reportedFirst < m_reportedEnd;
+        m_reportedFirst = first;
+        m_reportedEnd =
+            qMax(m_reportedEnd, first); // dropped before being announced: never announced
+        if (reportedOnesGone)
+            emit trimmed(first);
+    }
+    if (!m_paused && m_nextSeq > m_reportedEnd) {
+        const quint64 from = m_reportedEnd;
+        m_reportedEnd = m_nextSeq;
+        emit appended(from, static_cast<qsizetype>(m_nextSeq - from));
+    }
+}
+
+// ---- texts ---------------------------------------------------------------------------------
+
+QString TelegramLog::statusText(Status status)
+{
+    switch (status) {
+    case Status::Ok: return tr("ok");
+    case Status::DeviceException: return tr("device exception");
+    case Status::ChecksumError: return tr("checksum error");
+    case Status::Malformed: return tr("malformed");
+    case Status::Timeout: return tr("timeout");
+    case Status::Unmatched: return tr("unmatched");
+    }
+    return {};
+}
+
+QString TelegramLog::statusKey(Status status)
+{
+    switch (status) {
+    case Status::Ok: return QStringLiteral("ok");
+    case Status::DeviceException: return QStringLiteral("device-exception");
+    case Status::ChecksumError: return QStringLiteral("checksum-error");
+    case Status::Malformed: return QStringLiteral("malformed");
+    case Status::Timeout: return QStringLiteral("timeout");
+    case Status::Unmatched: return QStringLiteral("unmatched");
+    }
+    return {};
+}
+
+QString TelegramLog::directionText(vt::dev::Direction direction)
+{
+    return direction == vt::dev::Direction::Request ? tr("out") : tr("in");
+}
+
+namespace {
+
+std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
+{
+    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+            static_cast<std::size_t>(bytes.size())};
+}
+
+QString fromStd(const std::string &s)
+{
+    return QString::fromStdString(s);
+}
+
+} // namespace
+
+QString TelegramLog::hexText(const QByteArray &bytes)
+{
+    return fromStd(vt::dev::toHex(asSpan(bytes)));
+}
+
+QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &options)
+{
+    if (r.status == Status::Timeout)
+        return r.note.isEmpty() ? tr("no reply") : tr("no reply: %1").arg(r.note);
+    // The node image carries the HCS gateway telegrams of the manuals (describeAny's "gateway").
+    const std::optional<vt::dev::Protocol> protocol =
+        r.protocol == QLatin1String("node-image")
+            ? vt::dev::Protocol::Gateway
+            : vt::dev::protocolFromName(r.protocol.toStdString());
+    if (!protocol)
+        return tr("%n byte(s)", nullptr, static_cast<int>(r.bytes.size()));
+    vt::dev::AnyOptions any;
+    any.protocol = *protocol;
+    any.family = options.family;
+    any.direction = r.direction;
+    any.dictionary = options.dictionary;
+    const auto described = vt::dev::describeAny(asSpan(r.bytes), any);
+    if (!described)
+        return fromStd(described.error());
+    if (!described->summary.en.empty())
+        return fromStd(described->summary.in(options.language));
+    if (described->error)
+        return fromStd(vt::dev::describeError(*described->error).in(options.language));
+    return {};
+}
+
+// ---- saving --------------------------------------------------------------------------------
+
+namespace {
+
+QString csvField(const QString &text)
+{
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) &&
+        !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r')))
+        return text;
+    QString quoted = text;
+    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
+
+// Exact nanoseconds as decimal seconds: "12.000345678".
+QString secondsText(qint64 ns, int decimals)
+{
+    const qint64 sec = ns / 1'000'000'000;
+    qint64 frac = ns % 1'000'000'000;
+    for (int d = 9; d > decimals; --d)
+        frac /= 10;
+    return QStringLiteral("%1.%2").arg(sec).arg(frac, decimals, 10, QLatin1Char('0'));
+}
+
+bool finish(QTextStream &stream, QIODevice &out, QString *error)
+{
+    stream.flush();
+    if (stream.status() == QTextStream::Ok)
+        return true;
+    if (error)
+        *error = out.errorString();
+    return false;
+}
+
+} // namespace
+
+bool TelegramLog::writeCsv(QIODevice &out, const SummaryOptions &options,
+                           const TelegramFilter &filter, QString *error) const
+{
+    QTextStream s(&out);
+    s << "seq,time_s,wall_clock_utc,direction,link,protocol,module,bytes,status,summary,note\n";
+    for (const TelegramRecord &r : m_records) {
+        if (!filter.accepts(r))
+            continue;
+        s << r.seq << ',' << secondsText(r.monotonicNs, 9) << ','
+          << r.wallClock.toUTC().toString(Qt::ISODateWithMs) << ','
+          << (r.direction == vt::dev::Direction::Request ? "request" : "response") << ','
+          << csvField(r.link) << ',' << csvField(r.protocol) << ','
+          << (r.module >= 0 ? QString::number(r.module) : QString()) << ',' << hexText(r.bytes)
+          << ',' << statusKey(r.status) << ',' << csvField(summary(r, options)) << ','
+          << csvField(r.note) << '\n';
+    }
+    return finish(s, out, error);
+}
+
+bool TelegramLog::writeText(QIODevice &out, const SummaryOptions &options,
+                            const TelegramFilter &filter, QString *error) const
+{
+    QTextStream s(&out);
+    s << tr("ValveTune telegram log: %n record(s)", nullptr, static_cast<int>(size()));
+    if (m_dropped > 0)
+        s << ", "
+          << tr("%n older record(s) dropped", nullptr,
+                static_cast<int>(qMin<quint64>(m_dropped, INT_MAX)));
+    s << '\n';
+    for (const TelegramRecord &r : m_records) {
+        if (!filter.accepts(r))
+            continue;
+        s << '\n'
+          << '#' << r.seq << "  " << secondsText(r.monotonicNs, 6) << " s  "
+          << r.wallClock.toUTC().toString(Qt::ISODateWithMs) << "  " << directionText(r.direction)
+          << "  " << r.protocol << "  ";
+        if (r.module >= 0)
+            s << tr("module %1").arg(r.module) << "  ";
+        s << r.link << '\n';
+        s << "    " << summary(r, options) << '\n';
+        if (!r.bytes.isEmpty())
+            s << "    " << hexText(r.bytes) << '\n';
+        s << "    " << statusText(r.status);
+        if (!r.note.isEmpty())
+            s << ": " << r.note;
+        s << '\n';
+    }
+    return finish(s, out, error);
+}
+
+} // namespace vt::model

@@ -1,0 +1,173 @@
+// TelegramLog: the bounded record of every frame in and out of a session (issue #6) that the
+// telegram inspector lists, filters and saves (issue #8). Owner: the session's owner (app);
+// GUI thread only — appends, reads and signals all happen on the thread the log lives on.
+#pragma once
+
+#include "core/direction.h"
+#include "core/local_text.h"
+#include "hcs/types.h"
+
+#include <QByteArray>
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <deque>
+
+class QIODevice;
+
+namespace vt::dev {
+struct Dictionary;
+}
+
+namespace vt::model {
+
+struct TelegramRecord
+{
+    enum class Status : quint8 {
+        Ok,
+        DeviceException, // a well-formed exception reply; note = the exception text
+        ChecksumError,
+        Malformed, // not a frame of the protocol; note = why
+        Timeout,   // no reply in time; a record without bytes
+        Unmatched, // a valid frame that answers no outstanding request
+    };
+
+    quint64 seq = 0;         // set by the log: contiguous, never reused (not even after clear())
+    qint64 monotonicNs = -1; // since the log's start; < 0 = stamped by append()
+    QDateTime wallClock;     // UTC, for saving; invalid = stamped by append()
+    vt::dev::Direction direction = vt::dev::Direction::Request; // a master's out = Request
+    QString link;     // Link::description(): "serial /dev/ttyUSB0 19200 8E1"
+    QString protocol; // "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen"
+    int module = -1;  // module address; -1 = unknown
+    QByteArray bytes; // empty for Timeout
+    Status status = Status::Ok;
+    QString note; // exception text / reason
+
+    bool isError() const { return status != Status::Ok; }
+};
+
+// The inspector's filters; the same filter selects what is saved.
+struct TelegramFilter
+{
+    int module = -1;  // -1 = every module
+    QString protocol; // empty = every protocol
+    bool errorsOnly = false;
+
+    bool accepts(const TelegramRecord &r) const;
+    bool operator==(const TelegramFilter &) const = default;
+};
+
+// How summaries are worded: the language and what describeAny needs to name parameters.
+struct SummaryOptions
+{
+    vt::dev::Language language = vt::dev::Language::English;
+    vt::dev::hcs::Family family = vt::dev::hcs::Family::Dma; // Modbus / gateway exception texts
+    const vt::dev::Dictionary *dictionary = nullptr;         // not owned; nullptr = raw IDs
+};
+
+class TelegramLog : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr qsizetype kDefaultMaxRecords = 100'000;
+    static constexpr qint64 kDefaultMaxBytes = 64 * 1024 * 1024;
+    static constexpr int kDefaultNotifyIntervalMs =
+        20; // ≤ 50 notifications/s however fast frames arrive
+
+    explicit TelegramLog(QObject *parent = nullptr);
+    TelegramLog(qsizetype maxRecords, qint64 maxBytes, QObject *parent = nullptr);
+
+    // Both caps hold after every append(); the newest record is always kept, even when it alone
+    // exceeds maxBytes. Lowering a cap drops the oldest records at once.
+    void setLimits(qsizetype maxRecords, qint64 maxBytes);
+    qsizetype maxRecords() const { return m_maxRecords; }
+    qint64 maxBytes() const { return m_maxBytes; }
+    // What one record counts against maxBytes: its struct, its bytes and its note.
+    static qint64 recordCost(const TelegramRecord &r);
+
+    // O(1) amortised. Stamps seq (and the times when unset); returns the seq.
+    quint64 append(TelegramRecord record);
+    quint64 append(vt::dev::Direction direction, const QString &link, const QString &protocol,
+                   int module, const QByteArray &bytes,
+                   TelegramRecord::Status status = TelegramRecord::Status::Ok,
+                   const QString &note = {});
+    quint64 appendTimeout(const QString &link, const QString &protocol, int module,
+                          const QString &note = {});
+    // Removes every record and resets droppedCount(); emits cleared() at once.
+    void clear();
+
+    qsizetype size() const { return static_cast<qsizetype>(m_records.size()); }
+    bool isEmpty() const { return m_records.empty(); }
+    quint64 firstSeq() const { return m_nextSeq - m_records.size(); } // == nextSeq() when empty
+    quint64 nextSeq() const { return m_nextSeq; }
+    quint64 droppedCount() const { return m_dropped; } // dropped by the caps since start / clear()
+    qint64 storedBytes() const { return m_bytes; }
+    quint64 announcedEnd() const { return m_reportedEnd; } // appended() has covered every seq below
+    qint64 elapsedNs() const
+    {
+        return m_clock.nsecsElapsed();
+    } // the clock records are stamped with
+
+    const TelegramRecord *find(quint64 seq) const; // nullptr once dropped (or not yet appended)
+    const TelegramRecord &at(qsizetype index) const
+    {
+        return m_records[static_cast<std::size_t>(index)];
+    } // 0 = oldest
+    std::deque<TelegramRecord>::const_iterator begin() const { return m_records.begin(); }
+    std::deque<TelegramRecord>::const_iterator end() const { return m_records.end(); }
+
+    // Pause freezes the views, not the recording: a paused log keeps every frame (a capture must
+    // not have holes) but withholds appended() until resumed, then reports what arrived in one
+    // batch. trimmed() is still emitted while paused, so frozen views lose their oldest rows
+    // when the ring is full.
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+
+    void setNotifyInterval(int ms);
+    // Emits the pending trimmed()/appended() now instead of on the coalescing timer.
+    void flush();
+
+    // Saving (issue #8). CSV keeps machine keys (stable for scripts), the text dump is for people.
+    // Both write only records the filter accepts; false (and *error) on a write error.
+    bool writeCsv(QIODevice &out, const SummaryOptions &options = {},
+                  const TelegramFilter &filter = {}, QString *error = nullptr) const;
+    bool writeText(QIODevice &out, const SummaryOptions &options = {},
+                   const TelegramFilter &filter = {}, QString *error = nullptr) const;
+
+    // One line for the list: describeAny's summary in the chosen language; timeouts say so.
+    static QString summary(const TelegramRecord &r, const SummaryOptions &options = {});
+    static QString statusText(TelegramRecord::Status status);   // translated, for people
+    static QString statusKey(TelegramRecord::Status status);    // "ok", "checksum-error", … (CSV)
+    static QString directionText(vt::dev::Direction direction); // translated "out" / "in"
+    static QString hexText(const QByteArray &bytes);            // "01 03 00 07"
+
+signals:
+    // Coalesced: records [firstSeq, firstSeq + count) are new. Records that were appended and
+    // dropped within one batch are never announced.
+    void appended(quint64 firstSeq, qsizetype count);
+    // Coalesced, emitted before appended(): every record below firstSeq is gone. Between a drop
+    // and this signal, find() already returns nullptr for the dropped seqs.
+    void trimmed(quint64 firstSeq);
+    void cleared();
+    void pausedChanged(bool paused);
+
+private:
+    void enforceLimits();
+    void scheduleNotify();
+
+    std::deque<TelegramRecord> m_records;
+    qsizetype m_maxRecords;
+    qint64 m_maxBytes;
+    qint64 m_bytes = 0;
+    quint64 m_nextSeq = 0;
+    quint64 m_dropped = 0;
+    quint64 m_reportedFirst = 0; // consumers were told that records from here on exist …
+    quint64 m_reportedEnd = 0;   // … up to here (exclusive)
+    bool m_paused = false;
+    QElapsedTimer m_clock;
+    QTimer m_notifyTimer;
+};
+
+} // namespace vt::model

@@ -1,0 +1,337 @@
+// SampleStore: issue #8 — a ring sized for ≥ 1 h at 200 Hz for 5 channels with a stated,
+// fixed memory footprint, and min/max decimation to about one pair per pixel.
+#include "model/sample_store.h"
+
+#include <QBuffer>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+#include <random>
+
+using vt::model::MinMaxBucket;
+using vt::model::SampleChannel;
+using vt::model::SampleCsvLimits;
+using vt::model::SampleMarker;
+using vt::model::SampleStore;
+
+namespace {
+
+QList<SampleChannel> channels(int n)
+{
+    QList<SampleChannel> out;
+    for (int i = 0; i < n; ++i)
+        out.append({QStringLiteral("d1.%1").arg(7 + i), QStringLiteral("value %1").arg(i),
+                    QStringLiteral("%")});
+    return out;
+}
+
+void appendRow(SampleStore &s, double t, std::initializer_list<double> values)
+{
+    ASSERT_TRUE(s.append(t, std::span<const double>(values.begin(), values.size())));
+}
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+} // namespace
+
+TEST(SampleStore, DefaultHoldsOneHourAt200HzWithAStatedFootprint)
+{
+    SampleStore s(channels(5));
+    EXPECT_EQ(s.capacity(), 720'000);
+    EXPECT_EQ(SampleStore::ringBytes(5, 720'000), 20'160'000); // 28 B per row
+    EXPECT_GE(s.memoryBytes(), 20'160'000);
+    EXPECT_LT(s.memoryBytes(), 20'170'000);
+}
+
+TEST(SampleStore, MemoryStaysFixedAfterTwoHoursAt200Hz)
+{
+    SampleStore s(channels(5));
+    const qint64 before = s.memoryBytes();
+    const qsizetype rows = 2 * 3600 * 200;
+    double values[5] = {};
+    for (qsizetype i = 0; i < rows; ++i) {
+        const double t = static_cast<double>(i) / 200.0;
+        for (int c = 0; c < 5; ++c)
+            values[c] = t * (c + 1);
+        ASSERT_TRUE(s.append(t, values));
+    }
+    EXPECT_EQ(s.memoryBytes(), before);
+    EXPECT_EQ(s.size(), s.capacity());
+    EXPECT_EQ(s.droppedCount(), quint64(rows - s.capacity()));
+    EXPECT_DOUBLE_EQ(s.firstTime(), 3600.0); // the newest hour
+    EXPECT_DOUBLE_EQ(s.lastTime(), static_cast<double>(rows - 1) / 200.0);
+    EXPECT_FLOAT_EQ(static_cast<float>(s.valueAt(4, 0)), static_cast<float>(3600.0 * 5));
+}
+
+TEST(SampleStore, WrapKeepsTheNewestRows)
+{
+    SampleStore s(channels(2), 10);
+    for (int i = 0; i < 25; ++i)
+        appendRow(s, i, {double(i), -double(i)});
+    EXPECT_EQ(s.size(), 10);
+    EXPECT_EQ(s.droppedCount(), 15u);
+    for (qsizetype i = 0; i < 10; ++i) {
+        EXPECT_EQ(s.timeAt(i), double(15 + i));
+        EXPECT_EQ(s.valueAt(0, i), double(15 + i));
+        EXPECT_EQ(s.valueAt(1, i), -double(15 + i));
+    }
+    EXPECT_TRUE(std::isnan(s.valueAt(2, 0)));  // no such channel
+    EXPECT_TRUE(std::isnan(s.valueAt(0, 10))); // no such row
+}
+
+TEST(SampleStore, AppendRejectsTimeGoingBackwardsAndFillsMissingValues)
+{
+    SampleStore s(channels(3), 10);
+    appendRow(s, 1.0, {1, 2, 3});
+    appendRow(s, 1.0, {4}); // same time is fine; missing values are NaN
+    EXPECT_FALSE(s.append(0.5, std::vector<double>{1, 2, 3}));
+    EXPECT_FALSE(s.append(kNaN, std::vector<double>{1, 2, 3}));
+    EXPECT_EQ(s.size(), 2);
+    EXPECT_EQ(s.valueAt(0, 1), 4.0);
+    EXPECT_TRUE(std::isnan(s.valueAt(1, 1)));
+    EXPECT_TRUE(std::isnan(s.valueAt(2, 1)));
+    s.clear();
+    EXPECT_TRUE(s.isEmpty());
+    EXPECT_TRUE(s.append(0.5, std::vector<double>{1, 2, 3})); // a cleared store starts over
+}
+
+TEST(SampleStore, TimeQueriesAtTheRingEdges)
+{
+    SampleStore s(channels(1), 8);
+    for (int i = 0; i < 13; ++i) // rows 5..12 kept; physically wrapped after row 7
+        appendRow(s, i * 0.5, {double(i)});
+    ASSERT_EQ(s.size(), 8);
+    EXPECT_EQ(s.lowerBound(-1.0), 0);
+    EXPECT_EQ(s.lowerBound(2.5), 0); // exactly the oldest
+    EXPECT_EQ(s.upperBound(2.5), 1);
+    EXPECT_EQ(s.lowerBound(2.6), 1);
+    EXPECT_EQ(s.lowerBound(6.0), 7); // exactly the newest
+    EXPECT_EQ(s.upperBound(6.0), 8);
+    EXPECT_EQ(s.lowerBound(99.0), 8);
+    for (qsizetype i = 0; i < 8; ++i) { // across the physical wrap
+        EXPECT_EQ(s.lowerBound(s.timeAt(i)), i);
+        EXPECT_EQ(s.upperBound(s.timeAt(i)), i + 1);
+    }
+    QList<double> t, v;
+    EXPECT_EQ(s.copyRange(0, 3.0, 4.5, t, v), 4);
+    EXPECT_EQ(t, (QList<double>{3.0, 3.5, 4.0, 4.5}));
+    EXPECT_EQ(v, (QList<double>{6, 7, 8, 9}));
+    EXPECT_EQ(s.copyRange(0, 7.0, 9.0, t, v), 0);
+    EXPECT_TRUE(s.decimate(0, 7.0, 9.0, 10).empty());
+    EXPECT_TRUE(s.decimate(0, 3.0, 2.0, 10).empty());
+}
+
+namespace {
+
+// What every bucket must hold, computed the slow way.
+void expectMatchesBruteForce(const SampleStore &s, double t0, double t1, int buckets)
+{
+    const std::vector<MinMaxBucket> got = s.decimate(0, t0, t1, buckets);
+    std::vector<MinMaxBucket> want;
+    int current = -1;
+    for (qsizetype i = 0; i < s.size(); ++i) {
+        const double t = s.timeAt(i);
+        const double v = s.valueAt(0, i);
+        if (t < t0 || t > t1 || std::isnan(v))
+            continue;
+        const int b = std::min(buckets - 1, static_cast<int>((t - t0) / ((t1 - t0) / buckets)));
+        if (b != current) {
+            current = b;
+            want.push_back({t, v, t, v});
+        } else {
+            MinMaxBucket &m = want.back();
+            if (v < m.min) {
+                m.min = v;
+                m.tMin = t;
+            }
+            if (v > m.max) {
+                m.max = v;
+                m.tMax = t;
+            }
+        }
+    }
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        EXPECT_EQ(got[i].min, want[i].min) << i;
+        EXPECT_EQ(got[i].max, want[i].max) << i;
+        EXPECT_EQ(got[i].tMin, want[i].tMin) << i;
+        EXPECT_EQ(got[i].tMax, want[i].tMax) << i;
+    }
+}
+
+} // namespace
+
+TEST(SampleStore, DecimationKeepsEveryExtremeAndASingleSpike)
+{
+    SampleStore s(channels(1), 100'000);
+    std::mt19937 rng(7);
+    std::normal_distribution<double> noise(0.0, 0.1);
+    for (int i = 0; i < 150'000; ++i) { // wraps: rows 50 000..149 999 stay
+        const double t = i * 0.005;
+        double v = std::sin(t) + noise(rng);
+        if (i == 123'457)
+            v = 1000.0; // one-sample spike
+        if (i == 98'765)
+            v = -1000.0; // one-sample dip
+        if (i % 1000 == 3)
+            v = kNaN; // missing values are skipped
+        appendRow(s, t, {v});
+    }
+    const std::vector<MinMaxBucket> buckets = s.decimate(0, s.firstTime(), s.lastTime(), 800);
+    EXPECT_EQ(buckets.size(), 800u);
+    double max = -1e9, min = 1e9, tMax = 0, tMin = 0;
+    for (const MinMaxBucket &b : buckets) {
+        EXPECT_LE(b.tMin, s.lastTime());
+        if (b.max > max) {
+            max = b.max;
+            tMax = b.tMax;
+        }
+        if (b.min < min) {
+            min = b.min;
+            tMin = b.tMin;
+        }
+    }
+    EXPECT_EQ(max, 1000.0);
+    EXPECT_DOUBLE_EQ(tMax, 123'457 * 0.005);
+    EXPECT_EQ(min, -1000.0);
+    EXPECT_DOUBLE_EQ(tMin, 98'765 * 0.005);
+
+    expectMatchesBruteForce(s, s.firstTime(), s.lastTime(), 800);
+    expectMatchesBruteForce(s, 300.0, 301.0, 7); // a zoomed part, in the wrapped region
+    expectMatchesBruteForce(s, 400.0, 700.0, 1);
+    expectMatchesBruteForce(s, 617.285, 617.285, 5); // a range of one instant
+
+    QList<double> t, v;
+    SampleStore::toPolyline(buckets, t, v);
+    EXPECT_LE(t.size(), 1600);
+    EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
+    EXPECT_TRUE(v.contains(1000.0));
+    EXPECT_TRUE(v.contains(-1000.0));
+}
+
+TEST(SampleStore, SparseRangesDecimateToEverySample)
+{
+    SampleStore s(channels(1), 100);
+    for (int i = 0; i < 20; ++i)
+        appendRow(s, i, {double(i % 3)});
+    QList<double> t, v;
+    SampleStore::toPolyline(s.decimate(0, 0, 19, 1000), t, v);
+    EXPECT_EQ(t.size(), 20);
+    EXPECT_EQ(v[5], 2.0);
+}
+
+TEST(SampleStore, MarkersAreSortedAndBounded)
+{
+    SampleStore s(channels(1), 10, 3);
+    s.addMarker(2.0, QStringLiteral("b"));
+    s.addMarker(1.0, QStringLiteral("a"));
+    s.addMarker(3.0, QStringLiteral("c"));
+    s.addMarker(4.0, QString(1000, QLatin1Char('x')));
+    ASSERT_EQ(s.markers().size(), 3u);
+    EXPECT_EQ(s.markers().front().text, "b"); // the oldest went
+    EXPECT_EQ(s.markers().back().text.size(), SampleStore::kMaxMarkerText);
+    EXPECT_EQ(s.markersIn(2.5, 3.0), (QList<SampleMarker>{{3.0, QStringLiteral("c")}}));
+}
+
+namespace {
+
+QByteArray csvOf(const SampleStore &s)
+{
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    EXPECT_TRUE(s.writeCsv(buffer));
+    return buffer.data();
+}
+
+std::optional<SampleStore> read(const QByteArray &csv, QString *error = nullptr,
+                                const SampleCsvLimits &limits = {})
+{
+    QBuffer buffer;
+    buffer.setData(csv);
+    buffer.open(QIODevice::ReadOnly);
+    return SampleStore::readCsv(buffer, error, limits);
+}
+
+} // namespace
+
+TEST(SampleStore, CsvRoundTripWithMarkers)
+{
+    QList<SampleChannel> ch = channels(3);
+    ch[1].name = QStringLiteral("pressure, \"A\" side");
+    ch[2].unit = QStringLiteral("°C");
+    SampleStore s(ch, 50);
+    s.addMarker(-0.5, QStringLiteral("before the first sample"));
+    for (int i = 0; i < 70; ++i) // wrapped
+        appendRow(s, i * 0.005 + 0.1,
+                  {std::sin(i * 0.1) * 123.456, i % 7 == 0 ? kNaN : 1.0 / (i + 1), -1e-7 * i});
+    s.addMarker(s.timeAt(10), QStringLiteral("C1.07 P gain 1.20 → 1.50, \"boost\""));
+    s.addMarker(99.0, QStringLiteral("after the last sample"));
+
+    const QByteArray csv = csvOf(s);
+    EXPECT_TRUE(csv.startsWith("# ValveTune samples,1\n# channel,d1.7,value 0,%\n"));
+    EXPECT_TRUE(csv.contains("\ntime_s,d1.7,d1.8,d1.9,marker\n"));
+    QString error;
+    const std::optional<SampleStore> back = read(csv, &error);
+    ASSERT_TRUE(back.has_value()) << error.toStdString();
+    EXPECT_EQ(back->channels(), s.channels());
+    ASSERT_EQ(back->size(), s.size());
+    for (qsizetype i = 0; i < s.size(); ++i) {
+        EXPECT_EQ(back->timeAt(i), s.timeAt(i));
+        for (int c = 0; c < 3; ++c) {
+            const double a = s.valueAt(c, i);
+            const double b = back->valueAt(c, i);
+            EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << i << ' ' << c;
+        }
+    }
+    EXPECT_EQ(back->markers(), s.markers());
+
+    // A range export holds only the rows and markers of the range.
+    QBuffer part;
+    part.open(QIODevice::WriteOnly);
+    ASSERT_TRUE(s.writeCsv(part, s.timeAt(5), s.timeAt(14)));
+    const std::optional<SampleStore> range = read(part.data());
+    ASSERT_TRUE(range.has_value());
+    EXPECT_EQ(range->size(), 10);
+    EXPECT_EQ(range->markers().size(), 1u);
+    EXPECT_EQ(range->firstTime(), s.timeAt(5));
+}
+
+TEST(SampleStore, CsvReaderIsBoundedAndRejectsGarbage)
+{
+    SampleStore s(channels(2), 100);
+    for (int i = 0; i < 20; ++i)
+        appendRow(s, i, {1, 2});
+    const QByteArray csv = csvOf(s);
+    QString error;
+
+    SampleCsvLimits fewRows;
+    fewRows.maxRows = 10;
+    EXPECT_FALSE(read(csv, &error, fewRows).has_value());
+    EXPECT_EQ(error, "line 15: more than 10 samples");
+
+    SampleCsvLimits fewChannels;
+    fewChannels.maxChannels = 1;
+    EXPECT_FALSE(read(csv, &error, fewChannels).has_value());
+
+    QByteArray longLine = csv;
+    longLine.append("20," + QByteArray(100'000, '1') + ",2,\n");
+    EXPECT_FALSE(read(longLine, &error).has_value());
+    EXPECT_TRUE(error.contains("longer than")) << error.toStdString();
+
+    EXPECT_FALSE(read("time_s,a,marker\n1,2,\n", &error).has_value());
+    EXPECT_EQ(error, "line 1: not a ValveTune sample file");
+    QByteArray badNumber = csv;
+    badNumber.append("21,abc,2,\n");
+    EXPECT_FALSE(read(badNumber, &error).has_value());
+    QByteArray backwards = csv;
+    backwards.append("3,1,2,\n");
+    EXPECT_FALSE(read(backwards, &error).has_value());
+    EXPECT_TRUE(error.endsWith("time goes backwards"));
+    QByteArray wrongColumns = csv;
+    wrongColumns.append("30,1,\n");
+    EXPECT_FALSE(read(wrongColumns, &error).has_value());
+
+    const std::optional<SampleStore> empty = read(csvOf(SampleStore(channels(2), 5)));
+    ASSERT_TRUE(empty.has_value());
+    EXPECT_TRUE(empty->isEmpty());
+}
