@@ -35,10 +35,9 @@ void DelayLine::arm()
         return;
     using namespace std::chrono;
     const auto wait = m_items.front().due - Clock::now();
-    // Round up: the timer must never fire before the chunk is due.
-    const auto ms = wait.count() > 0
-                        ? duration_cast<milliseconds>(wait + milliseconds(1) - nanoseconds(1))
-                        : milliseconds(0);
+    // Qt timers count whole milliseconds: wait the whole milliseconds, then re-arm with 0 ms until
+    // the chunk is due (onTimeout() never delivers early), so a simulated wire keeps sub-ms time.
+    const auto ms = wait.count() > 0 ? duration_cast<milliseconds>(wait) : milliseconds(0);
     m_timer.start(static_cast<int>(std::min<milliseconds::rep>(ms.count(), 24 * 3600 * 1000)));
 }
 

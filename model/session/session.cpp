@@ -18,6 +18,15 @@ std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
 
 constexpr qsizetype kMaxUnmatched = 4096;
 
+struct ApiGuard
+{
+    explicit ApiGuard(int &depth) : m_depth(depth) { ++m_depth; }
+    ~ApiGuard() { --m_depth; }
+    ApiGuard(const ApiGuard &) = delete;
+    ApiGuard &operator=(const ApiGuard &) = delete;
+    int &m_depth;
+};
+
 } // namespace
 
 Session::Session(link::Link *link, std::unique_ptr<dev::access::ProtocolAdapter> adapter,
@@ -48,6 +57,7 @@ bool Session::linkOpen() const
 
 RequestId Session::submit(dev::access::Transaction t, Priority priority, Completion done)
 {
+    const ApiGuard guard(m_apiDepth);
     auto pending = std::make_unique<Pending>();
     pending->id = m_nextId++;
     pending->transaction = std::move(t);
@@ -65,6 +75,7 @@ RequestId Session::submit(dev::access::Transaction t, Priority priority, Complet
 
 void Session::cancel(RequestId id)
 {
+    const ApiGuard guard(m_apiDepth);
     if (m_current && m_current->id == id) {
         m_current->cancelled = true;
         return;
@@ -83,6 +94,7 @@ void Session::cancel(RequestId id)
 
 void Session::cancelAll(Priority priority)
 {
+    const ApiGuard guard(m_apiDepth);
     auto &queue = priority == Priority::User ? m_user : m_monitor;
     auto taken = std::move(queue);
     queue.clear();
@@ -126,6 +138,9 @@ void Session::startNext()
 
 void Session::sendAttempt()
 {
+    // A request that ends here (cancelled, not encodable, no reply expected) completes from the
+    // event loop: a long run of them must not recurse finish() → startNext() → sendAttempt().
+    const ApiGuard guard(m_apiDepth);
     Pending &p = *m_current;
     if (p.cancelled) {
         finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, {}, p.attempts, p.sent, tr("Cancelled")});
@@ -159,7 +174,7 @@ void Session::sendAttempt()
 void Session::onReceived(const QByteArray &bytes)
 {
     if (!m_current || !m_timeout.isActive()) {
-        emit frameReceived(bytes, -1, elapsedNs(), tr("unsolicited"));
+        emit frameReceived(bytes, -1, elapsedNs(), ReceivedKind::Unsolicited, tr("unsolicited"));
         return;
     }
     Pending &p = *m_current;
@@ -171,13 +186,14 @@ void Session::onReceived(const QByteArray &bytes)
         return;
     m_unmatched.clear();
     if (reply->status == dev::access::ReplyStatus::Mismatch) {
-        emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+        emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(), ReceivedKind::Unmatched,
                            tr("does not answer the request"));
         return;
     }
     m_timeout.stop();
     const bool refused = reply->status == dev::access::ReplyStatus::DeviceException;
     emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+                       refused ? ReceivedKind::Exception : ReceivedKind::Answer,
                        refused ? QString::fromStdString(reply->exceptionText.en) : QString());
     if (p.cancelled) {
         finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, std::move(*reply), p.attempts, true, tr("Cancelled")});
@@ -196,7 +212,7 @@ void Session::onTimeout()
     Pending &p = *m_current;
     ++m_counters.timeouts;
     if (!m_unmatched.isEmpty()) {
-        emit frameReceived(m_unmatched, p.transaction.module, elapsedNs(),
+        emit frameReceived(m_unmatched, p.transaction.module, elapsedNs(), ReceivedKind::Garbage,
                            tr("no valid frame (checksum error, corrupted or incomplete)"));
         m_unmatched.clear();
     }
@@ -232,6 +248,7 @@ void Session::onLinkFailed(const QString &reason)
 
 void Session::failEverything(OutcomeStatus status, const QString &reason)
 {
+    const ApiGuard guard(m_apiDepth);
     m_timeout.stop();
     m_backoff.stop();
     if (m_current) {
@@ -254,12 +271,21 @@ void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
 {
     ++m_counters.requests;
     emit countersChanged();
-    // Completions run from the event loop, in order, never inside submit()/cancel().
     auto done = std::move(pending->done);
-    if (done) {
-        QTimer::singleShot(0, this, [done = std::move(done), outcome = std::move(outcome)] { done(outcome); });
+    pending.reset();
+    if (m_apiDepth > 0) {
+        // Inside submit()/cancel()/a link failure: the caller must not see its completion
+        // before the call returns. Completions run from the event loop, in order.
+        if (done)
+            QTimer::singleShot(0, this, [done = std::move(done), outcome = std::move(outcome)] { done(outcome); });
+        schedule();
+        return;
     }
-    schedule();
+    // From the event loop (an answer or a timeout): complete at once and put the next request on
+    // the wire without another event-loop turn — the gap between exchanges is wire time lost.
+    if (done)
+        done(outcome);
+    startNext();
 }
 
 QString outcomeStatusText(OutcomeStatus status)

@@ -48,6 +48,9 @@ struct Outcome
 };
 
 using RequestId = quint64;
+
+// What a received frame was to the request on the wire (for the telegram log's status).
+enum class ReceivedKind { Answer, Exception, Unmatched, Garbage, Unsolicited };
 using Completion = std::function<void(const Outcome &)>;
 
 struct SessionCounters
@@ -68,7 +71,7 @@ public:
             SessionOptions options = {}, QObject *parent = nullptr);
     ~Session() override;
 
-    // Queues `t`; `done` is called exactly once from the event loop (never from inside submit).
+    // Queues `t`; `done` is called exactly once, never from inside submit() or cancel().
     RequestId submit(dev::access::Transaction t, Priority priority, Completion done);
     // The request ends Cancelled (if still queued) or its answer is ignored (if on the wire —
     // the wire exchange itself cannot be recalled).
@@ -89,7 +92,8 @@ public:
 signals:
     // A frame the session put on the wire / recognised coming back (for the telegram log).
     void frameSent(const QByteArray &bytes, int module, qint64 elapsedNs);
-    void frameReceived(const QByteArray &bytes, int module, qint64 elapsedNs, const QString &note);
+    void frameReceived(const QByteArray &bytes, int module, qint64 elapsedNs, vt::model::ReceivedKind kind,
+                       const QString &note);
     // An attempt got no answer in time.
     void attemptTimedOut(int module, int attempt, qint64 elapsedNs);
     void countersChanged();
@@ -131,6 +135,7 @@ private:
     RequestId m_nextId = 1;
     SessionCounters m_counters;
     bool m_startScheduled = false;
+    int m_apiDepth = 0; // > 0 inside submit()/cancel()/failEverything(): completions are deferred
 };
 
 QString outcomeStatusText(OutcomeStatus status);

@@ -3,6 +3,8 @@
 #include "session_fixture.h"
 
 #include "model/session/monitor_scheduler.h"
+#include "model/session/telegram_recorder.h"
+#include "model/telegram_log.h"
 
 #include <QSignalSpy>
 
@@ -180,6 +182,43 @@ TEST(Session, MonitorPollsTheDisplayBlockAtTheRequestedRate)
     EXPECT_LT(rate, 60.0);
     const auto sample = sampled.last().front().value<model::MonitorSample>();
     EXPECT_EQ(sample.values.size(), rows.size());
+}
+
+TEST(Session, EveryFrameInAndOutGoesToTheTelegramLog)
+{
+    link::FaultSpec faults;
+    faults.rx.drop = 0.1;
+    faults.rx.corrupt = 0.2;
+    faults.seed = 3;
+    model::SessionOptions options;
+    options.turnaround = std::chrono::milliseconds(30);
+    options.retries = 8;
+    auto c = connectSim("dma-pn-v13", 1, faults, options);
+    ASSERT_TRUE(c);
+    model::TelegramLog log;
+    model::TelegramRecorder recorder(*c->session, log);
+    const auto rows = model::readableRows(c->dictionary(), c->module().version(), "1");
+    std::optional<model::ReadResult> result;
+    c->access->read(c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; });
+    ASSERT_TRUE(waitFor(result, 60'000));
+    EXPECT_TRUE(result->complete());
+    std::map<model::TelegramRecord::Status, int> byStatus;
+    int requests = 0;
+    for (auto it = log.begin(); it != log.end(); ++it) {
+        if (it->direction == dev::Direction::Request) {
+            ++requests;
+            EXPECT_EQ(it->protocol, QStringLiteral("modbus-rtu"));
+            EXPECT_EQ(it->link, c->link->description());
+            EXPECT_EQ(it->module, c->address());
+        } else {
+            ++byStatus[it->status];
+        }
+    }
+    EXPECT_EQ(static_cast<quint64>(requests), c->session->counters().attempts);
+    EXPECT_EQ(static_cast<quint64>(byStatus[model::TelegramRecord::Status::Timeout]), c->session->counters().timeouts);
+    EXPECT_GT(byStatus[model::TelegramRecord::Status::Timeout], 0);
+    EXPECT_GT(byStatus[model::TelegramRecord::Status::ChecksumError], 0);
+    EXPECT_EQ(byStatus[model::TelegramRecord::Status::Ok], static_cast<int>(c->session->counters().requests));
 }
 
 } // namespace

@@ -1,0 +1,208 @@
+// End-to-end benchmarks of the session engine (issue #6), each against a baseline in the same run:
+//  1. Read all parameters of a DMA-2 module from valvetune-sim on a pseudo-terminal: ValveTune's
+//     Session (SerialLink → Modbus RTU adapter) against a libmodbus master reading the same
+//     register blocks from the same simulator. Reported: time per read-all and the ratio.
+//  2. Monitor: d1.07..d1.13 polled back to back over the in-process simulator paced to 115200
+//     baud 8E1; reported: achieved samples/s against the wire limit (request + answer bytes on
+//     the wire, zero device turnaround).
+// Not a test: it prints figures (docs/PERFORMANCE.md says how to run it). The pty needs the
+// test-only ioctl shim (tests/transports/ioctl_shim.cpp) for libserialport, as the tests do.
+#include "model/session/device_access.h"
+#include "model/session/monitor_scheduler.h"
+#include "model/session/session.h"
+#include "model/session/sim_endpoint.h"
+#include "transports/serial_link.h"
+#include "transports/serial_settings.h"
+#include "transports/sim_link.h"
+
+#include "access/hcs_rows.h"
+#include "access/modbus_adapter.h"
+#include "dict/dictionary_loader.h"
+
+#include <QCoreApplication>
+#include <QDeadlineTimer>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFile>
+#include <QProcess>
+#include <QTimer>
+
+#include <modbus/modbus.h>
+
+#include <cstdio>
+#include <optional>
+
+namespace {
+
+using namespace vt;
+
+constexpr int kRounds = 10;
+
+bool spin(const std::function<bool()> &done, int timeoutMs)
+{
+    QDeadlineTimer deadline(timeoutMs);
+    while (!done()) {
+        if (deadline.hasExpired())
+            return false;
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+    }
+    return true;
+}
+
+struct SimProcess
+{
+    QProcess process;
+    QString pty;
+
+    bool start()
+    {
+        process.setProgram(QStringLiteral(VT_SIM_PATH));
+        process.setArguments({QStringLiteral("--device"), QStringLiteral("dma-pn-v51"), QStringLiteral("--pty")});
+        process.start();
+        QDeadlineTimer deadline(10'000);
+        while (!process.canReadLine()) {
+            if (deadline.hasExpired() || !process.waitForReadyRead(200))
+                if (deadline.hasExpired())
+                    return false;
+        }
+        const QString line = QString::fromUtf8(process.readLine()).trimmed();
+        pty = line.section(QLatin1Char(' '), 2);
+        return line.startsWith(QLatin1String("listening on "));
+    }
+    ~SimProcess()
+    {
+        process.terminate();
+        if (!process.waitForFinished(5000))
+            process.kill();
+    }
+};
+
+double libmodbusReadAll(const QString &pty, const std::vector<dev::access::HcsBlock> &blocks)
+{
+    modbus_t *ctx = modbus_new_rtu(pty.toLocal8Bit().constData(), 19200, 'E', 8, 1);
+    if (!ctx || modbus_connect(ctx) != 0) {
+        std::fprintf(stderr, "libmodbus cannot open %s\n", qPrintable(pty));
+        return -1;
+    }
+    modbus_set_slave(ctx, 1);
+    modbus_set_response_timeout(ctx, 1, 0);
+    QElapsedTimer timer;
+    timer.start();
+    std::uint16_t dest[8];
+    for (int round = 0; round < kRounds; ++round) {
+        for (const auto &block : blocks) {
+            const int count = static_cast<int>(block.rows.size());
+            if (modbus_read_registers(ctx, block.firstId, count, dest) != count)
+                std::fprintf(stderr, "libmodbus: block %u failed: %s\n", block.firstId, modbus_strerror(errno));
+        }
+    }
+    const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9 / kRounds;
+    modbus_close(ctx);
+    modbus_free(ctx);
+    return seconds;
+}
+
+double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict, const std::vector<const dev::ParamMeta *> &rows)
+{
+    // libserialport looks a port up in sysfs; a pty has no entry. The tests' symlink trick:
+    // "/dev/../../..<symlink>" (tests/transports/pty_pair.h).
+    const QString link = QStringLiteral("/tmp/vt-bench-pty-%1").arg(QCoreApplication::applicationPid());
+    QFile::remove(link);
+    QFile::link(pty, link);
+    link::SerialLink serial(link::SerialSettings::hcsDefault(QStringLiteral("/dev/../../..") + link));
+    model::SessionOptions options;
+    options.baudRate = 19200;
+    options.turnaround = std::chrono::milliseconds(1000);
+    model::Session session(&serial, std::make_unique<dev::access::ModbusRtuAdapter>(dev::access::hcsFamilyOf(dict.family)),
+                           options);
+    model::DeviceAccess access(session, *dev::builtinDictionaries());
+    serial.open();
+    if (!spin([&] { return serial.state() == link::LinkState::Open || serial.state() == link::LinkState::Failed; }, 5000) ||
+        serial.state() != link::LinkState::Open) {
+        std::fprintf(stderr, "SerialLink cannot open %s\n", qPrintable(pty));
+        return -1;
+    }
+    QElapsedTimer timer;
+    timer.start();
+    for (int round = 0; round < kRounds; ++round) {
+        std::optional<model::ReadResult> result;
+        access.read(1, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
+        if (!spin([&] { return result.has_value(); }, 60'000) || !result->complete())
+            std::fprintf(stderr, "ValveTune: read all incomplete\n");
+    }
+    const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9 / kRounds;
+    serial.close();
+    QFile::remove(link);
+    return seconds;
+}
+
+void benchReadAll()
+{
+    const dev::Dictionary &dict = *dev::builtinDictionaries()->find("dma-pn-v51");
+    const auto rows = model::readableRows(dict, "51", "3");
+    const auto blocks = dev::access::planHcsBlocks(rows);
+    SimProcess sim;
+    if (!sim.start()) {
+        std::fprintf(stderr, "valvetune-sim did not start\n");
+        return;
+    }
+    // Alternate the two masters so drift in machine load hits both alike.
+    double lib = 0, vt = 0;
+    for (int pass = 0; pass < 3; ++pass) {
+        lib += libmodbusReadAll(sim.pty, blocks);
+        vt += valvetuneReadAll(sim.pty, dict, rows);
+    }
+    std::printf("read-all dma-pn-v51 over a pty (%zu rows in %zu requests), mean of %d rounds x 3 passes\n",
+                rows.size(), blocks.size(), kRounds);
+    std::printf("  libmodbus master (baseline): %8.2f ms\n", lib / 3 * 1e3);
+    std::printf("  ValveTune session:           %8.2f ms\n", vt / 3 * 1e3);
+    std::printf("  ratio ValveTune / libmodbus: %8.2f\n", vt / lib);
+}
+
+void benchMonitor()
+{
+    model::SimSpec spec;
+    spec.family = "dma-pn-v51";
+    spec.baudRate = 115200;
+    spec.bitsPerCharacter = 11;
+    auto made = model::makeSimLink(spec);
+    if (!made.ok()) {
+        std::fprintf(stderr, "%s\n", qPrintable(made.error()));
+        return;
+    }
+    auto link = std::move(made).value();
+    model::SessionOptions options;
+    options.baudRate = 115200;
+    model::Session session(link.get(), std::make_unique<dev::access::ModbusRtuAdapter>(dev::hcs::Family::Dma), options);
+    model::DeviceAccess access(session, *dev::builtinDictionaries());
+    link->open();
+    spin([&] { return link->state() == link::LinkState::Open; }, 5000);
+    const dev::Dictionary &dict = *dev::builtinDictionaries()->find("dma-pn-v51");
+    const auto rows = model::defaultMonitorRows(dict);
+    model::MonitorScheduler monitor(access);
+    monitor.setModule(1, rows, 0);
+    QElapsedTimer timer;
+    timer.start();
+    monitor.start();
+    spin([&] { return timer.elapsed() >= 5000; }, 10'000);
+    monitor.stop();
+    const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+    const double achieved = static_cast<double>(monitor.samples(1)) / seconds;
+    // FC 3 request: 8 bytes; answer: unit + FC + count + 2 × 7 + CRC = 19 bytes.
+    const std::size_t wireBytes = 8 + 5 + 2 * rows.size();
+    const double limit = 115200.0 / (11.0 * static_cast<double>(wireBytes));
+    std::printf("monitor d1.07..d1.13 (%zu values/request) at 115200 8E1, %.1f s back to back\n", rows.size(), seconds);
+    std::printf("  wire limit:  %8.1f samples/s (%zu bytes per exchange)\n", limit, wireBytes);
+    std::printf("  achieved:    %8.1f samples/s\n", achieved);
+    std::printf("  achieved / limit: %.3f\n", achieved / limit);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    benchMonitor();
+    benchReadAll();
+    return 0;
+}
