@@ -1,0 +1,40 @@
+// Test helpers for parameter files: a module record holding every row of a built-in dictionary
+// at its factory value (or a plausible in-range value where the manual gives none).
+#pragma once
+
+#include "dict/dictionary_loader.h"
+#include "files/param_file.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace vt::dev::files::test {
+
+inline const Dictionary &dictionary(const std::string &family)
+{
+    const Dictionary *d = builtinDictionaries()->find(family);
+    if (!d)
+        throw std::runtime_error("no dictionary " + family);
+    return *d;
+}
+
+inline ModuleRecord moduleFromDefaults(const std::string &family, int address, std::string version, std::string mode)
+{
+    ModuleRecord m;
+    m.address = address;
+    m.family = family;
+    m.version = std::move(version);
+    m.mode = std::move(mode);
+    for (const ParamMeta &p : dictionary(family).params) {
+        if (p.isString()) {
+            m.values.push_back(makeValueRow(p, std::string("VT-" + p.name).substr(0, static_cast<std::size_t>(std::max(p.length, 0)))));
+        } else {
+            const double fallback = std::clamp(0.0, p.min, p.max);
+            m.values.push_back(makeValueRow(p, p.defaultValue.value_or(fallback)));
+        }
+    }
+    return m;
+}
+
+} // namespace vt::dev::files::test
