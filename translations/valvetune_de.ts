@@ -305,6 +305,358 @@
     </message>
 </context>
 <context>
+    <name>vt::model::DeviceAccess</name>
+    <message>
+        <source>not readable over %1</source>
+        <translation>über %1 nicht lesbar</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::MonitorScheduler</name>
+    <message>
+        <source>incomplete answer</source>
+        <translation>unvollständige Antwort</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::SampleStore</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>not a ValveTune sample file</source>
+        <translation>keine ValveTune-Messwertdatei</translation>
+    </message>
+    <message>
+        <source>longer than %1 bytes</source>
+        <translation>länger als %1 Byte</translation>
+    </message>
+    <message>
+        <source>a channel needs an id, a name and a unit</source>
+        <translation>ein Kanal braucht eine Kennung, einen Namen und eine Einheit</translation>
+    </message>
+    <message>
+        <source>more than %1 channels</source>
+        <translation>mehr als %1 Kanäle</translation>
+    </message>
+    <message>
+        <source>the column header does not match the channels</source>
+        <translation>die Spaltenüberschrift passt nicht zu den Kanälen</translation>
+    </message>
+    <message>
+        <source>the column header is missing</source>
+        <translation>die Spaltenüberschrift fehlt</translation>
+    </message>
+    <message>
+        <source>expected %1 columns</source>
+        <translation>%1 Spalten erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a time</source>
+        <translation>„%1“ ist keine Zeitangabe</translation>
+    </message>
+    <message>
+        <source>more than %1 samples</source>
+        <translation>mehr als %1 Messwerte</translation>
+    </message>
+    <message>
+        <source>time goes backwards</source>
+        <translation>die Zeit läuft rückwärts</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>„%1“ ist keine Zahl</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::Session</name>
+    <message>
+        <source>The request queue is full</source>
+        <translation>Die Auftragswarteschlange ist voll</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>The link %1 is not open</source>
+        <translation>Die Verbindung %1 ist nicht offen</translation>
+    </message>
+    <message>
+        <source>The request cannot be encoded for %1</source>
+        <translation>Der Auftrag lässt sich für %1 nicht codieren</translation>
+    </message>
+    <message>
+        <source>unsolicited</source>
+        <translation>unaufgefordert</translation>
+    </message>
+    <message>
+        <source>does not answer the request</source>
+        <translation>beantwortet die Anfrage nicht</translation>
+    </message>
+    <message>
+        <source>no valid frame (checksum error, corrupted or incomplete)</source>
+        <translation>kein gültiger Rahmen (Prüfsummenfehler, verfälscht oder unvollständig)</translation>
+    </message>
+    <message numerus="yes">
+        <source>No answer after %n attempt(s)</source>
+        <translation>
+            <numerusform>Keine Antwort nach %n Versuch</numerusform>
+            <numerusform>Keine Antwort nach %n Versuchen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The link %1 was lost</source>
+        <translation>Die Verbindung %1 ist abgerissen</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>refused by the device</source>
+        <translation>vom Gerät abgelehnt</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>cannot be encoded</source>
+        <translation>nicht codierbar</translation>
+    </message>
+    <message>
+        <source>no answer to attempt %1</source>
+        <translation>keine Antwort auf Versuch %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::SimEndpoint</name>
+    <message>
+        <source>expected FAMILY or FAMILY:MODULES, got &apos;%1&apos;</source>
+        <translation>erwartet FAMILIE oder FAMILIE:MODULE, erhalten „%1“</translation>
+    </message>
+    <message>
+        <source>module count &apos;%1&apos; is not 1..32</source>
+        <translation>Modulanzahl „%1“ liegt nicht in 1..32</translation>
+    </message>
+    <message>
+        <source>the built-in dictionaries do not load</source>
+        <translation>die eingebauten Wörterbücher lassen sich nicht laden</translation>
+    </message>
+    <message>
+        <source>unknown device family &apos;%1&apos;</source>
+        <translation>unbekannte Gerätefamilie „%1“</translation>
+    </message>
+    <message>
+        <source>%1 speaks HART only</source>
+        <translation>%1 spricht nur HART</translation>
+    </message>
+    <message>
+        <source>the simulator does not serve %1 over &apos;%2&apos;</source>
+        <translation>der Simulator bedient %1 nicht über „%2“</translation>
+    </message>
+    <message>
+        <source>%1 cannot be simulated over a PC link yet (DSP-408 needs PROFIBUS or CANopen)</source>
+        <translation>%1 lässt sich über eine PC-Verbindung noch nicht simulieren (DSP-408 braucht PROFIBUS oder CANopen)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::TelegramLog</name>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>device exception</source>
+        <translation>Geräteausnahme</translation>
+    </message>
+    <message>
+        <source>checksum error</source>
+        <translation>Prüfsummenfehler</translation>
+    </message>
+    <message>
+        <source>malformed</source>
+        <translation>fehlerhaft</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <source>unmatched</source>
+        <translation>nicht zugeordnet</translation>
+    </message>
+    <message>
+        <source>out</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>no reply: %1</source>
+        <translation>keine Antwort: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n byte(s)</source>
+        <translation>
+            <numerusform>%n Byte</numerusform>
+            <numerusform>%n Byte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>ValveTune telegram log: %n record(s)</source>
+        <translation>
+            <numerusform>ValveTune-Telegrammprotokoll: %n Eintrag</numerusform>
+            <numerusform>ValveTune-Telegrammprotokoll: %n Einträge</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n older record(s) dropped</source>
+        <translation>
+            <numerusform>%n älterer Eintrag verworfen</numerusform>
+            <numerusform>%n ältere Einträge verworfen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::TelegramLogModel</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation>Richt.</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::WriteJob</name>
+    <message>
+        <source>unknown parameter</source>
+        <translation>unbekannter Parameter</translation>
+    </message>
+    <message>
+        <source>%1 expects %2</source>
+        <translation>%1 erwartet %2</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <source>%1 is not writable</source>
+        <translation>%1 ist nicht beschreibbar</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>acknowledged; not read back</source>
+        <translation>bestätigt; nicht zurückgelesen</translation>
+    </message>
+    <message>
+        <source>sent, but no answer (%1): the value may or may not be on the device</source>
+        <translation>gesendet, aber keine Antwort (%1): der Wert ist möglicherweise im Gerät, möglicherweise nicht</translation>
+    </message>
+    <message>
+        <source>read back %1, expected %2</source>
+        <translation>zurückgelesen %1, erwartet %2</translation>
+    </message>
+    <message>
+        <source>acknowledged; the read back failed (%1)</source>
+        <translation>bestätigt; das Zurücklesen schlug fehl (%1)</translation>
+    </message>
+    <message>
+        <source>found on the device after the interruption</source>
+        <translation>nach der Unterbrechung im Gerät vorgefunden</translation>
+    </message>
+    <message>
+        <source>not sent: the write stopped (%1)</source>
+        <translation>nicht gesendet: das Schreiben wurde beendet (%1)</translation>
+    </message>
+    <message>
+        <source>pending</source>
+        <translation>ausstehend</translation>
+    </message>
+    <message>
+        <source>unchanged</source>
+        <translation>unverändert</translation>
+    </message>
+    <message>
+        <source>refused before sending</source>
+        <translation>vor dem Senden abgelehnt</translation>
+    </message>
+    <message>
+        <source>verified</source>
+        <translation>geprüft</translation>
+    </message>
+    <message>
+        <source>written, not verified</source>
+        <translation>geschrieben, nicht geprüft</translation>
+    </message>
+    <message>
+        <source>refused by the device</source>
+        <translation>vom Gerät abgelehnt</translation>
+    </message>
+    <message>
+        <source>read back differs</source>
+        <translation>Rücklesewert weicht ab</translation>
+    </message>
+    <message>
+        <source>uncertain</source>
+        <translation>ungewiss</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>nicht gesendet</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::AboutDialog</name>
     <message>
         <source>About ValveTune</source>
