@@ -1,6 +1,7 @@
 #include "modbus_adapter.h"
 
 #include "access/hcs_rows.h"
+#include "access/wire_value.h"
 #include "modbus/exceptions.h"
 #include "modbus/rtu.h"
 #include "modbus/tcp.h"
@@ -12,12 +13,12 @@ namespace {
 constexpr std::uint16_t kVersId = 0;   // OPAT manual §4 / DMA manuals: "Vers", raw = version × 100
 constexpr std::uint16_t kModeId = 95;  // E00, the mode of the module
 
-std::uint8_t unitOf(const Transaction &t)
-{
-    return static_cast<std::uint8_t>(t.module & 0xFF);
-}
-
 } // namespace
+
+std::uint8_t ModbusPduAdapter::unitOf(const Transaction &t) const
+{
+    return m_fixedUnit ? *m_fixedUnit : static_cast<std::uint8_t>(t.module & 0xFF);
+}
 
 std::vector<Transaction> ModbusPduAdapter::planRead(int module, std::span<const ParamMeta *const> rows) const
 {
@@ -52,7 +53,8 @@ std::optional<modbus::RequestPdu> ModbusPduAdapter::requestPdu(const Transaction
     case TransactionKind::Write: {
         if (t.rows.size() != 1 || t.values.size() != 1 || !t.rows.front()->id)
             return std::nullopt;
-        const auto word = rawToRegister(t.values.front());
+        // Range of the row's type, not just of a register: 65535 for an int16 row would arrive as -1.
+        const auto word = hcsWordOf(*t.rows.front(), t.values.front());
         if (!word)
             return std::nullopt;
         return modbus::WriteRequest{static_cast<std::uint16_t>(*t.rows.front()->id), *word};
@@ -140,7 +142,7 @@ Bytes ModbusRtuAdapter::encode(const Transaction &t)
     if (t.kind == TransactionKind::Raw)
         return t.raw;
     const auto pdu = requestPdu(t);
-    if (!pdu)
+    if (!pdu || unitOf(t) == 0) // unit 0: the broadcast, never answered
         return {};
     auto bytes = modbus::encodeRtu(modbus::RtuRequest{unitOf(t), *pdu});
     return bytes ? std::move(*bytes) : Bytes{};

@@ -17,7 +17,10 @@ namespace vt::dev::access {
 class ModbusPduAdapter : public ProtocolAdapter
 {
 public:
-    explicit ModbusPduAdapter(hcs::Family family) : m_family(family) {}
+    explicit ModbusPduAdapter(hcs::Family family, std::optional<std::uint8_t> fixedUnit = std::nullopt)
+        : m_family(family), m_fixedUnit(fixedUnit)
+    {
+    }
 
     std::vector<Transaction> planRead(int module, std::span<const ParamMeta *const> rows) const override;
     Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
@@ -30,15 +33,26 @@ protected:
     Reply replyFromPdu(const Transaction &t, std::uint8_t unit, const modbus::ResponsePdu &pdu) const;
     // FC 3 response: 1 + 1 + 2 × count; FC 6 and exceptions are shorter.
     static std::size_t responsePduBytes(const Transaction &t);
+    // The unit id a request for `t` goes to.
+    std::uint8_t unitOf(const Transaction &t) const;
 
 private:
     hcs::Family m_family;
+    std::optional<std::uint8_t> m_fixedUnit;
 };
 
 class ModbusRtuAdapter : public ModbusPduAdapter
 {
 public:
-    using ModbusPduAdapter::ModbusPduAdapter;
+    // ARCHITECTURE.md "Protocol decisions": on RS485 the unit id is the module address (E22); on
+    // a point-to-point line it is configurable (`pointToPointUnit`, usually 1) and every request
+    // goes to it whatever the module (the OPAT master, SADR 0, would otherwise be unit 0).
+    // Without it a request to module 0 is not encoded: unit 0 is the Modbus broadcast, which no
+    // device answers (Modbus over Serial Line §2.2).
+    explicit ModbusRtuAdapter(hcs::Family family, std::optional<std::uint8_t> pointToPointUnit = std::nullopt)
+        : ModbusPduAdapter(family, pointToPointUnit)
+    {
+    }
 
     std::string protocolKey() const override { return "modbus-rtu"; }
     Bytes encode(const Transaction &t) override;
