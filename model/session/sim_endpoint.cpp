@@ -105,8 +105,11 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
         endpoint->m_hart = makeSimHart(endpoint->m_clock, *dict);
         server = hartServer(*endpoint->m_hart);
     } else if (dict->protocol == dev::DeviceProtocol::Hcs) {
+        // One module: a point-to-point Modbus RTU line. A node: Modbus TCP to its gateway, where
+        // every module is a unit — on an RTU line the OPAT master (SADR 0) would be unit 0, the
+        // broadcast address no device answers.
         if (spec.protocol.empty())
-            spec.protocol = "modbus-rtu";
+            spec.protocol = spec.modules == 1 ? "modbus-rtu" : "modbus-tcp";
         NodeConfig config;
         config.family = spec.family;
         config.modules = spec.modules;

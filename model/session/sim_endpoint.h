@@ -39,7 +39,8 @@ struct SimSpec
     std::string family;              // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
     std::size_t modules = 1;         // HCS node size
     int mode = 0;                    // E00; 0: the family's first mode
-    std::string protocol;            // "modbus-rtu" (default for HCS), "modbus-tcp", "node-image", "hart"
+    std::string protocol;            // "modbus-rtu" (default for one HCS module), "modbus-tcp" (default for
+                                     // a node of several), "node-image", "hart" (the SD7's only one)
     int baudRate = 0;                // simulated wire speed; 0: no wire delay
     int bitsPerCharacter = 11;
 };

@@ -72,8 +72,11 @@ inline std::unique_ptr<SimConnection> connectSim(const std::string &family, std:
     } else {
         c->link = std::move(made).value();
     }
-    auto adapter = std::make_unique<dev::access::ModbusRtuAdapter>(
-        dev::access::hcsFamilyOf(family));
+    std::unique_ptr<dev::access::ProtocolAdapter> adapter;
+    if (c->endpoint->spec().protocol == "modbus-tcp")
+        adapter = std::make_unique<dev::access::ModbusTcpAdapter>(dev::access::hcsFamilyOf(family));
+    else
+        adapter = std::make_unique<dev::access::ModbusRtuAdapter>(dev::access::hcsFamilyOf(family));
     c->session = std::make_unique<model::Session>(c->link.get(), std::move(adapter), options);
     c->access = std::make_unique<model::DeviceAccess>(*c->session, dictionaries());
     if (!c->open()) {

@@ -31,6 +31,20 @@ TEST(Session, IdentifiesEachHcsFamily)
     }
 }
 
+TEST(Session, AnOpatNodeIsReachedModuleByModuleThroughItsGateway)
+{
+    auto c = connectSim("opat", 3); // master SADR 0 + CAN slaves 1 and 2, Modbus TCP
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->endpoint->spec().protocol, "modbus-tcp");
+    for (std::size_t i = 0; i < 3; ++i) {
+        std::optional<model::IdentifyResult> result;
+        c->access->identify(c->address(i), [&](const model::IdentifyResult &r) { result = r; });
+        ASSERT_TRUE(waitFor(result));
+        EXPECT_TRUE(result->ok) << i << ": " << result->message.toStdString();
+        EXPECT_EQ(result->module.versRaw / 100, std::stoi(c->module(i).version())) << i;
+    }
+}
+
 TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
 {
     auto c = connectSim("dma-pn-v51");
