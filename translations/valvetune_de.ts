@@ -305,6 +305,29 @@
     </message>
 </context>
 <context>
+    <name>vt::model::Connection</name>
+    <message>
+        <source>a TCP connection needs a host and a port</source>
+        <translation>eine TCP-Verbindung braucht Host und Port</translation>
+    </message>
+    <message>
+        <source>CANopen node %1 is not 1..127</source>
+        <translation>CANopen-Knoten %1 liegt nicht in 1..127</translation>
+    </message>
+    <message>
+        <source>a CAN connection needs an interface (can0, vcan0 …)</source>
+        <translation>eine CAN-Verbindung braucht eine Schnittstelle (can0, vcan0 …)</translation>
+    </message>
+    <message>
+        <source>module address %1 is not 0..255</source>
+        <translation>Moduladresse %1 liegt nicht in 0..255</translation>
+    </message>
+    <message>
+        <source>the link closed</source>
+        <translation>die Verbindung wurde geschlossen</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::DeviceAccess</name>
     <message>
         <source>not readable over %1</source>
@@ -433,10 +456,6 @@
     <message>
         <source>cannot be encoded</source>
         <translation>nicht codierbar</translation>
-    </message>
-    <message>
-        <source>no answer to attempt %1</source>
-        <translation>keine Antwort auf Versuch %1</translation>
     </message>
 </context>
 <context>
@@ -567,6 +586,13 @@
     <message>
         <source>Status</source>
         <translation>Status</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::TelegramRecorder</name>
+    <message>
+        <source>no answer to attempt %1</source>
+        <translation>keine Antwort auf Versuch %1</translation>
     </message>
 </context>
 <context>

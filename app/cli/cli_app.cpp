@@ -46,6 +46,14 @@ const std::vector<Command> &commands()
         {"decode", "explain a telegram field by field (any protocol)", runDecode},
         {"encode", "build gateway CMD 3/6/15 and Modbus RTU frames", runEncode},
         {"dictionary", "list device families, show a family's parameters", runDictionary},
+        {"info", "identify the modules of a connection (family, version, mode, address)", runInfo},
+        {"scan", "list the addresses that answer", runScan},
+        {"read", "read every parameter; print it or save a .vtpar file (--out)", runRead},
+        {"get", "read parameters by name", runGet},
+        {"set", "write parameters in display units, checked and verified", runSet},
+        {"write", "write a .vtpar file's changed values, verified (--dry-run: list them)", runWrite},
+        {"diff", "compare a .vtpar file with the device", runDiff},
+        {"monitor", "poll display values at a rate for a time (--csv)", runMonitor},
     };
     return list;
 }

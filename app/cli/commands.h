@@ -9,4 +9,14 @@ int runDictionary(const QStringList &args, Context &ctx);
 int runDecode(const QStringList &args, Context &ctx);
 int runEncode(const QStringList &args, Context &ctx);
 
+// Device commands (connection options: connection_args.h).
+int runInfo(const QStringList &args, Context &ctx);
+int runScan(const QStringList &args, Context &ctx);
+int runRead(const QStringList &args, Context &ctx);
+int runGet(const QStringList &args, Context &ctx);
+int runSet(const QStringList &args, Context &ctx);
+int runWrite(const QStringList &args, Context &ctx);
+int runDiff(const QStringList &args, Context &ctx);
+int runMonitor(const QStringList &args, Context &ctx);
+
 } // namespace vt::cli

@@ -163,6 +163,10 @@ void Session::sendAttempt()
     const QByteArray frame = toQByteArray(bytes);
     emit frameSent(frame, p.transaction.module, elapsedNs());
     m_link->send(frame);
+    // A link may fail inside send() (FaultLink's cut, a serial write error) and report it at
+    // once: failEverything() has then completed this request and `p` is gone.
+    if (!m_current)
+        return;
     if (p.transaction.kind == dev::access::TransactionKind::Raw && !p.transaction.expectsReply) {
         finish(std::move(m_current), Outcome{OutcomeStatus::Ok, {}, p.attempts, true, {}});
         return;

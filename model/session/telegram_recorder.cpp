@@ -40,7 +40,7 @@ TelegramRecorder::TelegramRecorder(Session &session, TelegramLog &log, QObject *
     connect(&session, &Session::attemptTimedOut, this, [s, target, protocol](int module, int attempt, qint64) {
         if (target)
             target->appendTimeout(s->link().description(), protocol(), module,
-                                  Session::tr("no answer to attempt %1").arg(attempt));
+                                  TelegramRecorder::tr("no answer to attempt %1").arg(attempt));
     });
 }
 

@@ -1,0 +1,64 @@
+// valvetune-cli get CONNECTION NAME... [--module ADDRESS] [--lang en|de] [--json]: read named
+// parameters of one module (default: the first) and print them in display units.
+#include "commands.h"
+#include "device_run.h"
+
+namespace vt::cli {
+
+namespace {
+
+const char kName[] = "get";
+const char kSynopsis[] = "get CONNECTION NAME... [--module ADDRESS] [--lang en|de] [--json]";
+
+} // namespace
+
+int runGet(const QStringList &argsIn, Context &ctx)
+{
+    QStringList args = argsIn;
+    int code = kExitOk;
+    auto options = startCommand(args, ctx, kName, kSynopsis, &code);
+    if (!options || !checkPositional(args, ctx, kName, 1, 4096, &code))
+        return code;
+    DeviceRun run(ctx, *options);
+    if (const int c = run.connect())
+        return c;
+    const auto addresses = run.select(false);
+    if (!addresses || addresses->empty())
+        return kExitUsage;
+    const int address = addresses->front();
+    auto module = run.identify(address, &code);
+    if (!module)
+        return code;
+
+    std::vector<const dev::ParamMeta *> rows;
+    for (const QString &name : args) {
+        const dev::ParamMeta *row = findRow(*module, str(name));
+        if (!row)
+            return failUsage(ctx, kName,
+                             "unknown parameter '" + str(name) + "' for " +
+                                 module->identification.family);
+        if (!row->readable())
+            return failUsage(ctx, kName,
+                             row->name + " cannot be read (" + dev::accessText(row->access).en +
+                                 ")");
+        rows.push_back(row);
+    }
+    const auto result = run.read(address, rows);
+    if (!result)
+        return run.failDeadline("module " + std::to_string(address) + ": get");
+    if (!result->failures.empty())
+        return run.failExchange(address, "reading " + result->failures.front().rows.front()->name,
+                                result->failures.front().outcome);
+    if (ctx.json) {
+        Json values = Json::array();
+        for (const model::RowValue &v : result->values)
+            values.push_back(valueJson(*v.row, v.value, run.lang()));
+        ctx.out << Json{{"module", moduleJson(*module)}, {"values", values}}.dump(2) << '\n';
+    } else {
+        for (const model::RowValue &v : result->values)
+            printValue(ctx.out, *v.row, v.value, run.lang());
+    }
+    return kExitOk;
+}
+
+} // namespace vt::cli

@@ -1,0 +1,64 @@
+// valvetune-cli info CONNECTION [--module ADDRESS] [--json]: identify the modules (family,
+// software version, mode, address).
+#include "commands.h"
+#include "device_run.h"
+
+namespace vt::cli {
+
+namespace {
+
+const char kName[] = "info";
+const char kSynopsis[] = "info CONNECTION [--module ADDRESS] [--json]";
+
+} // namespace
+
+int runInfo(const QStringList &argsIn, Context &ctx)
+{
+    QStringList args = argsIn;
+    int code = kExitOk;
+    auto options = startCommand(args, ctx, kName, kSynopsis, &code);
+    if (!options || !checkPositional(args, ctx, kName, 0, 0, &code))
+        return code;
+    DeviceRun run(ctx, *options);
+    if (const int c = run.connect())
+        return c;
+    const auto addresses = run.select(true);
+    if (!addresses)
+        return kExitUsage;
+
+    const auto results = run.identifyEach(*addresses);
+    Json modules = Json::array();
+    if (!ctx.json)
+        ctx.out << "connection: " << str(run.connection().describe()) << '\n';
+    for (const model::IdentifyResult &r : results) {
+        if (!r.ok) {
+            const std::string why = r.failure.status != model::OutcomeStatus::Ok
+                                        ? outcomeText(r.failure)
+                                        : str(r.message);
+            code =
+                std::max(code, r.failure.status == model::OutcomeStatus::LinkLost || run.linkLost()
+                                   ? int(kExitConnection)
+                                   : int(kExitDeviceError));
+            ctx.err << "valvetune-cli: module " << r.module.address << ": " << why << '\n';
+            modules.push_back(Json{{"address", r.module.address}, {"ok", false}, {"error", why}});
+            continue;
+        }
+        Json m{{"address", r.module.address}, {"ok", true}};
+        m.update(moduleJson(r.module));
+        m["title"] =
+            r.module.dictionary ? r.module.dictionary->title.in(run.lang()) : std::string();
+        modules.push_back(m);
+        if (!ctx.json)
+            ctx.out << moduleText(r.module) << " — " << m["title"].get<std::string>() << '\n';
+        if (!r.message.isEmpty())
+            ctx.err << "valvetune-cli: warning: module " << r.module.address << ": "
+                    << str(r.message) << '\n';
+    }
+    if (ctx.json)
+        ctx.out
+            << Json{{"connection", str(run.connection().describe())}, {"modules", modules}}.dump(2)
+            << '\n';
+    return code;
+}
+
+} // namespace vt::cli

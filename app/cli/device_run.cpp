@@ -1,0 +1,311 @@
+#include "device_run.h"
+
+#include "arg_parse.h"
+#include "dict/dictionary_loader.h"
+#include "model/session/write_job.h"
+#include "sim_memory.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QLoggingCategory>
+#include <QTimer>
+#include <algorithm>
+
+namespace vt::cli {
+
+namespace {
+
+constexpr std::chrono::milliseconds kOpenLimit{30'000};
+
+// Timers, sockets and the serial worker need a QCoreApplication. main() makes one; a program
+// that calls runCli() without one (the in-process golden tests) gets one here, for good: Qt
+// allows one per process and it must outlive every QObject the commands made.
+void ensureApplication()
+{
+    if (QCoreApplication::instance())
+        return;
+    static int argc = 1;
+    static char name[] = "valvetune-cli";
+    static char *argv[] = {name, nullptr};
+    new QCoreApplication(argc, argv); // NOLINT: lives until the process ends, by design
+}
+
+std::string joined(const std::vector<int> &addresses)
+{
+    std::string s;
+    for (int a : addresses)
+        s += (s.empty() ? "" : ", ") + std::to_string(a);
+    return s;
+}
+
+} // namespace
+
+std::string deviceUsage(const char *synopsis)
+{
+    return std::string("usage: valvetune-cli ") + synopsis + "\n" + kConnectionSynopsis;
+}
+
+std::optional<DeviceOptions> startCommand(QStringList &args, Context &ctx, const char *name,
+                                          const char *synopsis, int *code)
+{
+    if (takeFlag(args, QStringLiteral("--help"))) {
+        ctx.out << deviceUsage(synopsis) << '\n';
+        *code = kExitOk;
+        return std::nullopt;
+    }
+    auto options = takeDeviceOptions(args);
+    if (!options.ok()) {
+        *code = failUsage(ctx, name, options.error());
+        return std::nullopt;
+    }
+    return *options;
+}
+
+bool checkPositional(const QStringList &args, Context &ctx, const char *name, qsizetype min,
+                     qsizetype max, int *code)
+{
+    if (const auto option = leftoverOption(args)) {
+        *code = failUsage(ctx, name, "unknown option '" + str(*option) + "'");
+        return false;
+    }
+    if (args.size() < min || args.size() > max) {
+        *code = failUsage(ctx, name,
+                          args.size() < min ? "missing arguments"
+                                            : "unexpected argument '" + str(args.last()) + "'");
+        return false;
+    }
+    return true;
+}
+
+int failUsage(Context &ctx, const char *name, const std::string &message)
+{
+    return ctx.fail(kExitUsage, message + " (see valvetune-cli " + name + " --help)");
+}
+
+bool appliesToModule(const dev::ParamMeta &row, const model::ModuleInfo &module)
+{
+    const std::string &version = module.identification.version;
+    std::string major;
+    for (char c : version) {
+        if (c < '0' || c > '9')
+            break;
+        major.push_back(c);
+    }
+    return row.appliesTo(major, module.identification.mode);
+}
+
+const dev::ParamMeta *findRow(const model::ModuleInfo &module, const std::string &name)
+{
+    return module.dictionary ? module.dictionary->find(name) : nullptr;
+}
+
+DeviceRun::DeviceRun(Context &ctx, DeviceOptions options)
+    : m_ctx(ctx), m_options(std::move(options))
+{
+    ensureApplication();
+    // Errors are one line on stderr (cli_app.h): the links' log lines (vt.link …) would repeat
+    // them. QT_LOGGING_RULES brings them back for debugging.
+    if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+        QLoggingCategory::setFilterRules(QStringLiteral("vt.*=false"));
+}
+
+DeviceRun::~DeviceRun()
+{
+    if (!m_connection)
+        return;
+    if (model::SimEndpoint *sim = m_connection->simEndpoint())
+        rememberSimulator(*sim);
+    m_connection->close();
+    m_connection.reset();
+}
+
+const dev::DictionarySet &DeviceRun::dictionaries() const
+{
+    return *dev::builtinDictionaries();
+}
+
+int DeviceRun::connect()
+{
+    if (!dev::builtinDictionaries().ok())
+        return m_ctx.fail(kExitDeviceError, "the built-in dictionaries do not load");
+    auto made = model::Connection::create(m_options.spec, dictionaries());
+    if (!made.ok())
+        return m_ctx.fail(kExitUsage, str(made.error()));
+    m_connection = std::move(made).value();
+    if (model::SimEndpoint *sim = m_connection->simEndpoint())
+        restoreSimulator(*sim);
+
+    bool opened = false;
+    std::optional<QString> failure;
+    QObject guard; // disconnects the lambdas below when this function returns
+    QObject::connect(m_connection.get(), &model::Connection::opened, &guard, [&] {
+        opened = true;
+        wake();
+    });
+    QObject::connect(m_connection.get(), &model::Connection::failed, &guard,
+                     [&](const QString &reason) {
+                         failure = reason;
+                         wake();
+                     });
+    QObject::connect(m_connection.get(), &model::Connection::lost, m_connection.get(),
+                     [this](const QString &reason) {
+                         m_lost = true;
+                         m_lostReason = reason;
+                         wake();
+                     });
+    m_connection->open();
+    if (!waitUntil([&] { return opened || failure.has_value(); }, kOpenLimit))
+        return m_ctx.fail(kExitConnection,
+                          "cannot open " + str(m_connection->describe()) + ": no answer in time");
+    if (failure)
+        return m_ctx.fail(kExitConnection,
+                          "cannot open " + str(m_connection->describe()) + ": " + str(*failure));
+    return kExitOk;
+}
+
+std::optional<std::vector<int>> DeviceRun::select(bool all)
+{
+    const std::vector<int> addresses = m_connection->moduleAddresses();
+    if (m_options.module) {
+        const int m = *m_options.module;
+        if (m_connection->simEndpoint() &&
+            std::find(addresses.begin(), addresses.end(), m) == addresses.end()) {
+            m_ctx.fail(kExitUsage, "--module " + std::to_string(m) +
+                                       " is not on this connection (modules " + joined(addresses) +
+                                       ")");
+            return std::nullopt;
+        }
+        return std::vector<int>{m};
+    }
+    if (all || addresses.empty())
+        return addresses;
+    return std::vector<int>{addresses.front()};
+}
+
+std::vector<model::IdentifyResult> DeviceRun::identifyEach(const std::vector<int> &addresses)
+{
+    auto results =
+        std::make_shared<std::vector<std::optional<model::IdentifyResult>>>(addresses.size());
+    auto remaining = std::make_shared<std::size_t>(addresses.size());
+    for (std::size_t i = 0; i < addresses.size(); ++i) {
+        access().identify(addresses[i],
+                          [this, results, remaining, i](const model::IdentifyResult &r) {
+                              (*results)[i] = r;
+                              --*remaining;
+                              wake();
+                          });
+    }
+    waitUntil([remaining] { return *remaining == 0; });
+    std::vector<model::IdentifyResult> out;
+    for (std::size_t i = 0; i < addresses.size(); ++i) {
+        if ((*results)[i]) {
+            out.push_back(*(*results)[i]);
+        } else {
+            model::IdentifyResult late;
+            late.module.address = addresses[i];
+            late.failure.status = model::OutcomeStatus::Timeout;
+            late.failure.reason = QStringLiteral("no result before the command's deadline");
+            late.message = late.failure.reason;
+            out.push_back(late);
+        }
+    }
+    return out;
+}
+
+std::optional<model::ModuleInfo> DeviceRun::identify(int address, int *exitCode)
+{
+    const model::IdentifyResult r = identifyEach({address}).front();
+    if (r.ok) {
+        if (!r.message.isEmpty())
+            m_ctx.err << "valvetune-cli: warning: module " << address << ": " << str(r.message)
+                      << '\n';
+        return r.module;
+    }
+    if (r.failure.status != model::OutcomeStatus::Ok)
+        *exitCode = failExchange(address, "identify", r.failure);
+    else
+        *exitCode = m_ctx.fail(kExitDeviceError,
+                               "module " + std::to_string(address) + ": " + str(r.message));
+    return std::nullopt;
+}
+
+std::optional<model::ReadResult> DeviceRun::read(int address,
+                                                 std::vector<const dev::ParamMeta *> rows)
+{
+    auto result = std::make_shared<std::optional<model::ReadResult>>();
+    access().read(address, std::move(rows), model::Priority::User,
+                  [this, result](const model::ReadResult &r) {
+                      *result = r;
+                      wake();
+                  });
+    if (!waitUntil([result] { return result->has_value(); }))
+        return std::nullopt;
+    return **result;
+}
+
+std::vector<model::WriteItem> DeviceRun::write(const model::ModuleInfo &module,
+                                               std::vector<model::WriteItem> items)
+{
+    auto job = std::make_unique<model::WriteJob>(access(), module.address, *module.dictionary,
+                                                 std::move(items));
+    auto finished = std::make_shared<bool>(false);
+    QObject::connect(job.get(), &model::WriteJob::finished, job.get(), [this, finished] {
+        *finished = true;
+        wake();
+    });
+    job->start();
+    if (waitUntil([finished] { return *finished; }))
+        return job->items();
+    // The deadline passed: stop after the exchange on the wire. The job's callbacks may still
+    // come, so it lives on with the connection (whose session goes first).
+    job->cancel();
+    std::vector<model::WriteItem> record = job->items();
+    job.release()->setParent(m_connection.get());
+    return record;
+}
+
+bool DeviceRun::waitUntil(const std::function<bool()> &done, std::chrono::milliseconds limit,
+                          bool stopOnLost)
+{
+    QEventLoop loop;
+    QEventLoop *outer = m_loop;
+    m_loop = &loop;
+    bool expired = false;
+    QTimer deadline;
+    deadline.setSingleShot(true);
+    QObject::connect(&deadline, &QTimer::timeout, &loop, [&] {
+        expired = true;
+        loop.quit();
+    });
+    deadline.start(limit);
+    while (!done() && !expired && !(stopOnLost && m_lost))
+        loop.exec();
+    m_loop = outer;
+    return done();
+}
+
+void DeviceRun::wake()
+{
+    if (m_loop)
+        m_loop->quit();
+}
+
+int DeviceRun::failExchange(int address, const std::string &what, const model::Outcome &outcome)
+{
+    const int code = m_lost ? kExitConnection : exitCodeOf(outcome);
+    std::string reason = outcomeText(outcome);
+    if (m_lost && outcome.status != model::OutcomeStatus::LinkLost)
+        reason = str(m_lostReason);
+    return m_ctx.fail(code,
+                      "module " + std::to_string(address) + ": " + what + " failed: " + reason);
+}
+
+int DeviceRun::failDeadline(const std::string &what)
+{
+    if (m_lost)
+        return m_ctx.fail(kExitConnection, what + ": the link was lost: " + str(m_lostReason));
+    return m_ctx.fail(kExitDeviceError, what + ": no result within " +
+                                            std::to_string(kStepLimit.count() / 1000) + " s");
+}
+
+} // namespace vt::cli

@@ -1,0 +1,314 @@
+#include "connection.h"
+
+#include "access/transaction.h"
+#include "dict/dictionary.h"
+#include "model/session/adapter_factory.h"
+#include "transports/can_link.h"
+#include "transports/fault_link.h"
+#include "transports/serial_link.h"
+#include "transports/sim_link.h"
+#include "transports/tcp_link.h"
+
+#include <QStringList>
+
+namespace vt::model {
+
+namespace {
+
+// HART-7: 1200 baud and a device that may take a few hundred ms to answer. The manuals name no
+// figure; ours, overridable through ConnectionSpec::turnaround.
+constexpr std::chrono::milliseconds kHartTurnaround{300};
+constexpr int kModbusMaxUnit = 32; // HCS: E22 / DIP addresses of one RS485 line (DMA 1..32)
+constexpr int kHartMaxPollAddress = 15;
+constexpr int kCanMaxNode = 127;
+
+dev::HcsProduct productOfFamily(const std::string &family)
+{
+    if (family.rfind("opat", 0) == 0)
+        return dev::HcsProduct::Opat;
+    if (family.rfind("dma-pn-", 0) == 0)
+        return dev::HcsProduct::DmaProfinet;
+    if (family.rfind("dma-pb-", 0) == 0)
+        return dev::HcsProduct::DmaProfibus;
+    return dev::HcsProduct::Unknown;
+}
+
+// The HCS exception table to use: OPAT or DMA codes.
+std::string hcsFamilyHint(const ConnectionSpec &spec)
+{
+    if (spec.kind == ConnectionKind::Sim)
+        return spec.sim.family;
+    return spec.product == dev::HcsProduct::Opat ? "opat" : "dma";
+}
+
+std::optional<AdapterKind> simAdapter(const std::string &protocol)
+{
+    if (protocol == "modbus-rtu")
+        return AdapterKind::ModbusRtu;
+    if (protocol == "modbus-tcp")
+        return AdapterKind::ModbusTcp;
+    if (protocol == "node-image")
+        return AdapterKind::NodeImage;
+    if (protocol == "hart")
+        return AdapterKind::Hart;
+    return std::nullopt;
+}
+
+std::vector<int> range(int first, int last)
+{
+    std::vector<int> out;
+    for (int a = first; a <= last; ++a)
+        out.push_back(a);
+    return out;
+}
+
+} // namespace
+
+const char *connectionKindKey(ConnectionKind kind)
+{
+    switch (kind) {
+    case ConnectionKind::Sim: return "sim";
+    case ConnectionKind::Serial: return "serial";
+    case ConnectionKind::Tcp: return "tcp";
+    case ConnectionKind::Can: return "can";
+    case ConnectionKind::Hart: return "hart";
+    }
+    return "?";
+}
+
+SessionOptions sessionOptionsFor(const ConnectionSpec &spec)
+{
+    SessionOptions options;
+    if (spec.kind == ConnectionKind::Serial || spec.kind == ConnectionKind::Hart) {
+        options.baudRate = spec.serial.baudRate;
+        options.bitsPerCharacter = spec.serial.bitsPerCharacter();
+    } else if (spec.kind == ConnectionKind::Sim && spec.sim.baudRate > 0) {
+        options.baudRate = spec.sim.baudRate;
+        options.bitsPerCharacter = spec.sim.bitsPerCharacter;
+    }
+    if (spec.kind == ConnectionKind::Hart ||
+        (spec.kind == ConnectionKind::Sim && spec.sim.protocol == "hart"))
+        options.turnaround = kHartTurnaround;
+    if (spec.turnaround)
+        options.turnaround = *spec.turnaround;
+    if (spec.retries)
+        options.retries = *spec.retries;
+    return options;
+}
+
+Connection::Connection(ConnectionSpec spec, QObject *parent)
+    : QObject(parent), m_spec(std::move(spec))
+{
+}
+
+Connection::~Connection()
+{
+    // The session and the access refer to the link: they go first.
+    m_access.reset();
+    m_session.reset();
+    if (m_link) {
+        m_closing = true;
+        m_link->disconnect(this);
+    }
+}
+
+dev::Result<std::unique_ptr<Connection>, QString>
+Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
+                   std::unique_ptr<link::Link> link)
+{
+    AdapterKind adapter = AdapterKind::ModbusRtu;
+    SimEndpoint *sim = nullptr;
+    switch (spec.kind) {
+    case ConnectionKind::Sim: {
+        // A fold of several HCS modules is simulated behind a Modbus TCP gateway: Modbus TCP has
+        // no broadcast unit, so unit 0 reaches the OPAT master (on a serial line it would not).
+        // An unknown family: makeSimLink says so.
+        const dev::Dictionary *dict = dictionaries.find(spec.sim.family);
+        if (dict && spec.sim.protocol.empty() && dict->protocol == dev::DeviceProtocol::Hcs &&
+            spec.sim.modules > 1)
+            spec.sim.protocol = "modbus-tcp";
+        if (!link) {
+            auto made = makeSimLink(spec.sim, &dictionaries);
+            if (!made.ok())
+                return made.error();
+            sim = simEndpointOf(**made);
+            spec.sim = sim->spec(); // the protocol the simulator chose
+            link = std::move(made).value();
+        } else if (auto *simLink = qobject_cast<link::SimLink *>(link.get())) {
+            sim = simEndpointOf(*simLink);
+        }
+        if (spec.product == dev::HcsProduct::Unknown)
+            spec.product = productOfFamily(spec.sim.family);
+        const auto kind = simAdapter(spec.sim.protocol.empty() ? "modbus-rtu" : spec.sim.protocol);
+        if (!kind)
+            return QStringLiteral(
+                       "no adapter for the simulator's protocol '%1'") // programmer error
+                .arg(QString::fromStdString(spec.sim.protocol));
+        adapter = *kind;
+        break;
+    }
+    case ConnectionKind::Serial:
+        if (const auto problem = spec.serial.problem())
+            return *problem;
+        if (!link)
+            link = std::make_unique<link::SerialLink>(spec.serial);
+        adapter = AdapterKind::ModbusRtu;
+        break;
+    case ConnectionKind::Hart:
+        if (const auto problem = spec.serial.problem())
+            return *problem;
+        if (!link)
+            link = std::make_unique<link::SerialLink>(spec.serial);
+        adapter = AdapterKind::Hart;
+        break;
+    case ConnectionKind::Tcp:
+        if (spec.host.isEmpty() || spec.port == 0)
+            return tr("a TCP connection needs a host and a port");
+        if (!link)
+            link = std::make_unique<link::TcpLink>(spec.host, spec.port);
+        adapter = spec.tcpProtocol == TcpProtocol::NodeImage ? AdapterKind::NodeImage
+                                                             : AdapterKind::ModbusTcp;
+        break;
+    case ConnectionKind::Can:
+        if (spec.canNode < 1 || spec.canNode > kCanMaxNode)
+            return tr("CANopen node %1 is not 1..127").arg(spec.canNode);
+        if (!link) {
+            if (spec.canInterface.isEmpty())
+                return tr("a CAN connection needs an interface (can0, vcan0 …)");
+            link = std::make_unique<link::CanLink>(spec.canInterface);
+        }
+        adapter = spec.canDsp408 ? AdapterKind::CanopenDsp408 : AdapterKind::CanopenHcs;
+        break;
+    }
+    if (spec.unit && (*spec.unit < 0 || *spec.unit > 255))
+        return tr("module address %1 is not 0..255").arg(*spec.unit);
+
+    auto made = makeAdapter(adapter, hcsFamilyHint(spec));
+    if (!made)
+        return QStringLiteral("no protocol adapter for %1") // programmer error
+            .arg(QString::fromLatin1(adapterKey(adapter)));
+
+    auto c = std::unique_ptr<Connection>(new Connection(std::move(spec)));
+    c->m_sim = sim;
+    if (c->m_spec.fault && !c->m_spec.fault->isNull()) {
+        auto fault = std::make_unique<link::FaultLink>(std::move(link), *c->m_spec.fault);
+        c->m_fault = fault.get();
+        c->m_link = std::move(fault);
+    } else {
+        c->m_link = std::move(link);
+    }
+    c->m_session =
+        std::make_unique<Session>(c->m_link.get(), std::move(made), sessionOptionsFor(c->m_spec));
+    c->m_access = std::make_unique<DeviceAccess>(*c->m_session, dictionaries, c->m_spec.product);
+    connect(c->m_link.get(), &link::Link::failed, c.get(), &Connection::onLinkFailed);
+    connect(c->m_link.get(), &link::Link::stateChanged, c.get(), &Connection::onLinkState);
+    return c;
+}
+
+void Connection::open()
+{
+    m_closing = false;
+    m_link->open();
+}
+
+void Connection::close()
+{
+    m_closing = true;
+    m_link->close();
+}
+
+bool Connection::isOpen() const
+{
+    return m_link->state() == link::LinkState::Open;
+}
+
+QString Connection::protocolKey() const
+{
+    return QString::fromStdString(m_session->adapter().protocolKey());
+}
+
+void Connection::onLinkFailed(const QString &reason)
+{
+    if (m_wasOpen) {
+        m_wasOpen = false;
+        emit lost(reason);
+    } else {
+        emit failed(reason);
+    }
+}
+
+void Connection::onLinkState(link::LinkState state)
+{
+    if (state == link::LinkState::Open) {
+        m_wasOpen = true;
+        emit opened();
+    } else if (state == link::LinkState::Closed && m_wasOpen) {
+        m_wasOpen = false;
+        if (!m_closing)
+            emit lost(tr("the link closed"));
+    }
+}
+
+std::vector<int> Connection::moduleAddresses() const
+{
+    if (m_sim) {
+        std::vector<int> all;
+        for (std::size_t i = 0; i < m_sim->moduleCount(); ++i)
+            all.push_back(m_sim->moduleAddress(i));
+        if (!m_spec.unit)
+            return all;
+        return {*m_spec.unit};
+    }
+    if (m_spec.unit)
+        return {*m_spec.unit};
+    switch (m_spec.kind) {
+    case ConnectionKind::Hart: return {0};
+    case ConnectionKind::Can: return {m_spec.canNode};
+    case ConnectionKind::Sim:
+    case ConnectionKind::Serial:
+    case ConnectionKind::Tcp: break;
+    }
+    return {1};
+}
+
+std::vector<int> Connection::scanAddresses() const
+{
+    if (m_sim) {
+        std::vector<int> all;
+        for (std::size_t i = 0; i < m_sim->moduleCount(); ++i)
+            all.push_back(m_sim->moduleAddress(i));
+        return all;
+    }
+    const QString protocol = protocolKey();
+    if (protocol == QLatin1String("hart"))
+        return range(0, kHartMaxPollAddress);
+    if (protocol == QLatin1String("canopen"))
+        return range(1, kCanMaxNode);
+    if (protocol == QLatin1String("modbus-rtu"))
+        return range(1, kModbusMaxUnit);
+    return range(0, kModbusMaxUnit);
+}
+
+QString Connection::describe() const
+{
+    QStringList addresses;
+    for (int a : moduleAddresses())
+        addresses << QString::number(a);
+    QString where;
+    if (m_sim)
+        where = QStringLiteral("sim %1 ×%2")
+                    .arg(QString::fromStdString(m_spec.sim.family))
+                    .arg(m_sim->moduleCount());
+    else
+        where = (m_fault ? m_fault->inner() : *m_link).description();
+    QString text =
+        QStringLiteral("%1, %2, %3 %4")
+            .arg(where, protocolKey(),
+                 addresses.size() == 1 ? QStringLiteral("module") : QStringLiteral("modules"),
+                 addresses.join(QStringLiteral(", ")));
+    if (m_fault)
+        text += QStringLiteral(" [fault %1]").arg(m_spec.fault->toString());
+    return text;
+}
+
+} // namespace vt::model

@@ -1,0 +1,209 @@
+// Issue #6 "End to end against the simulator over every link": the session engine through a real
+// SerialLink on a pseudo-terminal (with the test-only libserialport workarounds), a TcpLink on
+// loopback (Modbus TCP and the node image) and a CanLink on a SOCK_SEQPACKET socketpair, each
+// against a valvetune-sim process: identify, read all, write + verify. (The in-process SimLink is
+// covered by session_test.cpp / write_job_test.cpp.)
+#include "model/session/adapter_factory.h"
+#include "model/session/device_access.h"
+#include "model/session/session.h"
+#include "model/session/write_job.h"
+#include "transports/can_link.h"
+#include "transports/serial_link.h"
+#include "transports/serial_settings.h"
+#include "transports/tcp_link.h"
+
+#include "access/transaction.h"
+#include "dict/dictionary_loader.h"
+
+#include "../app/sim_process.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace vt::test {
+namespace {
+
+using simtest::Sim;
+
+constexpr int kWaitMs = 30'000;
+
+const dev::DictionarySet &dictionaries()
+{
+    return *dev::builtinDictionaries();
+}
+
+struct Endpoint
+{
+    std::unique_ptr<link::Link> link;
+    std::unique_ptr<model::Session> session;
+    std::unique_ptr<model::DeviceAccess> access;
+
+    bool open(std::unique_ptr<link::Link> l, model::AdapterKind kind, const std::string &family,
+              model::SessionOptions options = {})
+    {
+        link = std::move(l);
+        session = std::make_unique<model::Session>(link.get(), model::makeAdapter(kind, family), options);
+        access = std::make_unique<model::DeviceAccess>(*session, dictionaries());
+        link->open();
+        return QTest::qWaitFor([&] { return link->state() == link::LinkState::Open; }, kWaitMs);
+    }
+
+    model::IdentifyResult identify(int module)
+    {
+        std::optional<model::IdentifyResult> result;
+        access->identify(module, [&](const model::IdentifyResult &r) { result = r; });
+        EXPECT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, kWaitMs));
+        return result.value_or(model::IdentifyResult{});
+    }
+
+    model::ReadResult readAll(int module, const model::ModuleInfo &info)
+    {
+        const auto rows = model::readableRows(*info.dictionary, info.identification.version, info.identification.mode);
+        std::optional<model::ReadResult> result;
+        access->read(module, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
+        EXPECT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, 120'000));
+        EXPECT_EQ(result ? result->values.size() : 0u, rows.size());
+        return result.value_or(model::ReadResult{});
+    }
+
+    model::WriteStatus writeOne(int module, const dev::Dictionary &dict, const char *name, double raw)
+    {
+        std::vector<model::WriteItem> items(1);
+        items[0].row = dict.find(name);
+        items[0].value = raw;
+        model::WriteJob job(*access, module, dict, items);
+        QSignalSpy finished(&job, &model::WriteJob::finished);
+        job.start();
+        EXPECT_TRUE(finished.wait(kWaitMs));
+        EXPECT_EQ(job.items()[0].status, model::WriteStatus::Verified) << job.items()[0].reason.toStdString();
+        return job.items()[0].status;
+    }
+};
+
+void expectDefaults(const model::ReadResult &result, const std::string &family, std::size_t modules, std::size_t index)
+{
+    ASSERT_TRUE(result.complete());
+    for (const model::RowValue &v : result.values) {
+        if (v.row->block == "d" || !v.row->id)
+            continue; // live values move with the plant
+        const std::uint16_t word = simtest::freshWord(family, modules, index, *v.row->id);
+        const double expected = v.row->type == dev::RawType::Int16 ? static_cast<std::int16_t>(word) : word;
+        EXPECT_EQ(dev::rawNumber(v.value), expected) << family << " " << v.row->name;
+    }
+}
+
+TEST(SessionLinks, ModbusRtuOverAPseudoTerminal)
+{
+    Sim sim({"--device", "dma-pn-v51", "--pty"});
+    const QString pty = sim.listening();
+    ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
+    // libserialport looks ports up in sysfs: the "/dev/../../..<symlink>" path of
+    // tests/transports/pty_pair.h (the ioctl shim in this binary handles the modem lines).
+    const QString symlink = QStringLiteral("/tmp/vt-session-pty-%1").arg(QCoreApplication::applicationPid());
+    QFile::remove(symlink);
+    ASSERT_TRUE(QFile::link(pty, symlink));
+    model::SessionOptions options;
+    options.baudRate = 19200;
+    Endpoint e;
+    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(link::SerialSettings::hcsDefault(QStringLiteral("/dev/../../..") + symlink)),
+                       model::AdapterKind::ModbusRtu, "dma-pn-v51", options));
+    const auto id = e.identify(1);
+    ASSERT_TRUE(id.ok) << id.message.toStdString();
+    EXPECT_EQ(id.module.dictionary->family, "dma-pn-v51");
+    expectDefaults(e.readAll(1, id.module), "dma-pn-v51", 1, 0);
+    e.writeOne(1, *id.module.dictionary, "C1.07", 1000);
+    QFile::remove(symlink);
+}
+
+TEST(SessionLinks, ModbusTcpOnLoopbackToAThreeModuleNode)
+{
+    Sim sim({"--device", "dma-pb-v32", "--modules", "3", "--tcp", "127.0.0.1:0"});
+    const QString where = sim.listening();
+    ASSERT_FALSE(where.isEmpty()) << sim.stderrText().toStdString();
+    const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
+    Endpoint e;
+    ASSERT_TRUE(e.open(std::make_unique<link::TcpLink>(QStringLiteral("127.0.0.1"), port),
+                       model::AdapterKind::ModbusTcp, "dma-pb-v32"));
+    for (int address = 1; address <= 3; ++address) {
+        const auto id = e.identify(address);
+        ASSERT_TRUE(id.ok) << address << ": " << id.message.toStdString();
+        EXPECT_EQ(id.module.dictionary->family, "dma-pb-v32");
+    }
+    const auto id = e.identify(2);
+    expectDefaults(e.readAll(2, id.module), "dma-pb-v32", 3, 1);
+    e.writeOne(2, *id.module.dictionary, "C1.07", 1500);
+}
+
+TEST(SessionLinks, NodeImageOnLoopback)
+{
+    Sim sim({"--device", "dma-pn-v13", "--modules", "2", "--tcp", "127.0.0.1:0", "--protocol", "node-image"});
+    const QString where = sim.listening();
+    ASSERT_FALSE(where.isEmpty()) << sim.stderrText().toStdString();
+    const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
+    Endpoint e;
+    ASSERT_TRUE(e.open(std::make_unique<link::TcpLink>(QStringLiteral("127.0.0.1"), port),
+                       model::AdapterKind::NodeImage, "dma-pn-v13"));
+    const auto id = e.identify(2);
+    ASSERT_TRUE(id.ok) << id.message.toStdString();
+    EXPECT_EQ(id.module.dictionary->family, "dma-pn-v13");
+    expectDefaults(e.readAll(2, id.module), "dma-pn-v13", 2, 1);
+    e.writeOne(2, *id.module.dictionary, "C1.07", 250);
+}
+
+TEST(SessionLinks, CanopenSdoThroughASocketpair)
+{
+    int fds[2] = {-1, -1};
+    ASSERT_EQ(::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, fds), 0);
+    const int child = fds[1];
+    Sim sim({"--device", "dma-pn-v51", "--can-fd", QString::number(child), "--node", "5"},
+            [child] { ::fcntl(child, F_SETFD, 0); });
+    ::close(child);
+    ASSERT_FALSE(sim.listening().isEmpty()) << sim.stderrText().toStdString();
+    Endpoint e;
+    ASSERT_TRUE(e.open(std::make_unique<link::CanLink>(link::CanLink::AdoptedFd{fds[0]}, QStringLiteral("socketpair")),
+                       model::AdapterKind::CanopenHcs, "dma-pn-v51"));
+    const auto id = e.identify(5);
+    ASSERT_TRUE(id.ok) << id.message.toStdString();
+    EXPECT_EQ(id.module.dictionary->family, "dma-pn-v51");
+    expectDefaults(e.readAll(5, id.module), "dma-pn-v51", 1, 0);
+    e.writeOne(5, *id.module.dictionary, "C1.07", 1234);
+}
+
+TEST(SessionLinks, HartOverAPseudoTerminal)
+{
+    Sim sim({"--device", "wandfluh-sd7", "--pty"});
+    const QString pty = sim.listening();
+    ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
+    const QString symlink = QStringLiteral("/tmp/vt-session-hart-%1").arg(QCoreApplication::applicationPid());
+    QFile::remove(symlink);
+    ASSERT_TRUE(QFile::link(pty, symlink));
+    const auto settings = link::SerialSettings::hart(QStringLiteral("/dev/../../..") + symlink);
+    model::SessionOptions options;
+    options.baudRate = settings.baudRate;
+    options.bitsPerCharacter = settings.bitsPerCharacter();
+    Endpoint e;
+    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(settings), model::AdapterKind::Hart, {}, options));
+    const auto id = e.identify(0);
+    ASSERT_TRUE(id.ok) << id.message.toStdString();
+    EXPECT_EQ(id.module.dictionary->family, "wandfluh-sd7");
+    // A handful of rows (1200 baud): every answer arrives and decodes.
+    std::vector<const dev::ParamMeta *> rows;
+    for (const dev::ParamMeta &row : id.module.dictionary->params) {
+        if (row.readable() && !row.isString() && rows.size() < 12)
+            rows.push_back(&row);
+    }
+    std::optional<model::ReadResult> result;
+    e.access->read(0, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
+    ASSERT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, 120'000));
+    EXPECT_TRUE(result->complete()) << (result->failures.empty() ? std::string()
+                                                                  : result->failures.front().outcome.reason.toStdString());
+    QFile::remove(symlink);
+}
+
+} // namespace
+} // namespace vt::test
