@@ -73,26 +73,14 @@ int runMonitor(const QStringList &argsIn, Context &ctx)
     DeviceRun run(ctx, *options);
     if (const int c = run.connect())
         return c;
-    const auto addresses = run.select(false);
-    if (!addresses || addresses->empty())
-        return kExitUsage;
-    const int address = addresses->front();
-    auto module = run.identify(address, &code);
+    auto module = run.firstModule(&code);
     if (!module)
         return code;
-    std::vector<const dev::ParamMeta *> rows;
-    for (const QString &name : args) {
-        const dev::ParamMeta *row = findRow(*module, str(name));
-        if (!row)
-            return failUsage(ctx, kName,
-                             "unknown parameter '" + str(name) + "' for " +
-                                 module->identification.family);
-        if (!row->readable())
-            return failUsage(ctx, kName,
-                             row->name + " cannot be read (" + dev::accessText(row->access).en +
-                                 ")");
-        rows.push_back(row);
-    }
+    const int address = module->address;
+    auto named = readableRowsNamed(args, *module, ctx, kName, &code);
+    if (!named)
+        return code;
+    std::vector<const dev::ParamMeta *> rows = std::move(*named);
     if (rows.empty())
         rows = model::defaultMonitorRows(*module->dictionary);
     if (rows.empty())

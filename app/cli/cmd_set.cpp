@@ -32,13 +32,10 @@ int runSet(const QStringList &argsIn, Context &ctx)
     DeviceRun run(ctx, *options);
     if (const int c = run.connect())
         return c;
-    const auto addresses = run.select(false);
-    if (!addresses || addresses->empty())
-        return kExitUsage;
-    const int address = addresses->front();
-    auto module = run.identify(address, &code);
+    auto module = run.firstModule(&code);
     if (!module)
         return code;
+    const int address = module->address;
 
     // Everything is checked before anything is sent.
     std::vector<model::WriteItem> items;

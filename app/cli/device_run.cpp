@@ -99,6 +99,29 @@ const dev::ParamMeta *findRow(const model::ModuleInfo &module, const std::string
     return module.dictionary ? module.dictionary->find(name) : nullptr;
 }
 
+std::optional<std::vector<const dev::ParamMeta *>> readableRowsNamed(const QStringList &names,
+                                                                     const model::ModuleInfo &module,
+                                                                     Context &ctx, const char *command,
+                                                                     int *code)
+{
+    std::vector<const dev::ParamMeta *> rows;
+    for (const QString &name : names) {
+        const dev::ParamMeta *row = findRow(module, str(name));
+        if (!row) {
+            *code = failUsage(ctx, command,
+                              "unknown parameter '" + str(name) + "' for " + module.identification.family);
+            return std::nullopt;
+        }
+        if (!row->readable()) {
+            *code = failUsage(ctx, command,
+                              row->name + " cannot be read (" + dev::accessText(row->access).en + ")");
+            return std::nullopt;
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
 DeviceRun::DeviceRun(Context &ctx, DeviceOptions options)
     : m_ctx(ctx), m_options(std::move(options))
 {
@@ -227,6 +250,16 @@ std::optional<model::ModuleInfo> DeviceRun::identify(int address, int *exitCode)
         *exitCode = m_ctx.fail(kExitDeviceError,
                                "module " + std::to_string(address) + ": " + str(r.message));
     return std::nullopt;
+}
+
+std::optional<model::ModuleInfo> DeviceRun::firstModule(int *exitCode)
+{
+    const auto addresses = select(false);
+    if (!addresses || addresses->empty()) {
+        *exitCode = kExitUsage;
+        return std::nullopt;
+    }
+    return identify(addresses->front(), exitCode);
 }
 
 std::optional<model::ReadResult> DeviceRun::read(int address,

@@ -48,6 +48,9 @@ public:
 
     // Identifies one module (bounded). nullopt after printing why; *exitCode says how to exit.
     std::optional<model::ModuleInfo> identify(int address, int *exitCode);
+    // The module a single-module command (get, set, monitor) works on: --module or the first,
+    // identified. nullopt after printing why; *exitCode says how to exit.
+    std::optional<model::ModuleInfo> firstModule(int *exitCode);
     // Identifies several at once; the results in the order of `addresses` (failures included).
     std::vector<model::IdentifyResult> identifyEach(const std::vector<int> &addresses);
     // Reads `rows` of `address` (bounded); nullopt when the deadline passed.
@@ -99,5 +102,11 @@ bool appliesToModule(const dev::ParamMeta &row, const model::ModuleInfo &module)
 
 // The dictionary row `name` of the module, or nullptr.
 const dev::ParamMeta *findRow(const model::ModuleInfo &module, const std::string &name);
+// The rows `names` of the module, each readable. nullopt after printing a usage error of command
+// `command` (unknown or unreadable name; *code = 2).
+std::optional<std::vector<const dev::ParamMeta *>> readableRowsNamed(const QStringList &names,
+                                                                     const model::ModuleInfo &module,
+                                                                     Context &ctx, const char *command,
+                                                                     int *code);
 
 } // namespace vt::cli

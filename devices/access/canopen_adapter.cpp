@@ -220,9 +220,7 @@ std::optional<Reply> CanopenAdapter::feed(std::span<const std::uint8_t> bytes, c
             reply = sdo ? sdoReply(*sdo, t) : mismatch();
         }
         reply->frame.assign(image.begin(), image.end());
-        if (reply->status != ReplyStatus::Mismatch || !result)
-            result = std::move(reply);
-        if (result->status != ReplyStatus::Mismatch)
+        if (offerReply(result, std::move(*reply)))
             break;
     }
     m_buffer.erase(m_buffer.begin(), m_buffer.begin() + static_cast<std::ptrdiff_t>(used));

@@ -55,6 +55,15 @@ LocalText statusText(std::uint8_t code)
     return text;
 }
 
+Reply exceptionReply(std::uint8_t code)
+{
+    Reply reply;
+    reply.status = ReplyStatus::DeviceException;
+    reply.exceptionCode = code;
+    reply.exceptionText = statusText(code);
+    return reply;
+}
+
 std::string hexText(std::uint32_t value, int digits)
 {
     static constexpr char kDigits[] = "0123456789ABCDEF";
@@ -191,8 +200,7 @@ std::optional<Reply> HartAdapter::feed(std::span<const std::uint8_t> bytes, cons
         if (!reply)
             continue;
         reply->frame = std::move(event.raw);
-        if (reply->status != ReplyStatus::Mismatch || !result)
-            result = std::move(reply);
+        offerReply(result, std::move(*reply)); // later frames are still drained, not answered
     }
     return result;
 }
@@ -228,13 +236,9 @@ std::optional<Reply> HartAdapter::frameReply(const hart::Frame &frame, const Tra
 
 Reply HartAdapter::identityReply(const hart::Frame &frame, const Transaction &t)
 {
+    if (hart::isErrorResponse(frame.responseCode))
+        return exceptionReply(frame.responseCode);
     Reply reply;
-    if (hart::isErrorResponse(frame.responseCode)) {
-        reply.status = ReplyStatus::DeviceException;
-        reply.exceptionCode = frame.responseCode;
-        reply.exceptionText = statusText(frame.responseCode);
-        return reply;
-    }
     const auto payload = hart::decodeUniversal(kReadUniqueIdentifier, true, frame.data);
     const auto *id = payload ? std::get_if<hart::Identity>(&*payload) : nullptr;
     if (!id)
@@ -268,15 +272,11 @@ Reply HartAdapter::parameterReply(const hart::Frame &frame, const Transaction &t
         t.kind == TransactionKind::Write ? hart::writeCommand(*type) : hart::readCommand(*type);
     if (frame.command != command)
         return mismatch();
-    Reply reply;
     // §4.4.1: status byte 1 = 0 no error, 5 wrong byte count, 6 device-specific error; error
     // responses carry no data.
-    if (hart::isErrorResponse(frame.responseCode)) {
-        reply.status = ReplyStatus::DeviceException;
-        reply.exceptionCode = frame.responseCode;
-        reply.exceptionText = statusText(frame.responseCode);
-        return reply;
-    }
+    if (hart::isErrorResponse(frame.responseCode))
+        return exceptionReply(frame.responseCode);
+    Reply reply;
     const auto access = hart::decodeParamAccess(command, true, frame.data);
     if (!access || access->ref != *ref || !access->raw) {
         if (frame.responseCode == 0)

@@ -162,9 +162,7 @@ std::optional<Reply> ModbusRtuAdapter::feed(std::span<const std::uint8_t> bytes,
             continue;
         Reply reply = replyFromPdu(t, decoded->unit, decoded->pdu);
         reply.frame = std::move(frame);
-        if (reply.status != ReplyStatus::Mismatch || !result)
-            result = std::move(reply);
-        if (result->status != ReplyStatus::Mismatch)
+        if (offerReply(result, std::move(reply)))
             break;
     }
     return result;
@@ -209,9 +207,7 @@ std::optional<Reply> ModbusTcpAdapter::feed(std::span<const std::uint8_t> bytes,
         else
             reply = replyFromPdu(t, decoded->unit, decoded->pdu);
         reply.frame = std::move(frame);
-        if (reply.status != ReplyStatus::Mismatch || !result)
-            result = std::move(reply);
-        if (result->status != ReplyStatus::Mismatch)
+        if (offerReply(result, std::move(reply)))
             break;
     }
     if (m_deframer.error())

@@ -230,9 +230,7 @@ std::optional<Reply> NodeImageAdapter::feed(std::span<const std::uint8_t> bytes,
         m_resync = false;
         used += m_layout.inputBytes;
         reply->frame.assign(image.begin(), image.end());
-        if (reply->status != ReplyStatus::Mismatch || !result)
-            result = std::move(reply);
-        if (result->status != ReplyStatus::Mismatch)
+        if (offerReply(result, std::move(*reply)))
             break;
     }
     m_buffer.erase(m_buffer.begin(), m_buffer.begin() + static_cast<std::ptrdiff_t>(used));

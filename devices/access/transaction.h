@@ -62,6 +62,15 @@ struct Reply
     Bytes frame; // the reply as it came off the wire
 };
 
+// For feed(): several frames may arrive in one chunk. Keeps the first reply that answers the
+// request, else the first Mismatch (so the session can log it); true once `result` answers.
+inline bool offerReply(std::optional<Reply> &result, Reply reply)
+{
+    if (reply.status != ReplyStatus::Mismatch || !result)
+        result = std::move(reply);
+    return result->status != ReplyStatus::Mismatch;
+}
+
 class ProtocolAdapter
 {
 public:

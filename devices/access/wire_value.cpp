@@ -7,21 +7,6 @@
 
 namespace vt::dev::access {
 
-std::size_t wireBytes(RawType type)
-{
-    switch (type) {
-    case RawType::Int8:
-    case RawType::UInt8: return 1;
-    case RawType::Int16:
-    case RawType::UInt16: return 2;
-    case RawType::Int32:
-    case RawType::UInt32:
-    case RawType::Float32: return 4;
-    case RawType::String: break;
-    }
-    return 0;
-}
-
 std::optional<std::uint32_t> rawToWireBits(const ParamMeta &row, const RawValue &value)
 {
     const std::size_t width = wireBytes(row.type);

@@ -14,9 +14,7 @@
 
 namespace vt::dev::access {
 
-// Bytes of the row's type on the wire: 1, 2 or 4; 0 for text rows.
-std::size_t wireBytes(RawType type);
-// The value's bits, zero-extended to 32 (only the low wireBytes() count); nullopt for text,
+// The value's bits, zero-extended to 32 (only the low wireBytes() count, dict/param_meta.h); nullopt for text,
 // a text row, a non-finite number, a fraction on an integer row or a value the type cannot hold.
 std::optional<std::uint32_t> rawToWireBits(const ParamMeta &row, const RawValue &value);
 // The low wireBytes() bytes of `bits` as the row's type reads them (signed rows sign-extended).

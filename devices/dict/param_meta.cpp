@@ -51,6 +51,21 @@ double typeMin(RawType type)
     return 0;
 }
 
+std::size_t wireBytes(RawType type)
+{
+    switch (type) {
+    case RawType::Int8:
+    case RawType::UInt8: return 1;
+    case RawType::Int16:
+    case RawType::UInt16: return 2;
+    case RawType::Int32:
+    case RawType::UInt32:
+    case RawType::Float32: return 4;
+    case RawType::String: break;
+    }
+    return 0;
+}
+
 double typeMax(RawType type)
 {
     switch (type) {

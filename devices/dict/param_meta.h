@@ -5,6 +5,7 @@
 
 #include "core/local_text.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -95,6 +96,9 @@ struct ParamMeta
 // Representable raw range of a type (float: ±FLT_MAX; string: 0..0).
 double typeMin(RawType type);
 double typeMax(RawType type);
+// Bytes the type occupies on a fieldbus (ED1/SD1 manual §4.6 "data type / parameter length",
+// HART-7 manual §4.4.1, CANopen expedited SDO): 1, 2 or 4; 0 for strings.
+std::size_t wireBytes(RawType type);
 
 const char *accessKey(Access access);   // "r", "rw", "w", "x", "n"
 const char *rawTypeKey(RawType type);   // "int16", …

@@ -48,7 +48,7 @@ Result<ObjectValue, SdoAbort> Dsp408Objects::read(std::uint16_t index, std::uint
     double raw = 0;
     if (auto error = m_device.read(**meta, raw))
         return sdoAbortFor(*error);
-    return ObjectValue{toWireBits(**meta, raw), wireWidth((*meta)->type)};
+    return ObjectValue{toWireBits(**meta, raw), wireBytes((*meta)->type)};
 }
 
 std::optional<SdoAbort> Dsp408Objects::write(std::uint16_t index, std::uint8_t subindex,
@@ -62,7 +62,7 @@ std::optional<SdoAbort> Dsp408Objects::write(std::uint16_t index, std::uint8_t s
     const ParamMeta &meta = **found;
     if (!meta.writable())
         return SdoAbort{sdo_abort::kReadOnly};
-    const std::size_t width = wireWidth(meta.type);
+    const std::size_t width = wireBytes(meta.type);
     if (size != 0 && size != width) // CiA 301: length of service parameter too high / too low
         return SdoAbort{size > width ? sdo_abort::kLengthTooHigh : sdo_abort::kLengthTooLow};
     // Unsized (s = 0): the low bytes of the 4 carry the value (fromWireBits reads only those).

@@ -11,7 +11,7 @@ namespace {
 
 dsp408::ParamLength lengthOf(const ParamMeta &meta)
 {
-    return static_cast<dsp408::ParamLength>(wireWidth(meta.type));
+    return static_cast<dsp408::ParamLength>(wireBytes(meta.type));
 }
 
 } // namespace

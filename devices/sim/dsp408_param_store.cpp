@@ -112,28 +112,13 @@ bool isModeRow(const ParamMeta &meta)
     return meta.name == "db_DeviceMode" || meta.name == "db_ControlMode" || meta.name == "db_Local";
 }
 
-std::size_t wireWidth(RawType type)
-{
-    switch (type) {
-    case RawType::Int8:
-    case RawType::UInt8: return 1;
-    case RawType::Int16:
-    case RawType::UInt16: return 2;
-    case RawType::Int32:
-    case RawType::UInt32:
-    case RawType::Float32: return 4;
-    case RawType::String: return 0;
-    }
-    return 0;
-}
-
 std::uint32_t toWireBits(const ParamMeta &meta, double raw)
 {
     if (meta.isFloat())
         return hart::bitsFromFloat(static_cast<float>(raw));
     const auto clamped = std::clamp(raw, typeMin(meta.type), typeMax(meta.type));
     const auto wide = static_cast<std::int64_t>(clamped);
-    const std::size_t width = wireWidth(meta.type);
+    const std::size_t width = wireBytes(meta.type);
     const std::uint64_t mask = width >= 4 ? 0xFFFFFFFFu : (std::uint64_t{1} << (8 * width)) - 1;
     return static_cast<std::uint32_t>(static_cast<std::uint64_t>(wide) & mask);
 }

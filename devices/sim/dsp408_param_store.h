@@ -76,11 +76,8 @@ inline constexpr std::uint32_t kResetDefaultLoad = 0x6C6F6164;   // 'l' 'o' 'a' 
 // INIT or DISABLED (ED1/SD1 manual §4.2.2 state table, HART-7 manual §4.2.1).
 bool isModeRow(const ParamMeta &meta);
 
-// Bytes a row occupies on the PKW / HART wire (ED1/SD1 manual §4.6 "data type / parameter
-// length", HART-7 manual §4.4.1): 1, 2 or 4; 0 for strings.
-std::size_t wireWidth(RawType type);
 // Raw value → the zero-extended wire bits (two's complement for signed types, IEEE 754 bits for
-// float32), and back: the low `wireWidth` bytes sign-extended by the row's type.
+// float32), and back: the low `wireBytes` bytes sign-extended by the row's type.
 std::uint32_t toWireBits(const ParamMeta &meta, double raw);
 double fromWireBits(const ParamMeta &meta, std::uint32_t bits);
 

@@ -184,7 +184,7 @@ HartDevice::Reply HartDevice::parameter(std::uint8_t command, const Bytes &data)
     const ParamMeta *meta = m_params.find(ref.ind, ref.pnu, ref.instance);
     if (!meta)
         return {refusal(ParamErrc::Unknown), {}, false};
-    if (hart::valueWidth(command) != wireWidth(meta->type))
+    if (hart::valueWidth(command) != wireBytes(meta->type))
         return {refusal(ParamErrc::WrongWidth), {}, false};
     if (hart::isWriteCommand(command)) {
         Reply r = writeParameter(*meta, fromWireBits(*meta, access->raw.value_or(0)));

@@ -88,12 +88,7 @@ void WriteJob::start()
         else
             emit itemChanged(static_cast<int>(i));
     }
-    m_cursor = 0;
-    m_done = 0;
-    m_cancelled = false;
-    m_running = true;
-    emit progress(0, static_cast<int>(m_order.size()));
-    QTimer::singleShot(0, this, &WriteJob::next);
+    run();
 }
 
 void WriteJob::resume()
@@ -109,6 +104,11 @@ void WriteJob::resume()
             item.status = WriteStatus::Pending;
         m_order.push_back(static_cast<int>(i));
     }
+    run();
+}
+
+void WriteJob::run()
+{
     m_cursor = 0;
     m_done = 0;
     m_cancelled = false;

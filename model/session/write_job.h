@@ -51,6 +51,7 @@ signals:
     void finished(bool complete);
 
 private:
+    void run(); // works through m_order from the start
     void next();
     void writeItem(int index);
     void verifyItem(int index);

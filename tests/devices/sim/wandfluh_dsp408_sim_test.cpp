@@ -90,7 +90,7 @@ struct Dsp408Rig
     Pkw write(const std::string &name, std::uint32_t value)
     {
         const ParamMeta &m = row(name);
-        const auto length = static_cast<dsp408::ParamLength>(wireWidth(m.type));
+        const auto length = static_cast<dsp408::ParamLength>(wireBytes(m.type));
         return pkw(dsp408::writeRequest(static_cast<std::uint8_t>(*m.ind),
                                         static_cast<std::uint16_t>(*m.pnu), length, value));
     }
@@ -111,7 +111,7 @@ TEST(WandfluhSimPkw, ReadOfEveryReadableParameterReturnsTheDictionaryDefault)
     for (const ParamMeta &meta : rig.dict.params) {
         if (!meta.readable())
             continue;
-        const auto length = static_cast<dsp408::ParamLength>(wireWidth(meta.type));
+        const auto length = static_cast<dsp408::ParamLength>(wireBytes(meta.type));
         const Pkw rsp = rig.pkw(dsp408::readRequest(static_cast<std::uint8_t>(*meta.ind),
                                                     static_cast<std::uint16_t>(*meta.pnu)));
         ASSERT_FALSE(rig.error(rsp)) << meta.name << " error " << *rig.error(rsp);
