@@ -2,9 +2,12 @@
 // blocks of ≤ 8 consecutive IDs, priorities, timeouts and retries, link loss.
 #include "session_fixture.h"
 
+#include "model/session/monitor_recording.h"
 #include "model/session/monitor_scheduler.h"
 #include "model/session/telegram_recorder.h"
 #include "model/telegram_log.h"
+
+#include "dict/cooking.h"
 
 #include <QSignalSpy>
 
@@ -196,6 +199,31 @@ TEST(Session, MonitorPollsTheDisplayBlockAtTheRequestedRate)
     EXPECT_LT(rate, 60.0);
     const auto sample = sampled.last().front().value<model::MonitorSample>();
     EXPECT_EQ(sample.values.size(), rows.size());
+}
+
+TEST(Session, MonitorSamplesGoToABoundedStoreInDisplayUnits)
+{
+    auto c = connectSim("dma-pn-v51");
+    ASSERT_TRUE(c);
+    const auto rows = model::defaultMonitorRows(c->dictionary());
+    model::SampleStore store(model::monitorChannels(rows, dev::Language::English), 10);
+    ASSERT_EQ(store.channelCount(), 7);
+    EXPECT_EQ(store.channels().front().id, QStringLiteral("d1.07"));
+    model::MonitorScheduler monitor(*c->access);
+    model::recordSamples(monitor, c->address(), store);
+    QSignalSpy sampled(&monitor, &model::MonitorScheduler::sampled);
+    monitor.setModule(c->address(), rows, 0);
+    monitor.start();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return sampled.count() >= 25; }, kWaitMs));
+    monitor.stop();
+    EXPECT_EQ(store.size(), 10); // bounded: the newest 10 of 25+
+    const auto last = sampled.last().front().value<model::MonitorSample>();
+    EXPECT_DOUBLE_EQ(store.lastTime(), last.seconds);
+    for (int ch = 0; ch < 7; ++ch) {
+        EXPECT_DOUBLE_EQ(store.valueAt(ch, store.size() - 1),
+                         dev::toDisplay(*rows[static_cast<std::size_t>(ch)], dev::rawNumber(last.values[static_cast<std::size_t>(ch)])))
+            << ch;
+    }
 }
 
 TEST(Session, EveryFrameInAndOutGoesToTheTelegramLog)

@@ -1,0 +1,20 @@
+// Puts a MonitorScheduler's samples of one module into a bounded SampleStore (issue #6 "samples
+// go to a bounded store"), cooked to display units (raw × scale) so the plot and the CSV export
+// read what the engineer reads. Same thread as the scheduler; the store must outlive the
+// connection (disconnect it, or destroy the scheduler, before the store goes).
+#pragma once
+
+#include "model/sample_store.h"
+#include "model/session/monitor_scheduler.h"
+
+#include "core/local_text.h"
+
+namespace vt::model {
+
+// One channel per row: id = the row's name ("d1.11"), name = its label, unit = its unit.
+QList<SampleChannel> monitorChannels(const std::vector<const dev::ParamMeta *> &rows, dev::Language lang);
+
+// Appends every complete sample of `module` whose rows match the store's channels.
+QMetaObject::Connection recordSamples(MonitorScheduler &scheduler, int module, SampleStore &store);
+
+} // namespace vt::model
