@@ -2,31 +2,64 @@
 #include "sample_store.h"
 
 #include <QIODevice>
+#include <QLocale>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 
 namespace vt::model {
 
 namespace {
 
-constexpr char kMagic[] = "# ValveTune samples,1";
-constexpr char kChannelPrefix[] = "# channel,";
+// The file's separator and decimal sign follow the language (the default QLocale, which the
+// app's language switch sets): English ',' and '.', German ';' and ',' — what spreadsheets expect
+// in each (German and English issue: "CSV export states its separator and decimal sign"). The
+// first line carries the separator ("# ValveTune samples,1" / "# ValveTune samples;1"), the
+// decimal sign follows from it, and the second line states both in words for people. Files of
+// the first version (always ',' and '.') read unchanged.
+struct CsvFormat
+{
+    char separator = ',';
+    char decimal = '.';
+};
+
+constexpr CsvFormat kEnglishCsv{',', '.'};
+constexpr CsvFormat kGermanCsv{';', ','};
+constexpr char kMagicPrefix[] = "# ValveTune samples";
+constexpr char kMagicVersion[] = "1";
+constexpr char kChannelPrefix[] = "# channel";
 constexpr qsizetype kWriteChunk = 64 * 1024;
 
-// Shortest text that reads back to the same number, independent of the locale.
-template<typename T> void appendNumber(QByteArray &line, T value)
+CsvFormat writeFormat()
+{
+    return QLocale().language() == QLocale::German ? kGermanCsv : kEnglishCsv;
+}
+
+QByteArray formatStatement(const CsvFormat &format)
+{
+    return format.separator == ';'
+               ? QByteArray(
+                     "# Trennzeichen: Semikolon (;). Dezimalzeichen: Komma (,). Kodierung: UTF-8.")
+               : QByteArray("# Separator: comma (,). Decimal sign: point (.). Encoding: UTF-8.");
+}
+
+// Shortest text that reads back to the same number, independent of the locale, with the
+// file's decimal sign.
+template<typename T> void appendNumber(QByteArray &line, T value, const CsvFormat &format)
 {
     char buf[64];
     const auto r = std::to_chars(buf, buf + sizeof buf, value);
+    if (format.decimal != '.')
+        std::replace(buf, r.ptr, '.', format.decimal);
     line.append(buf, static_cast<qsizetype>(r.ptr - buf));
 }
 
 // Marker texts and channel names are one line each: a line break would end the CSV row.
-QByteArray csvField(QString text)
+QByteArray csvField(QString text, const CsvFormat &format)
 {
     text.replace(QLatin1Char('\r'), QLatin1Char(' ')).replace(QLatin1Char('\n'), QLatin1Char(' '));
-    if (text.contains(QLatin1Char(',')) || text.contains(QLatin1Char('"'))) {
+    if (text.contains(QLatin1Char(format.separator)) || text.contains(QLatin1Char('"'))) {
         text.replace(QLatin1String("\""), QLatin1String("\"\""));
         text = QLatin1Char('"') + text + QLatin1Char('"');
     }
@@ -34,7 +67,7 @@ QByteArray csvField(QString text)
 }
 
 // RFC 4180 fields of one line; false for an unterminated quote.
-bool splitCsv(const QString &line, QStringList &fields)
+bool splitCsv(const QString &line, QStringList &fields, const CsvFormat &format)
 {
     fields.clear();
     QString field;
@@ -50,7 +83,7 @@ bool splitCsv(const QString &line, QStringList &fields)
                 quoted = false;
         } else if (c == QLatin1Char('"')) {
             quoted = true;
-        } else if (c == QLatin1Char(',')) {
+        } else if (c == QLatin1Char(format.separator)) {
             fields.append(field);
             field.clear();
         } else {
@@ -61,12 +94,27 @@ bool splitCsv(const QString &line, QStringList &fields)
     return !quoted;
 }
 
-template<typename T> bool parseNumber(const QString &text, T &value)
+template<typename T> bool parseNumber(const QString &text, T &value, const CsvFormat &format)
 {
-    const QByteArray latin = text.trimmed().toLatin1();
+    QByteArray latin = text.trimmed().toLatin1();
+    if (format.decimal != '.') {
+        if (latin.contains('.'))
+            return false; // a point is no decimal sign here; reading it as one would shift values
+        latin.replace(format.decimal, '.');
+    }
     const char *end = latin.constData() + latin.size();
     const auto r = std::from_chars(latin.constData(), end, value);
     return !latin.isEmpty() && r.ec == std::errc() && r.ptr == end;
+}
+
+// The format a first line announces; nullopt when it is no sample file's first line.
+std::optional<CsvFormat> formatOfMagic(const QString &line)
+{
+    for (const CsvFormat &f : {kEnglishCsv, kGermanCsv})
+        if (line ==
+            QLatin1String(kMagicPrefix) + QLatin1Char(f.separator) + QLatin1String(kMagicVersion))
+            return f;
+    return std::nullopt;
 }
 
 } // namespace
@@ -89,15 +137,19 @@ bool SampleStore::writeCsv(QIODevice &out, double t0, double t1, QString *error)
             *error = out.errorString();
         return ok;
     };
-    buf += kMagic;
-    buf += '\n';
+    const CsvFormat format = writeFormat();
+    const char sep = format.separator;
+    buf += kMagicPrefix;
+    buf += sep;
+    buf += kMagicVersion;
+    buf += '\n' + formatStatement(format) + '\n';
     for (const SampleChannel &c : m_channels)
-        buf += kChannelPrefix + csvField(c.id) + ',' + csvField(c.name) + ',' + csvField(c.unit) +
-               '\n';
+        buf += kChannelPrefix + QByteArray(1, sep) + csvField(c.id, format) + sep +
+               csvField(c.name, format) + sep + csvField(c.unit, format) + '\n';
     buf += "time_s";
     for (const SampleChannel &c : m_channels)
-        buf += ',' + csvField(c.id);
-    buf += ",marker\n";
+        buf += sep + csvField(c.id, format);
+    buf += sep + QByteArray("marker\n");
 
     auto marker = std::lower_bound(m_markers.begin(), m_markers.end(), t0,
                                    [](const SampleMarker &m, double t) { return m.t < t; });
@@ -107,22 +159,23 @@ bool SampleStore::writeCsv(QIODevice &out, double t0, double t1, QString *error)
     const auto putMarkersBefore = [&](double limit, bool inclusive) {
         for (; marker != markerEnd && (marker->t < limit || (inclusive && marker->t == limit));
              ++marker) {
-            appendNumber(buf, marker->t);
-            buf += QByteArray(channelCount() + 1, ',') + csvField(marker->text) + '\n';
+            appendNumber(buf, marker->t, format);
+            buf += QByteArray(channelCount() + 1, sep) + csvField(marker->text, format) + '\n';
         }
     };
     const qsizetype end = !(t0 <= t1) ? 0 : upperBound(t1);
     for (qsizetype i = !(t0 <= t1) ? 0 : lowerBound(t0); i < end; ++i) {
         const double t = timeAt(i);
         putMarkersBefore(t, false); // a marker at a sample's time follows that sample
-        appendNumber(buf, t);
+        appendNumber(buf, t, format);
         for (int c = 0; c < channelCount(); ++c) {
-            buf += ',';
+            buf += sep;
             const float v = column(c)[physical(i)];
             if (!std::isnan(v))
-                appendNumber(buf, v);
+                appendNumber(buf, v, format);
         }
-        buf += ",\n";
+        buf += sep;
+        buf += '\n';
         if (!put(false))
             return false;
     }
@@ -154,23 +207,25 @@ std::optional<SampleStore> SampleStore::readCsv(QIODevice &in, QString *error,
         return true;
     };
 
-    if (!nextLine() || line != QLatin1String(kMagic))
+    const std::optional<CsvFormat> found = nextLine() ? formatOfMagic(line) : std::nullopt;
+    if (!found)
         return fail(tr("not a ValveTune sample file"));
+    const CsvFormat format = *found;
+    const QString channelPrefix = QLatin1String(kChannelPrefix) + QLatin1Char(format.separator);
     QList<SampleChannel> channels;
     QStringList fields;
     bool haveHeader = false;
     while (!haveHeader && nextLine()) {
         if (tooLong)
             return fail(tr("longer than %1 bytes").arg(limits.maxLineLength));
-        if (line.startsWith(QLatin1String(kChannelPrefix))) {
-            if (!splitCsv(line.mid(static_cast<qsizetype>(sizeof kChannelPrefix) - 1), fields) ||
-                fields.size() != 3)
+        if (line.startsWith(channelPrefix)) {
+            if (!splitCsv(line.mid(channelPrefix.size()), fields, format) || fields.size() != 3)
                 return fail(tr("a channel needs an id, a name and a unit"));
             if (channels.size() >= limits.maxChannels)
                 return fail(tr("more than %1 channels").arg(limits.maxChannels));
             channels.append({fields[0], fields[1], fields[2]});
         } else if (!line.startsWith(QLatin1Char('#')) && !line.isEmpty()) {
-            if (!splitCsv(line, fields) || fields.size() != channels.size() + 2 ||
+            if (!splitCsv(line, fields, format) || fields.size() != channels.size() + 2 ||
                 fields.front() != QLatin1String("time_s") ||
                 fields.back() != QLatin1String("marker"))
                 return fail(tr("the column header does not match the channels"));
@@ -192,10 +247,10 @@ std::optional<SampleStore> SampleStore::readCsv(QIODevice &in, QString *error,
             return fail(tr("longer than %1 bytes").arg(limits.maxLineLength));
         if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
             continue;
-        if (!splitCsv(line, fields) || fields.size() != channels.size() + 2)
+        if (!splitCsv(line, fields, format) || fields.size() != channels.size() + 2)
             return fail(tr("expected %1 columns").arg(channels.size() + 2));
         double t = 0;
-        if (!parseNumber(fields[0], t) || !std::isfinite(t))
+        if (!parseNumber(fields[0], t, format) || !std::isfinite(t))
             return fail(tr("'%1' is not a time").arg(fields[0]));
         bool anyValue = false;
         for (qsizetype c = 1; c <= channels.size(); ++c)
@@ -214,7 +269,7 @@ std::optional<SampleStore> SampleStore::readCsv(QIODevice &in, QString *error,
         times.push_back(t);
         for (qsizetype c = 1; c <= channels.size(); ++c) {
             float v = std::numeric_limits<float>::quiet_NaN();
-            if (!fields[c].trimmed().isEmpty() && !parseNumber(fields[c], v))
+            if (!fields[c].trimmed().isEmpty() && !parseNumber(fields[c], v, format))
                 return fail(tr("'%1' is not a number").arg(fields[c]));
             values.push_back(v);
         }

@@ -237,9 +237,16 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
 
 namespace {
 
-QString csvField(const QString &text)
+// German files use ';' between fields and ',' as decimal sign, English ones ',' and '.' (what
+// spreadsheets expect in each); the first line says which (German and English issue).
+QChar csvSeparator(vt::dev::Language language)
 {
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) &&
+    return language == vt::dev::Language::German ? QLatin1Char(';') : QLatin1Char(',');
+}
+
+QString csvField(const QString &text, QChar separator)
+{
+    if (!text.contains(separator) && !text.contains(QLatin1Char('"')) &&
         !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r')))
         return text;
     QString quoted = text;
@@ -272,18 +279,30 @@ bool finish(QTextStream &stream, QIODevice &out, QString *error)
 bool TelegramLog::writeCsv(QIODevice &out, const SummaryOptions &options,
                            const TelegramFilter &filter, QString *error) const
 {
+    const bool german = options.language == vt::dev::Language::German;
+    const QChar sep = csvSeparator(options.language);
     QTextStream s(&out);
-    s << "seq,time_s,wall_clock_utc,direction,link,protocol,module,bytes,status,summary,note\n";
+    // The statement line is in the file's language, not the UI's: it must agree with the
+    // separator and decimal sign the file uses.
+    s << (german ? "# ValveTune-Telegrammprotokoll. Trennzeichen: Semikolon (;). Dezimalzeichen: "
+                   "Komma (,). Kodierung: UTF-8.\n"
+                 : "# ValveTune telegram log. Separator: comma (,). Decimal sign: point (.). "
+                   "Encoding: UTF-8.\n");
+    const QStringList header{"seq",    "time_s", "wall_clock_utc", "direction", "link", "protocol",
+                             "module", "bytes",  "status",         "summary",   "note"};
+    s << header.join(sep) << '\n';
     for (const TelegramRecord &r : m_records) {
         if (!filter.accepts(r))
             continue;
-        s << r.seq << ',' << secondsText(r.monotonicNs, 9) << ','
-          << r.wallClock.toUTC().toString(Qt::ISODateWithMs) << ','
-          << (r.direction == vt::dev::Direction::Request ? "request" : "response") << ','
-          << csvField(r.link) << ',' << csvField(r.protocol) << ','
-          << (r.module >= 0 ? QString::number(r.module) : QString()) << ',' << hexText(r.bytes)
-          << ',' << statusKey(r.status) << ',' << csvField(summary(r, options)) << ','
-          << csvField(r.note) << '\n';
+        QString seconds = secondsText(r.monotonicNs, 9);
+        if (german)
+            seconds.replace(QLatin1Char('.'), QLatin1Char(','));
+        s << r.seq << sep << seconds << sep << r.wallClock.toUTC().toString(Qt::ISODateWithMs)
+          << sep << (r.direction == vt::dev::Direction::Request ? "request" : "response") << sep
+          << csvField(r.link, sep) << sep << csvField(r.protocol, sep) << sep
+          << (r.module >= 0 ? QString::number(r.module) : QString()) << sep << hexText(r.bytes)
+          << sep << statusKey(r.status) << sep << csvField(summary(r, options), sep) << sep
+          << csvField(r.note, sep) << '\n';
     }
     return finish(s, out, error);
 }

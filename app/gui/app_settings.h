@@ -35,6 +35,8 @@ public:
     void setRecentFiles(const QStringList &files);
 
     void sync();
+    // The underlying store, for widgets that remember their own group (connect dialog).
+    QSettings &store() { return *m_settings; }
 
 private:
     std::unique_ptr<QSettings> m_settings;

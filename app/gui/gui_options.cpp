@@ -1,5 +1,8 @@
 #include "gui_options.h"
 
+#include "dict/dictionary_loader.h"
+#include "model/session/sim_endpoint.h"
+
 #include "language.h"
 
 #include <QCommandLineParser>
@@ -54,16 +57,22 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
             return out;
         }
     }
-    // The simulator and parameter files arrive with their own milestones; until then the
-    // options are recognised and refused with a clear message instead of being ignored.
-    for (const QCommandLineOption *o : {&simulate, &open}) {
-        if (parser.isSet(*o)) {
-            out.error = QStringLiteral("--%1 is not available in this version yet").arg(o->names().first());
+    if (parser.isSet(simulate)) {
+        out.simulate = parser.value(simulate);
+        const auto spec = model::parseSimSpec(out.simulate);
+        QString problem = spec.ok() ? QString() : spec.error();
+        if (spec.ok() && !dev::builtinDictionaries()->find(spec->family))
+            problem = QStringLiteral("unknown family '%1' (valvetune-cli dictionary lists them)")
+                          .arg(QString::fromStdString(spec->family));
+        if (!problem.isEmpty()) {
+            out.error = QStringLiteral("--simulate: %1").arg(problem);
             out.exitNow = true;
             out.exitCode = 2;
             return out;
         }
     }
+    if (parser.isSet(open))
+        out.openFile = parser.value(open);
     return out;
 }
 

@@ -1,18 +1,27 @@
 #include "main_window.h"
 
 #include "app_settings.h"
+#include "device_controller.h"
+#include "dict/dictionary_loader.h"
+#include "file_controller.h"
 #include "language.h"
 #include "model/recent_files.h"
 #include "transports/link.h"
 #include "widgets/about_dialog.h"
+#include "widgets/editor/node_view.h"
+#include "widgets/editor/parameter_editor.h"
+#include "workspace.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <QUndoStack>
 
 namespace vt::app {
 namespace {
@@ -33,11 +42,14 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     : QMainWindow(parent), m_settings(settings), m_language(language)
 {
     setObjectName(QStringLiteral("MainWindow"));
+    m_workspace = new Workspace(*dev::builtinDictionaries(), this);
     m_recent = new model::RecentFiles(model::RecentFiles::kDefaultLimit, this);
     m_recent->setFiles(m_settings.recentFiles());
+    m_files = new FileController(*m_workspace, *m_recent, this);
+    m_device = new DeviceController(*m_workspace, m_settings, this);
 
-    m_welcome = hintLabel(this);
-    setCentralWidget(m_welcome);
+    m_editor = new ui::ParameterEditor(m_workspace->document(), this);
+    setCentralWidget(m_editor);
     createActions();
     createMenus();
     createDocks();
@@ -50,14 +62,18 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     connect(&m_language, &Language::languageChanged, this, [this](const QString &code) {
         m_english->setChecked(code == QLatin1String("en"));
         m_german->setChecked(code == QLatin1String("de"));
+        applyDocumentLanguage();
     });
     m_english->setChecked(m_language.current() != QLatin1String("de"));
     m_german->setChecked(m_language.current() == QLatin1String("de"));
+    applyDocumentLanguage();
+    connectWorkspace();
 
-    resize(1200, 800);
+    resize(1280, 820);
     restoreGeometry(m_settings.windowGeometry());
     restoreState(m_settings.windowState());
     retranslate();
+    updateActions();
 }
 
 MainWindow::~MainWindow() = default;
@@ -76,23 +92,33 @@ void MainWindow::createActions()
     m_save = make("actionSave", QKeySequence::Save);
     m_saveAs = make("actionSaveAs", QKeySequence::SaveAs);
     m_export = make("actionExport");
+    m_compareFile = make("actionCompareFile");
     m_quit = make("actionQuit", QKeySequence::Quit);
+    QUndoStack *undo = m_workspace->document().undoStack();
+    m_undo = undo->createUndoAction(this);
+    m_undo->setObjectName(QStringLiteral("actionUndo"));
+    m_undo->setShortcut(QKeySequence::Undo);
+    m_redo = undo->createRedoAction(this);
+    m_redo->setObjectName(QStringLiteral("actionRedo"));
+    m_redo->setShortcut(QKeySequence::Redo);
+    m_revertDevice = make("actionRevertDevice");
+    m_revertFile = make("actionRevertFile");
     m_connect = make("actionConnect");
     m_disconnect = make("actionDisconnect");
     m_readAll = make("actionReadAll");
     m_writeChanges = make("actionWriteChanges");
+    m_compareDevice = make("actionCompareDevice");
     m_scanNode = make("actionScanNode");
     m_foldWizard = make("actionFoldWizard");
+    m_liveValues = make("actionLiveValues");
+    m_liveValues->setCheckable(true);
+    m_liveValues->setChecked(true);
     m_about = make("actionAbout");
     m_english = make("actionEnglish");
     m_german = make("actionGerman");
 
-    // Features of later milestones: visible so users see what is coming, but disabled and
-    // labelled as not available rather than pretending to work.
-    m_notYetAvailable = {m_new, m_open, m_save, m_saveAs, m_export, m_connect, m_disconnect,
-                         m_readAll, m_writeChanges, m_scanNode, m_foldWizard};
-    for (QAction *a : m_notYetAvailable)
-        a->setEnabled(false);
+    // The fold wizard arrives with its own milestone: visible, disabled, and saying so.
+    m_foldWizard->setEnabled(false);
 
     auto *group = new QActionGroup(this);
     for (QAction *a : {m_english, m_german}) {
@@ -103,6 +129,21 @@ void MainWindow::createActions()
     connect(m_german, &QAction::triggered, this, [this] { chooseLanguage(QStringLiteral("de")); });
     connect(m_quit, &QAction::triggered, this, &QWidget::close);
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(m_new, &QAction::triggered, m_files, &FileController::newFile);
+    connect(m_open, &QAction::triggered, m_files, &FileController::open);
+    connect(m_save, &QAction::triggered, m_files, &FileController::save);
+    connect(m_saveAs, &QAction::triggered, m_files, &FileController::saveAs);
+    connect(m_export, &QAction::triggered, m_files, &FileController::exportCsv);
+    connect(m_compareFile, &QAction::triggered, m_files, &FileController::compareWithFile);
+    connect(m_revertDevice, &QAction::triggered, this, [this] { m_workspace->document().revertToDevice(); });
+    connect(m_revertFile, &QAction::triggered, this, [this] { m_workspace->document().revertToFile(); });
+    connect(m_connect, &QAction::triggered, m_device, &DeviceController::connectDialog);
+    connect(m_disconnect, &QAction::triggered, m_device, &DeviceController::disconnectFromDevice);
+    connect(m_readAll, &QAction::triggered, m_device, &DeviceController::readAll);
+    connect(m_writeChanges, &QAction::triggered, m_device, &DeviceController::writeChanges);
+    connect(m_compareDevice, &QAction::triggered, m_device, &DeviceController::compareWithDevice);
+    connect(m_scanNode, &QAction::triggered, m_device, &DeviceController::scan);
+    connect(m_liveValues, &QAction::toggled, this, [this](bool on) { m_workspace->setLivePollRate(on ? 2.0 : 0.0); });
 }
 
 void MainWindow::createMenus()
@@ -112,15 +153,21 @@ void MainWindow::createMenus()
     m_fileMenu->addActions({m_new, m_open, m_save, m_saveAs});
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recentMenu->setObjectName(QStringLiteral("menuRecent"));
-    m_fileMenu->addAction(m_export);
+    m_fileMenu->addActions({m_export, m_compareFile});
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
+
+    m_editMenu = menuBar()->addMenu(QString());
+    m_editMenu->setObjectName(QStringLiteral("menuEdit"));
+    m_editMenu->addActions({m_undo, m_redo});
+    m_editMenu->addSeparator();
+    m_editMenu->addActions({m_revertDevice, m_revertFile});
 
     m_deviceMenu = menuBar()->addMenu(QString());
     m_deviceMenu->setObjectName(QStringLiteral("menuDevice"));
     m_deviceMenu->addActions({m_connect, m_disconnect});
     m_deviceMenu->addSeparator();
-    m_deviceMenu->addActions({m_readAll, m_writeChanges});
+    m_deviceMenu->addActions({m_readAll, m_writeChanges, m_compareDevice, m_liveValues});
     m_deviceMenu->addSeparator();
     m_deviceMenu->addActions({m_scanNode, m_foldWizard});
 
@@ -139,25 +186,104 @@ void MainWindow::createMenus()
 
 void MainWindow::createDocks()
 {
-    auto dock = [this](const char *name, QLabel *&hint, Qt::DockWidgetArea area) {
+    auto dock = [this](const char *name, QWidget *content, Qt::DockWidgetArea area) {
         auto *d = new QDockWidget(this);
         d->setObjectName(QString::fromLatin1(name));
-        hint = hintLabel(d);
-        d->setWidget(hint);
+        content->setParent(d);
+        d->setWidget(content);
         addDockWidget(area, d);
         m_viewMenu->addAction(d->toggleViewAction());
         return d;
     };
-    m_parametersDock = dock("dockParameters", m_parametersHint, Qt::LeftDockWidgetArea);
+    m_nodeView = new ui::NodeView(m_workspace->document(), this);
+    m_nodeDock = dock("dockNode", m_nodeView, Qt::LeftDockWidgetArea);
+    m_monitorHint = hintLabel(this);
     m_monitorDock = dock("dockMonitor", m_monitorHint, Qt::RightDockWidgetArea);
+    m_telegramsHint = hintLabel(this);
     m_telegramsDock = dock("dockTelegrams", m_telegramsHint, Qt::BottomDockWidgetArea);
+    connect(m_nodeView, &ui::NodeView::moduleActivated, this, [this](int module) {
+        const auto &m = m_workspace->document().module(module);
+        if (!m.dictionary->params.empty())
+            m_editor->selectParameter(module, &m.dictionary->params.front());
+    });
+}
+
+void MainWindow::connectWorkspace()
+{
+    model::ParameterDocument &doc = m_workspace->document();
+    connect(m_files, &FileController::statusMessage, this, &MainWindow::showStatus);
+    connect(m_device, &DeviceController::statusMessage, this, &MainWindow::showStatus);
+    connect(doc.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(&doc, &model::ParameterDocument::filePathChanged, this, [this] {
+        updateTitle();
+        updateActions();
+    });
+    connect(&doc, &model::ParameterDocument::modulesReset, this, &MainWindow::updateActions);
+    connect(m_workspace, &Workspace::connecting, this, [this](const QString &description) {
+        m_linkState->setText(tr("Connecting to %1…").arg(description));
+        updateActions();
+    });
+    connect(m_workspace, &Workspace::connected, this, [this] {
+        m_linkState->setText(m_workspace->connection()->describe());
+        m_nodeView->setNodeText(m_workspace->connection()->describe());
+        showStatus(tr("Connected: %n module(s).", nullptr, static_cast<int>(m_workspace->modules().size())));
+        updateActions();
+        m_device->readAll(); // what the engineer does first anyway; the live d-values start with it
+    });
+    connect(m_workspace, &Workspace::connectFailed, this, [this](const QString &reason) {
+        m_linkState->setText(link::linkStateText(link::LinkState::Closed));
+        showStatus(tr("Connection failed: %1").arg(reason));
+        updateActions();
+    });
+    connect(m_workspace, &Workspace::disconnected, this, [this](const QString &reason) {
+        m_linkState->setText(link::linkStateText(link::LinkState::Closed));
+        m_nodeView->setNodeText(QString());
+        showStatus(reason.isEmpty() ? tr("Disconnected.") : tr("Connection lost: %1").arg(reason));
+        updateActions();
+    });
+}
+
+void MainWindow::updateActions()
+{
+    const bool connected = m_workspace->isConnected();
+    const bool busy = m_workspace->connection() && !connected;
+    const model::ParameterDocument &doc = m_workspace->document();
+    const bool hasModules = doc.moduleCount() > 0;
+    m_connect->setEnabled(!busy);
+    m_disconnect->setEnabled(m_workspace->connection() != nullptr);
+    m_readAll->setEnabled(connected);
+    m_writeChanges->setEnabled(connected);
+    m_compareDevice->setEnabled(connected);
+    m_scanNode->setEnabled(connected);
+    m_save->setEnabled(hasModules);
+    m_saveAs->setEnabled(hasModules);
+    m_export->setEnabled(hasModules);
+    m_compareFile->setEnabled(hasModules);
+    m_revertDevice->setEnabled(hasModules);
+    m_revertFile->setEnabled(doc.hasFile());
+}
+
+void MainWindow::updateTitle()
+{
+    const model::ParameterDocument &doc = m_workspace->document();
+    const QString name = doc.hasFile() ? QFileInfo(doc.filePath()).fileName() : tr("Untitled");
+    setWindowTitle(QStringLiteral("%1[*] — %2").arg(name, tr("ValveTune")));
+    setWindowModified(doc.isModified());
+}
+
+void MainWindow::showStatus(const QString &text) { statusBar()->showMessage(text, 8000); }
+
+void MainWindow::applyDocumentLanguage()
+{
+    m_workspace->document().setLanguage(m_language.current() == QLatin1String("de") ? dev::Language::German
+                                                                                    : dev::Language::English);
 }
 
 void MainWindow::retranslate()
 {
-    setWindowTitle(tr("ValveTune"));
     m_fileMenu->setTitle(tr("&File"));
     m_recentMenu->setTitle(tr("Open &Recent"));
+    m_editMenu->setTitle(tr("&Edit"));
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
@@ -167,28 +293,35 @@ void MainWindow::retranslate()
     m_open->setText(tr("&Open…"));
     m_save->setText(tr("&Save"));
     m_saveAs->setText(tr("Save &As…"));
-    m_export->setText(tr("&Export…"));
+    m_export->setText(tr("&Export CSV…"));
+    m_compareFile->setText(tr("Compare with &File…"));
     m_quit->setText(tr("&Quit"));
+    m_undo->setText(tr("&Undo"));
+    m_redo->setText(tr("&Redo"));
+    m_revertDevice->setText(tr("Revert to &Device"));
+    m_revertFile->setText(tr("Revert to &File"));
     m_connect->setText(tr("&Connect…"));
     m_disconnect->setText(tr("&Disconnect"));
     m_readAll->setText(tr("&Read All"));
     m_writeChanges->setText(tr("&Write Changes…"));
+    m_compareDevice->setText(tr("Compare with De&vice…"));
+    m_liveValues->setText(tr("&Live Display Values"));
     m_scanNode->setText(tr("&Scan Node"));
     m_foldWizard->setText(tr("&Fold Wizard…"));
     m_english->setText(QStringLiteral("English")); // language names stay in their own language
     m_german->setText(QStringLiteral("Deutsch"));
     m_about->setText(tr("&About ValveTune…"));
-    for (QAction *a : std::as_const(m_notYetAvailable))
-        a->setStatusTip(tr("Not available in this version yet"));
+    if (!m_foldWizard->isEnabled())
+        m_foldWizard->setStatusTip(tr("Not available in this version yet"));
 
-    m_parametersDock->setWindowTitle(tr("Parameters"));
+    m_nodeDock->setWindowTitle(tr("Node"));
     m_monitorDock->setWindowTitle(tr("Monitor"));
     m_telegramsDock->setWindowTitle(tr("Telegrams"));
-    m_parametersHint->setText(tr("The parameters of the connected device or the open file appear here."));
     m_monitorHint->setText(tr("Live values of the connected device are plotted here."));
     m_telegramsHint->setText(tr("Every telegram sent and received is listed here."));
-    m_welcome->setText(tr("No device connected and no parameter file open."));
-    m_linkState->setText(link::linkStateText(link::LinkState::Closed));
+    if (!m_workspace->connection())
+        m_linkState->setText(link::linkStateText(link::LinkState::Closed));
+    updateTitle();
     rebuildRecentMenu();
 }
 
@@ -201,9 +334,11 @@ void MainWindow::rebuildRecentMenu()
         return;
     }
     for (const QString &f : files) {
-        QAction *a = m_recentMenu->addAction(f);
-        a->setEnabled(false); // opening files arrives with the parameter-file milestone
-        a->setStatusTip(tr("Not available in this version yet"));
+        QAction *a = m_recentMenu->addAction(QDir::toNativeSeparators(f));
+        connect(a, &QAction::triggered, this, [this, f] {
+            if (m_files->maybeSave())
+                m_files->openPath(f);
+        });
     }
     m_recentMenu->addSeparator();
     connect(m_recentMenu->addAction(tr("Clear List")), &QAction::triggered, m_recent, &model::RecentFiles::clear);
@@ -238,7 +373,12 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
     saveLayout();
+    m_workspace->disconnectFromDevice();
     event->accept();
 }
 

@@ -1,8 +1,10 @@
-// MainWindow: the application shell — menus, the parameter / monitor / telegram docks, the
-// status bar with the link state, and the window layout and language kept in AppSettings.
-// Features arrive from their own classes; actions whose feature is not built yet stay
-// disabled and say so in their status tip. GUI thread only.
+// MainWindow: the application shell — menus, the parameter editor in the centre, the node,
+// monitor, telegram and linearisation docks, the status bar with the link state, and the window
+// layout and language kept in AppSettings. The work itself is done by the Workspace (document,
+// connection, telegram log) and the File/Device controllers. GUI thread only.
 #pragma once
+
+#include "model/session/connection.h"
 
 #include <QMainWindow>
 
@@ -11,14 +13,26 @@ class QDockWidget;
 class QLabel;
 class QMenu;
 
+namespace vt::dev {
+class DictionarySet;
+}
+
 namespace vt::model {
 class RecentFiles;
+}
+
+namespace vt::ui {
+class NodeView;
+class ParameterEditor;
 }
 
 namespace vt::app {
 
 class AppSettings;
+class DeviceController;
+class FileController;
 class Language;
+class Workspace;
 
 class MainWindow : public QMainWindow
 {
@@ -28,7 +42,11 @@ public:
     MainWindow(AppSettings &settings, Language &language, QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    QDockWidget *parametersDock() const { return m_parametersDock; }
+    Workspace &workspace() const { return *m_workspace; }
+    FileController &files() const { return *m_files; }
+    DeviceController &device() const { return *m_device; }
+    ui::ParameterEditor *editor() const { return m_editor; }
+    QDockWidget *nodeDock() const { return m_nodeDock; }
     QDockWidget *monitorDock() const { return m_monitorDock; }
     QDockWidget *telegramsDock() const { return m_telegramsDock; }
     QLabel *linkStateLabel() const { return m_linkState; }
@@ -44,17 +62,28 @@ private:
     void createActions();
     void createMenus();
     void createDocks();
+    void connectWorkspace();
     void retranslate();
     void rebuildRecentMenu();
     void chooseLanguage(const QString &code);
+    void applyDocumentLanguage();
+    void updateActions();
+    void updateTitle();
+    void showStatus(const QString &text);
     void showAbout();
 
     AppSettings &m_settings;
     Language &m_language;
+    Workspace *m_workspace = nullptr;
+    FileController *m_files = nullptr;
+    DeviceController *m_device = nullptr;
     model::RecentFiles *m_recent = nullptr;
+    ui::ParameterEditor *m_editor = nullptr;
+    ui::NodeView *m_nodeView = nullptr;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
     QMenu *m_deviceMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_languageMenu = nullptr;
@@ -65,25 +94,29 @@ private:
     QAction *m_save = nullptr;
     QAction *m_saveAs = nullptr;
     QAction *m_export = nullptr;
+    QAction *m_compareFile = nullptr;
     QAction *m_quit = nullptr;
+    QAction *m_undo = nullptr;
+    QAction *m_redo = nullptr;
+    QAction *m_revertDevice = nullptr;
+    QAction *m_revertFile = nullptr;
     QAction *m_connect = nullptr;
     QAction *m_disconnect = nullptr;
     QAction *m_readAll = nullptr;
     QAction *m_writeChanges = nullptr;
+    QAction *m_compareDevice = nullptr;
     QAction *m_scanNode = nullptr;
     QAction *m_foldWizard = nullptr;
+    QAction *m_liveValues = nullptr;
     QAction *m_english = nullptr;
     QAction *m_german = nullptr;
     QAction *m_about = nullptr;
-    QList<QAction *> m_notYetAvailable;
 
-    QDockWidget *m_parametersDock = nullptr;
+    QDockWidget *m_nodeDock = nullptr;
     QDockWidget *m_monitorDock = nullptr;
     QDockWidget *m_telegramsDock = nullptr;
-    QLabel *m_parametersHint = nullptr;
     QLabel *m_monitorHint = nullptr;
     QLabel *m_telegramsHint = nullptr;
-    QLabel *m_welcome = nullptr;
     QLabel *m_linkState = nullptr;
 };
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace vt::dev::canopen {
 namespace {
@@ -69,6 +70,15 @@ bool isKnownAbortCode(std::uint32_t code)
         if (a.code == code)
             return true;
     return false;
+}
+
+std::vector<std::uint32_t> knownAbortCodes()
+{
+    std::vector<std::uint32_t> codes;
+    codes.reserve(kAbortCodes.size());
+    for (const AbortCode &a : kAbortCodes)
+        codes.push_back(a.code);
+    return codes;
 }
 
 LocalText abortCodeText(std::uint32_t code)

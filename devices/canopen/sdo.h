@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace vt::dev::canopen {
 
@@ -119,5 +120,7 @@ LocalText commandText(const Sdo &sdo);
 // CiA 301 §7.2.4.3.17 SDO abort codes (abort_codes.cpp).
 LocalText abortCodeText(std::uint32_t code);
 bool isKnownAbortCode(std::uint32_t code);
+// Every code of that table, in table order (completeness tests walk it).
+std::vector<std::uint32_t> knownAbortCodes();
 
 } // namespace vt::dev::canopen

@@ -1,5 +1,7 @@
 // User-visible texts of the DSP-408 codecs and state machine, English and German, worded after
-// the ED1/SD1 PROFIBUS-DP manual (§4.2.2, §4.6, §4.8.2, §4.8.3).
+// the ED1/SD1 PROFIBUS-DP manual (§4.2.2, §4.6, §4.8.2, §4.8.3). The bit names D, H, M stay as the
+// profile names them (German readers know them from PASO); the German says what they mean, in the
+// same words as the ED1/SD7 dictionaries' db_ControlWord / db_StatusWord bits.
 #include "dsp408/pkw.h"
 #include "dsp408/pzd.h"
 #include "dsp408/state_machine.h"
@@ -50,10 +52,10 @@ LocalText pkwErrorText(std::uint16_t code)
 LocalText controlBitText(int bit)
 {
     switch (bit) {
-    case 0: return {"Disable (D): state DISABLED", "Disable (D): Zustand DISABLED"};
-    case 1: return {"Hold enable (H): state HOLD", "Hold enable (H): Zustand HOLD"};
+    case 0: return {"Disable (D): state DISABLED", "Disable (D): Zustand DISABLED (gesperrt)"};
+    case 1: return {"Hold enable (H): state HOLD", "Hold enable (H): Zustand HOLD (Halten)"};
     case 2: return {"Device mode active (M): state DEVICE_MODE_ACTIVE",
-                    "Device mode active (M): Zustand DEVICE_MODE_ACTIVE"};
+                    "Device mode active (M): Zustand DEVICE_MODE_ACTIVE (Gerätemodus aktiv)"};
     case 3: return {"Reset fault (R)", "Fehler quittieren (R)"};
     case 14: return {"Stop: the axis stays controlled in its current position",
                      "Stopp: die Achse bleibt in der aktuellen Position geregelt"};
@@ -64,9 +66,9 @@ LocalText controlBitText(int bit)
 LocalText statusBitText(int bit)
 {
     switch (bit) {
-    case 0: return {"Disable (D)", "Disable (D)"};
-    case 1: return {"Hold enable (H)", "Hold enable (H)"};
-    case 2: return {"Device mode active (M)", "Device mode active (M)"};
+    case 0: return {"Disable (D)", "Disable (D): Gerät gesperrt"};
+    case 1: return {"Hold enable (H)", "Hold enable (H): Halten freigegeben"};
+    case 2: return {"Device mode active (M)", "Device mode active (M): Gerätemodus aktiv"};
     case 3: return {"Ready (R)", "Bereit (R)"};
     case 4: return {"local control", "lokale Steuerung"};
     case 5: return {"warning", "Warnung"};

@@ -30,11 +30,15 @@ TEST(GuiOptions, HelpAndVersionExitWithoutAWindow)
     EXPECT_FALSE(parseGuiOptions({"valvetune"}).exitNow);
 }
 
-TEST(GuiOptions, FeaturesNotBuiltYetAreRefusedClearly)
+TEST(GuiOptions, SimulateAndOpenAreTakenAndCheckedForNonsense)
 {
-    for (const char *opt : {"--simulate", "--open"}) {
-        auto r = parseGuiOptions({"valvetune", opt, "x"});
-        EXPECT_EQ(r.exitCode, 2) << opt;
-        EXPECT_TRUE(r.error.contains("not available in this version yet")) << opt;
+    auto r = parseGuiOptions({"valvetune", "--simulate", "dma-pn-v51:3", "--open", "/tmp/x.vtpar"});
+    EXPECT_FALSE(r.exitNow);
+    EXPECT_EQ(r.simulate, "dma-pn-v51:3");
+    EXPECT_EQ(r.openFile, "/tmp/x.vtpar");
+    for (const char *bad : {"no-such-family", "dma-pn-v51:0", "dma-pn-v51:x"}) {
+        auto e = parseGuiOptions({"valvetune", "--simulate", bad});
+        EXPECT_EQ(e.exitCode, 2) << bad;
+        EXPECT_TRUE(e.error.startsWith("--simulate: ")) << bad;
     }
 }

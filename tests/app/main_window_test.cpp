@@ -53,24 +53,24 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
 {
     MainWindow w(settings, language);
     w.show();
-    EXPECT_EQ(menuTitles(w), (QStringList{"&File", "&Device", "&View", "&Language", "&Help"}));
-    EXPECT_EQ(actionTexts(w, "menuFile"),
-              (QStringList{"&New…", "&Open…", "&Save", "Save &As…", "Open &Recent", "&Export…", "&Quit"}));
-    EXPECT_EQ(actionTexts(w, "menuDevice"), (QStringList{"&Connect…", "&Disconnect", "&Read All",
-                                                        "&Write Changes…", "&Scan Node", "&Fold Wizard…"}));
-    EXPECT_EQ(actionTexts(w, "menuView"), (QStringList{"Parameters", "Monitor", "Telegrams"}));
+    EXPECT_EQ(menuTitles(w), (QStringList{"&File", "&Edit", "&Device", "&View", "&Language", "&Help"}));
+    EXPECT_EQ(actionTexts(w, "menuFile"), (QStringList{"&New…", "&Open…", "&Save", "Save &As…", "Open &Recent",
+                                                      "&Export CSV…", "Compare with &File…", "&Quit"}));
+    EXPECT_EQ(actionTexts(w, "menuDevice"),
+              (QStringList{"&Connect…", "&Disconnect", "&Read All", "&Write Changes…", "Compare with De&vice…",
+                           "&Live Display Values", "&Scan Node", "&Fold Wizard…"}));
+    EXPECT_EQ(actionTexts(w, "menuView"), (QStringList{"Node", "Monitor", "Telegrams"}));
     EXPECT_EQ(actionTexts(w, "menuLanguage"), (QStringList{"English", "Deutsch"}));
 
-    for (QDockWidget *d : {w.parametersDock(), w.monitorDock(), w.telegramsDock()}) {
+    for (QDockWidget *d : {w.nodeDock(), w.monitorDock(), w.telegramsDock()}) {
         ASSERT_NE(d, nullptr);
         EXPECT_TRUE(d->isVisible());
     }
     EXPECT_EQ(w.linkStateLabel()->text(), "Not connected");
-    // Features of later milestones are present but disabled, never pretending to work.
-    auto *connect = w.findChild<QAction *>("actionConnect");
-    ASSERT_NE(connect, nullptr);
-    EXPECT_FALSE(connect->isEnabled());
-    EXPECT_FALSE(connect->statusTip().isEmpty());
+    // Without a connection the device actions that need one are disabled.
+    EXPECT_TRUE(w.findChild<QAction *>("actionConnect")->isEnabled());
+    EXPECT_FALSE(w.findChild<QAction *>("actionReadAll")->isEnabled());
+    EXPECT_FALSE(w.findChild<QAction *>("actionSave")->isEnabled());
 }
 
 TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)
@@ -83,11 +83,11 @@ TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)
     QCoreApplication::processEvents(); // QApplication posts LanguageChange to every window
     EXPECT_EQ(language.current(), "de");
     EXPECT_TRUE(german->isChecked());
-    EXPECT_EQ(menuTitles(w), (QStringList{"&Datei", "&Gerät", "&Ansicht", "&Sprache", "&Hilfe"}));
-    EXPECT_EQ(actionTexts(w, "menuDevice"), (QStringList{"&Verbinden…", "&Trennen", "Alle &lesen",
-                                                        "Änderungen &schreiben…", "Knoten &abfragen",
-                                                        "&Knoten-Assistent…"}));
-    EXPECT_EQ(w.parametersDock()->windowTitle(), "Parameter");
+    EXPECT_EQ(menuTitles(w), (QStringList{"&Datei", "&Bearbeiten", "&Gerät", "&Ansicht", "&Sprache", "&Hilfe"}));
+    EXPECT_EQ(actionTexts(w, "menuDevice"),
+              (QStringList{"&Verbinden…", "&Trennen", "Alle &lesen", "Änderungen &schreiben…",
+                           "Mit &Gerät vergleichen…", "&Live-Anzeigewerte", "Knoten &abfragen", "&Knoten-Assistent…"}));
+    EXPECT_EQ(w.nodeDock()->windowTitle(), "Knoten");
     EXPECT_EQ(w.linkStateLabel()->text(), "Nicht verbunden");
     EXPECT_EQ(settings.language(), "de"); // the choice is remembered
 
@@ -109,7 +109,7 @@ TEST_F(Fixture, LayoutIsKeptInTheSettings)
     MainWindow again(settings, language);
     again.show();
     EXPECT_FALSE(again.telegramsDock()->isVisible());
-    EXPECT_TRUE(again.parametersDock()->isVisible());
+    EXPECT_TRUE(again.nodeDock()->isVisible());
     EXPECT_EQ(again.size(), QSize(900, 700));
 }
 

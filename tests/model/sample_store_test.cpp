@@ -3,6 +3,7 @@
 #include "model/sample_store.h"
 
 #include <QBuffer>
+#include <QLocale>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
@@ -235,8 +236,22 @@ TEST(SampleStore, MarkersAreSortedAndBounded)
 
 namespace {
 
-QByteArray csvOf(const SampleStore &s)
+// The CSV's separator and decimal sign follow the default QLocale (the app's language).
+class DefaultLocale
 {
+public:
+    explicit DefaultLocale(QLocale::Language language) { QLocale::setDefault(QLocale(language)); }
+    ~DefaultLocale() { QLocale::setDefault(m_saved); }
+    DefaultLocale(const DefaultLocale &) = delete;
+    DefaultLocale &operator=(const DefaultLocale &) = delete;
+
+private:
+    QLocale m_saved;
+};
+
+QByteArray csvOf(const SampleStore &s, QLocale::Language language = QLocale::English)
+{
+    const DefaultLocale locale(language);
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
     EXPECT_TRUE(s.writeCsv(buffer));
@@ -268,7 +283,9 @@ TEST(SampleStore, CsvRoundTripWithMarkers)
     s.addMarker(99.0, QStringLiteral("after the last sample"));
 
     const QByteArray csv = csvOf(s);
-    EXPECT_TRUE(csv.startsWith("# ValveTune samples,1\n# channel,d1.7,value 0,%\n"));
+    EXPECT_TRUE(csv.startsWith("# ValveTune samples,1\n"
+                               "# Separator: comma (,). Decimal sign: point (.). Encoding: UTF-8.\n"
+                               "# channel,d1.7,value 0,%\n"));
     EXPECT_TRUE(csv.contains("\ntime_s,d1.7,d1.8,d1.9,marker\n"));
     QString error;
     const std::optional<SampleStore> back = read(csv, &error);
@@ -288,7 +305,10 @@ TEST(SampleStore, CsvRoundTripWithMarkers)
     // A range export holds only the rows and markers of the range.
     QBuffer part;
     part.open(QIODevice::WriteOnly);
-    ASSERT_TRUE(s.writeCsv(part, s.timeAt(5), s.timeAt(14)));
+    {
+        const DefaultLocale english(QLocale::English);
+        ASSERT_TRUE(s.writeCsv(part, s.timeAt(5), s.timeAt(14)));
+    }
     const std::optional<SampleStore> range = read(part.data());
     ASSERT_TRUE(range.has_value());
     EXPECT_EQ(range->size(), 10);
@@ -307,7 +327,7 @@ TEST(SampleStore, CsvReaderIsBoundedAndRejectsGarbage)
     SampleCsvLimits fewRows;
     fewRows.maxRows = 10;
     EXPECT_FALSE(read(csv, &error, fewRows).has_value());
-    EXPECT_EQ(error, "line 15: more than 10 samples");
+    EXPECT_EQ(error, "line 16: more than 10 samples");
 
     SampleCsvLimits fewChannels;
     fewChannels.maxChannels = 1;
@@ -334,4 +354,65 @@ TEST(SampleStore, CsvReaderIsBoundedAndRejectsGarbage)
     const std::optional<SampleStore> empty = read(csvOf(SampleStore(channels(2), 5)));
     ASSERT_TRUE(empty.has_value());
     EXPECT_TRUE(empty->isEmpty());
+}
+
+// German and English issue: a German export uses ';' and decimal ',' and says so; it reads back
+// exactly, and so does a file of the first version (',' and '.', no statement line).
+TEST(SampleStore, GermanCsvUsesSemicolonAndDecimalCommaAndRoundTrips)
+{
+    QList<SampleChannel> ch = channels(2);
+    ch[0].name = QStringLiteral("Druck; A-Seite, \"roh\"");
+    SampleStore s(ch, 20);
+    for (int i = 0; i < 12; ++i)
+        appendRow(s, 0.125 * i + 1e-9, {i % 5 == 0 ? kNaN : -1.5 * i, 1e-7 * i});
+    s.addMarker(s.timeAt(3), QStringLiteral("C1.13 1,20 → 1,50; Test"));
+
+    const QByteArray csv = csvOf(s, QLocale::German);
+    EXPECT_TRUE(csv.startsWith(
+        "# ValveTune samples;1\n"
+        "# Trennzeichen: Semikolon (;). Dezimalzeichen: Komma (,). Kodierung: UTF-8.\n"
+        "# channel;d1.7;\"Druck; A-Seite, \"\"roh\"\"\";%\n"
+        "# channel;d1.8;value 1;%\n"
+        "time_s;d1.7;d1.8;marker\n"))
+        << csv.toStdString();
+    EXPECT_TRUE(csv.contains("\n0,125000001;-1,5;1e-07;\n")) << csv.toStdString();
+    EXPECT_FALSE(csv.contains("0.125")) << "no decimal point in a German file";
+    EXPECT_TRUE(csv.contains(";\"C1.13 1,20 → 1,50; Test\"\n")) << csv.toStdString();
+
+    QString error;
+    const std::optional<SampleStore> back = read(csv, &error);
+    ASSERT_TRUE(back.has_value()) << error.toStdString();
+    EXPECT_EQ(back->channels(), s.channels());
+    ASSERT_EQ(back->size(), s.size());
+    for (qsizetype i = 0; i < s.size(); ++i) {
+        EXPECT_EQ(back->timeAt(i), s.timeAt(i));
+        for (int c = 0; c < 2; ++c) {
+            const double a = s.valueAt(c, i);
+            const double b = back->valueAt(c, i);
+            EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << i << ' ' << c;
+        }
+    }
+    EXPECT_EQ(back->markers(), s.markers());
+
+    // A decimal point in a German file is refused, not read as a different number.
+    QByteArray pointed = csv;
+    pointed.append("5,5;1.5;2;\n");
+    EXPECT_FALSE(read(pointed, &error).has_value());
+    EXPECT_TRUE(error.endsWith("'1.5' is not a number")) << error.toStdString();
+}
+
+TEST(SampleStore, CsvOfTheFirstVersionStillReads)
+{
+    const QByteArray v1 = "# ValveTune samples,1\n# channel,d1.7,value 0,%\ntime_s,d1.7,marker\n"
+                          "0.5,1.25,\n0.75,,\"a, b\"\n1,-2.5e-3,\n";
+    QString error;
+    const std::optional<SampleStore> back = read(v1, &error);
+    ASSERT_TRUE(back.has_value()) << error.toStdString();
+    ASSERT_EQ(back->size(), 2);
+    EXPECT_EQ(back->timeAt(1), 1.0);
+    EXPECT_FLOAT_EQ(static_cast<float>(back->valueAt(0, 1)), -2.5e-3f);
+    ASSERT_EQ(back->markers().size(), 1u);
+    EXPECT_EQ(back->markers().front().text, "a, b");
+    EXPECT_FALSE(read("# ValveTune samples|1\ntime_s,marker\n", &error).has_value());
+    EXPECT_EQ(error, "line 1: not a ValveTune sample file");
 }

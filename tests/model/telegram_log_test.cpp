@@ -261,8 +261,10 @@ TEST(TelegramLog, CsvHasOneQuotedRowPerRecord)
 {
     TelegramLog log;
     fill(log);
-    const QStringList lines = exported(log, true).split(QLatin1Char('\n'));
-    ASSERT_EQ(lines.size(), 5); // header, 3 rows, trailing empty
+    QStringList lines = exported(log, true).split(QLatin1Char('\n'));
+    ASSERT_EQ(lines.size(), 6); // format statement, header, 3 rows, trailing empty
+    EXPECT_EQ(lines.takeFirst(), "# ValveTune telegram log. Separator: comma (,). Decimal sign: "
+                                 "point (.). Encoding: UTF-8.");
     EXPECT_EQ(lines[0],
               "seq,time_s,wall_clock_utc,direction,link,protocol,module,bytes,status,summary,note");
     EXPECT_EQ(
@@ -277,6 +279,29 @@ TEST(TelegramLog, CsvHasOneQuotedRowPerRecord)
     EXPECT_EQ(lines[3], "2,1.100000000,2024-05-01T10:00:00.350Z,response,tcp "
                         "127.0.0.1:502,modbus-tcp,,,timeout,no reply,");
     EXPECT_TRUE(lines[4].isEmpty());
+}
+
+// German and English issue: a German export uses ';' between fields and ',' as decimal sign, and
+// its first line says so.
+TEST(TelegramLog, GermanCsvUsesSemicolonAndDecimalComma)
+{
+    TelegramLog log;
+    fill(log);
+    QStringList lines = exported(log, true, {}, vt::dev::Language::German).split(QLatin1Char('\n'));
+    ASSERT_EQ(lines.size(), 6);
+    EXPECT_EQ(lines[0], "# ValveTune-Telegrammprotokoll. Trennzeichen: Semikolon (;). "
+                        "Dezimalzeichen: Komma (,). Kodierung: UTF-8.");
+    EXPECT_EQ(lines[1],
+              "seq;time_s;wall_clock_utc;direction;link;protocol;module;bytes;status;summary;note");
+    EXPECT_TRUE(
+        lines[2].startsWith("0;1,000345678;2024-05-01T10:00:00.250Z;request;serial "
+                            "/dev/ttyUSB0 19200 8E1;modbus-rtu;1;01 03 00 07 00 07 B5 C9;ok;"))
+        << lines[2].toStdString();
+    // The note holds a quote, so it is quoted; its comma needs no quoting of its own.
+    EXPECT_TRUE(lines[3].endsWith(";\"truncated, \"\"CNT\"\" says 14\"")) << lines[3].toStdString();
+    EXPECT_TRUE(lines[4].startsWith(
+        "2;1,100000000;2024-05-01T10:00:00.350Z;response;tcp 127.0.0.1:502;modbus-tcp;;;timeout;"))
+        << lines[4].toStdString();
 }
 
 TEST(TelegramLog, TextDumpIsReadable)
@@ -301,15 +326,16 @@ TEST(TelegramLog, FiltersSelectWhatIsSaved)
     fill(log);
     TelegramFilter errors;
     errors.errorsOnly = true;
-    EXPECT_EQ(exported(log, true, errors).count(QLatin1Char('\n')), 3); // header + 2 errors
+    // Each count: the format statement, the header, then the records the filter accepts.
+    EXPECT_EQ(exported(log, true, errors).count(QLatin1Char('\n')), 4); // 2 errors
     TelegramFilter tcp;
     tcp.protocol = QStringLiteral("modbus-tcp");
-    EXPECT_EQ(exported(log, true, tcp).count(QLatin1Char('\n')), 2);
+    EXPECT_EQ(exported(log, true, tcp).count(QLatin1Char('\n')), 3);
     TelegramFilter module;
     module.module = 1;
-    EXPECT_EQ(exported(log, true, module).count(QLatin1Char('\n')), 3);
+    EXPECT_EQ(exported(log, true, module).count(QLatin1Char('\n')), 4);
     module.module = 2;
-    EXPECT_EQ(exported(log, true, module).count(QLatin1Char('\n')), 1);
+    EXPECT_EQ(exported(log, true, module).count(QLatin1Char('\n')), 2);
 }
 
 TEST(TelegramLog, WriteErrorsAreReported)

@@ -1,0 +1,117 @@
+#include "device_controller.h"
+
+#include "app_settings.h"
+#include "model/params/device_jobs.h"
+#include "widgets/editor/compare_dialog.h"
+#include "widgets/editor/write_dialog.h"
+#include "workspace.h"
+
+#include <QProgressDialog>
+
+namespace vt::app {
+
+DeviceController::DeviceController(Workspace &workspace, AppSettings &settings, QWidget *window)
+    : QObject(window), m_workspace(workspace), m_settings(settings), m_window(window)
+{
+}
+
+DeviceController::~DeviceController() = default;
+
+void DeviceController::connectDialog()
+{
+    // The connect dialog (widgets/connect) is wired in by the main window when present.
+    emit statusMessage(tr("Use the connect dialog."));
+}
+
+void DeviceController::connectTo(const model::ConnectionSpec &spec) { m_workspace.connectTo(spec); }
+
+void DeviceController::disconnectFromDevice() { m_workspace.disconnectFromDevice(); }
+
+void DeviceController::scan()
+{
+    if (!m_workspace.isConnected())
+        return;
+    auto *progress = new QProgressDialog(tr("Scanning the node…"), tr("Cancel"), 0, 1, m_window);
+    progress->setAttribute(Qt::WA_DeleteOnClose);
+    progress->setWindowModality(Qt::WindowModal);
+    progress->setMinimumDuration(300);
+    connect(&m_workspace, &Workspace::scanProgress, progress, [progress](int done, int total) {
+        progress->setMaximum(total);
+        progress->setValue(done);
+    });
+    connect(&m_workspace, &Workspace::scanFinished, progress, [this, progress](int found) {
+        progress->close();
+        emit statusMessage(tr("Scan found %n module(s).", nullptr, found));
+    });
+    connect(progress, &QProgressDialog::canceled, this, [this] { m_workspace.disconnectFromDevice(); });
+    m_workspace.scan();
+}
+
+void DeviceController::readAll()
+{
+    if (!m_workspace.isConnected() || m_read)
+        return;
+    m_read = new model::ReadAllJob(m_workspace.connection()->access(), m_workspace.document(), this);
+    m_progress = new QProgressDialog(tr("Reading all parameters…"), tr("Cancel"), 0, 1, m_window);
+    m_progress->setObjectName(QStringLiteral("readAllProgress"));
+    m_progress->setAttribute(Qt::WA_DeleteOnClose);
+    m_progress->setWindowModality(Qt::WindowModal);
+    m_progress->setMinimumDuration(300);
+    connect(m_read, &model::ReadAllJob::progress, m_progress.data(), [this](int done, int total) {
+        if (!m_progress)
+            return;
+        m_progress->setMaximum(qMax(total, 1));
+        m_progress->setValue(done);
+    });
+    connect(m_progress.data(), &QProgressDialog::canceled, m_read, &model::ReadAllJob::cancel);
+    connect(m_read, &model::ReadAllJob::finished, this, [this](bool complete) {
+        if (m_progress)
+            m_progress->close();
+        const QStringList problems = m_read->problems();
+        m_read->deleteLater();
+        m_read = nullptr;
+        emit statusMessage(complete ? tr("All parameters read.")
+                                    : tr("Read incomplete: %1").arg(problems.isEmpty() ? tr("cancelled")
+                                                                                        : problems.join(QStringLiteral("; "))));
+        emit readFinished(complete);
+    });
+    m_read->start();
+}
+
+ui::WriteDialog *DeviceController::writeChanges()
+{
+    if (!m_workspace.isConnected())
+        return nullptr;
+    model::ParameterDocument &doc = m_workspace.document();
+    std::vector<model::ModuleWriteResult> plan;
+    for (int i = 0; i < doc.moduleCount(); ++i)
+        if (doc.module(i).online) {
+            auto items = doc.pendingWrites(i);
+            if (!items.empty())
+                plan.push_back({i, std::move(items)});
+        }
+    if (plan.empty()) {
+        emit statusMessage(tr("Nothing to write: the editor and the device agree."));
+        return nullptr;
+    }
+    auto *dialog = new ui::WriteDialog(m_workspace.connection()->access(), doc, std::move(plan), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &ui::WriteDialog::writeFinished, this, [this, dialog](bool complete) {
+        for (const model::ModuleWriteResult &r : dialog->job().results())
+            emit written(m_workspace.document().module(r.module).address, r.items);
+        emit statusMessage(complete ? tr("Every change written and verified.")
+                                    : tr("Not every change reached the device; see the write results."));
+    });
+    dialog->open();
+    return dialog;
+}
+
+void DeviceController::compareWithDevice()
+{
+    auto *dialog = new ui::CompareDialog(m_workspace.document(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->compareWithDevice();
+    dialog->open();
+}
+
+} // namespace vt::app

@@ -1,0 +1,169 @@
+#include "file_controller.h"
+
+#include "model/params/param_file_io.h"
+#include "model/recent_files.h"
+#include "widgets/editor/compare_dialog.h"
+#include "widgets/editor/map_report_dialog.h"
+#include "workspace.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QStandardPaths>
+
+namespace vt::app {
+namespace {
+
+QString fileFilter() { return FileController::tr("ValveTune parameter files (*.vtpar);;All files (*)"); }
+
+} // namespace
+
+FileController::FileController(Workspace &workspace, model::RecentFiles &recent, QWidget *window)
+    : QObject(window), m_workspace(workspace), m_recent(recent), m_window(window)
+{
+}
+
+dev::Language FileController::language() const { return m_workspace.document().language(); }
+
+void FileController::fail(const QString &message)
+{
+    m_lastError = message;
+    emit statusMessage(message);
+    if (!m_promptHook) // interactive: tell the user; tests read lastError()
+        QMessageBox::warning(m_window, tr("ValveTune"), message);
+}
+
+bool FileController::maybeSave()
+{
+    if (!m_workspace.document().isModified())
+        return true;
+    const QMessageBox::StandardButton answer =
+        m_promptHook ? m_promptHook()
+                     : QMessageBox::question(m_window, tr("Unsaved Changes"),
+                                             tr("The parameters have unsaved changes. Save them first?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                             QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void FileController::newFile()
+{
+    // The New-file dialog (family, version, mode, modules) arrives with widgets/files; until
+    // then a new document starts from the connected node's modules or is not offered.
+    emit statusMessage(tr("Choose File ▸ New from the dialog."));
+}
+
+void FileController::open()
+{
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open Parameter File"), QString(), fileFilter());
+    if (!path.isEmpty())
+        openPath(path);
+}
+
+bool FileController::openPath(const QString &path)
+{
+    auto file = model::readParamFile(path, language());
+    if (!file.ok()) {
+        m_recent.remove(path);
+        fail(file.error());
+        return false;
+    }
+    model::ParameterDocument &doc = m_workspace.document();
+    doc.loadFile(*file, m_workspace.dictionaries(), QFileInfo(path).absoluteFilePath());
+    // Still connected: the file's modules pair with the node's again.
+    if (m_workspace.isConnected())
+        doc.attachDevice(m_workspace.modules());
+    m_recent.add(QFileInfo(path).absoluteFilePath());
+    emit statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
+    if (ui::MapReportDialog::needed(doc) && !m_promptHook) {
+        auto *report = new ui::MapReportDialog(doc, m_window);
+        report->setAttribute(Qt::WA_DeleteOnClose);
+        report->open();
+    }
+    return true;
+}
+
+bool FileController::save()
+{
+    const model::ParameterDocument &doc = m_workspace.document();
+    return doc.hasFile() ? saveTo(doc.filePath()) : saveAs();
+}
+
+bool FileController::saveAs()
+{
+    const model::ParameterDocument &doc = m_workspace.document();
+    QString suggestion = doc.filePath();
+    if (suggestion.isEmpty())
+        suggestion = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) + QStringLiteral("/parameters.vtpar");
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Parameter File"), suggestion, fileFilter());
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".vtpar");
+    return saveTo(path);
+}
+
+bool FileController::saveTo(const QString &path)
+{
+    model::ParameterDocument &doc = m_workspace.document();
+    if (doc.moduleCount() == 0 && doc.unknownFamilies().empty()) {
+        fail(tr("There are no parameters to save."));
+        return false;
+    }
+    const std::string tool = "ValveTune " + QCoreApplication::applicationVersion().toStdString();
+    if (auto error = model::saveParamFile(path, doc.toParamFile(tool), m_workspace.dictionaries(), language())) {
+        fail(*error);
+        return false;
+    }
+    doc.markSaved(QFileInfo(path).absoluteFilePath());
+    m_recent.add(QFileInfo(path).absoluteFilePath());
+    emit statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+void FileController::exportCsv()
+{
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Export CSV"), QString(),
+                                                tr("CSV files (*.csv);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".csv");
+    exportCsvTo(path);
+}
+
+bool FileController::exportCsvTo(const QString &path)
+{
+    const model::ParameterDocument &doc = m_workspace.document();
+    if (auto error = model::exportParamCsv(path, doc.toParamFile({}), m_workspace.dictionaries(), language())) {
+        fail(*error);
+        return false;
+    }
+    emit statusMessage(language() == dev::Language::German
+                           ? tr("Exported %1 (separator ';', decimal comma)").arg(QDir::toNativeSeparators(path))
+                           : tr("Exported %1 (separator ',', decimal point)").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+void FileController::compareWithFile()
+{
+    const QString path = QFileDialog::getOpenFileName(m_window, tr("Compare with File"), QString(), fileFilter());
+    if (path.isEmpty())
+        return;
+    auto file = model::readParamFile(path, language());
+    if (!file.ok()) {
+        fail(file.error());
+        return;
+    }
+    auto *dialog = new ui::CompareDialog(m_workspace.document(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->compareWithFile(*file, QFileInfo(path).fileName());
+    dialog->open();
+}
+
+} // namespace vt::app

@@ -1,0 +1,61 @@
+// ParamModule: the values ValveTune holds for one module in three layers — what the device holds
+// (last read or verified write), what the open file holds, and the working value the user edits
+// (what Save writes and Write sends). Plain value; owned by the ParameterDocument.
+#pragma once
+
+#include "dict/dictionary.h"
+#include "dict/raw_value.h"
+#include "files/param_file.h"
+#include "files/param_file_map.h"
+
+#include <QString>
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace vt::model {
+
+enum class Layer { Working, Device, File };
+
+struct ParamModule
+{
+    int address = 0;
+    const dev::Dictionary *dictionary = nullptr;
+    std::string version; // "51.02"; chooses the applicable rows
+    std::string mode;    // HCS E00, "3"
+    QString identity;    // for people: "dma-pn-v51 51.02, mode 3"
+    QString label;       // the user's name for the module, from the file
+    bool online = false; // identified on the connected node
+    int versRaw = -1;
+    std::map<const dev::ParamMeta *, dev::RawValue> device, file, working;
+    // The module record as loaded: rows and keys this dictionary does not apply are written back
+    // from here on save (nothing is dropped).
+    std::optional<dev::files::ModuleRecord> record;
+    std::optional<dev::files::MapReport> mapReport;
+
+    const std::map<const dev::ParamMeta *, dev::RawValue> &layer(Layer which) const
+    {
+        return which == Layer::Device ? device : which == Layer::File ? file : working;
+    }
+    std::optional<dev::RawValue> value(const dev::ParamMeta *row, Layer which) const
+    {
+        const auto &values = layer(which);
+        const auto it = values.find(row);
+        return it == values.end() ? std::nullopt : std::optional<dev::RawValue>(it->second);
+    }
+    // Rows that apply to this module's version and mode and can be accessed.
+    bool active(const dev::ParamMeta &row) const
+    {
+        return row.access != dev::Access::Inactive && row.access != dev::Access::NotImplemented &&
+               row.appliesTo(version.substr(0, version.find('.')), mode);
+    }
+};
+
+// Equal raw values (numbers compared exactly: both come from the same integer or float32 grid).
+inline bool sameValue(const std::optional<dev::RawValue> &a, const std::optional<dev::RawValue> &b)
+{
+    return a.has_value() == b.has_value() && (!a || *a == *b);
+}
+
+} // namespace vt::model

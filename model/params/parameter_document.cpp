@@ -1,0 +1,398 @@
+#include "parameter_document.h"
+
+#include "dict/cooking.h"
+#include "value_commands.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <set>
+
+namespace vt::model {
+namespace {
+
+QString moduleIdentity(const dev::Dictionary &dict, const std::string &version, const std::string &mode)
+{
+    QString text = QString::fromStdString(dict.family);
+    if (!version.empty())
+        text += QLatin1Char(' ') + QString::fromStdString(version);
+    if (!mode.empty())
+        text += QCoreApplication::translate("vt::model::ParameterDocument", ", mode %1").arg(QString::fromStdString(mode));
+    return text;
+}
+
+dev::LocalText both(const char *en, const char *de) { return dev::LocalText{en, de}; }
+
+std::string valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev::Language lang)
+{
+    if (const auto *text = std::get_if<std::string>(&value))
+        return "\"" + *text + "\"";
+    return dev::formatValue(row, dev::rawNumber(value), lang);
+}
+
+} // namespace
+
+ParameterDocument::ParameterDocument(QObject *parent) : QObject(parent) {}
+
+ParameterDocument::~ParameterDocument() = default;
+
+int ParameterDocument::findModule(int address) const
+{
+    for (std::size_t i = 0; i < m_modules.size(); ++i)
+        if (m_modules[i].address == address)
+            return static_cast<int>(i);
+    return -1;
+}
+
+void ParameterDocument::setLanguage(dev::Language language)
+{
+    if (language == m_language)
+        return;
+    m_language = language;
+    emit languageChanged();
+}
+
+void ParameterDocument::resetModules(std::vector<ParamModule> modules)
+{
+    m_modules = std::move(modules);
+    emit modulesReset();
+}
+
+void ParameterDocument::clear()
+{
+    m_undo.clear();
+    m_unmapped.clear();
+    m_fileHeader = {};
+    m_filePath.clear();
+    resetModules({});
+    emit filePathChanged(m_filePath);
+}
+
+void ParameterDocument::createNew(const dev::Dictionary &dictionary, const std::string &version,
+                                  const std::string &mode, const std::vector<int> &addresses)
+{
+    std::vector<ParamModule> modules;
+    for (int address : addresses) {
+        ParamModule m;
+        m.address = address;
+        m.dictionary = &dictionary;
+        m.version = version;
+        m.mode = mode;
+        m.identity = moduleIdentity(dictionary, version, mode);
+        for (const dev::ParamMeta &row : dictionary.params) {
+            if (row.defaultValue && !row.isString() && m.active(row))
+                m.working[&row] = *row.defaultValue;
+        }
+        modules.push_back(std::move(m));
+    }
+    m_undo.clear();
+    m_unmapped.clear();
+    m_fileHeader = {};
+    m_filePath.clear();
+    resetModules(std::move(modules));
+    emit filePathChanged(m_filePath);
+}
+
+void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)
+{
+    std::vector<ParamModule> modules = m_modules;
+    auto sameFamily = [](const ParamModule &m, const ModuleInfo &info) { return m.dictionary == info.dictionary; };
+    // A one-module file goes onto the one module of its family on the node, whatever its address.
+    if (modules.size() == 1 && infos.size() == 1 && !modules[0].online && sameFamily(modules[0], infos[0]))
+        modules[0].address = infos[0].address;
+    for (const ModuleInfo &info : infos) {
+        if (!info.dictionary)
+            continue;
+        auto it = std::find_if(modules.begin(), modules.end(), [&](const ParamModule &m) {
+            return m.address == info.address && sameFamily(m, info);
+        });
+        if (it == modules.end()) {
+            modules.push_back(ParamModule{});
+            it = std::prev(modules.end());
+            it->address = info.address;
+            it->dictionary = info.dictionary;
+        }
+        it->online = true;
+        it->version = info.identification.version;
+        it->mode = info.identification.mode;
+        it->versRaw = info.versRaw;
+        it->identity = info.identityText.isEmpty()
+                           ? moduleIdentity(*info.dictionary, it->version, it->mode)
+                           : info.identityText;
+    }
+    resetModules(std::move(modules));
+}
+
+void ParameterDocument::detachDevice()
+{
+    for (std::size_t i = 0; i < m_modules.size(); ++i) {
+        if (m_modules[i].online) {
+            m_modules[i].online = false;
+            emit moduleChanged(static_cast<int>(i));
+        }
+    }
+}
+
+void ParameterDocument::loadFile(const dev::files::ParamFile &file, const dev::DictionarySet &dictionaries,
+                                 const QString &path)
+{
+    std::vector<ParamModule> modules;
+    m_unmapped.clear();
+    for (const dev::files::ModuleRecord &record : file.modules) {
+        const dev::Dictionary *dict = dictionaries.find(record.family);
+        if (!dict) {
+            m_unmapped.push_back(record);
+            continue;
+        }
+        ParamModule m;
+        m.address = record.address;
+        m.dictionary = dict;
+        m.version = record.version;
+        m.mode = record.mode;
+        m.label = QString::fromStdString(record.label);
+        m.identity = moduleIdentity(*dict, record.version, record.mode);
+        m.record = record;
+        m.mapReport = dev::files::mapModule(record, *dict);
+        for (const dev::files::RowMapping &r : m.mapReport->rows) {
+            if (r.applies() && r.meta && r.row != dev::files::RowMapping::kNoRow) {
+                m.file[r.meta] = record.values[r.row].raw;
+                m.working[r.meta] = record.values[r.row].raw;
+            }
+        }
+        modules.push_back(std::move(m));
+    }
+    m_fileHeader = file;
+    m_fileHeader.modules.clear();
+    m_undo.clear();
+    m_filePath = path;
+    resetModules(std::move(modules));
+    emit filePathChanged(m_filePath);
+}
+
+dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) const
+{
+    dev::files::ParamFile file = m_fileHeader;
+    file.tool = tool;
+    if (file.created.empty())
+        file.created = dev::files::isoUtc(std::chrono::system_clock::now());
+    for (const ParamModule &m : m_modules) {
+        dev::files::ModuleRecord record = m.record.value_or(dev::files::ModuleRecord{});
+        record.address = m.address;
+        record.family = m.dictionary->family;
+        record.version = m.version;
+        record.mode = m.mode;
+        record.label = m.label.toStdString();
+        std::set<const dev::ParamMeta *> written;
+        for (dev::files::ValueRow &row : record.values) {
+            bool byAddress = false;
+            const dev::ParamMeta *meta = dev::files::findMeta(*m.dictionary, row, &byAddress);
+            const auto it = meta ? m.working.find(meta) : m.working.end();
+            if (it == m.working.end())
+                continue; // not applied here: written back as it was read
+            dev::files::ValueRow fresh = dev::files::makeValueRow(*meta, it->second);
+            fresh.extra = row.extra;
+            row = std::move(fresh);
+            written.insert(meta);
+        }
+        for (const dev::ParamMeta &meta : m.dictionary->params) {
+            const auto it = m.working.find(&meta);
+            if (it != m.working.end() && !written.count(&meta) && meta.access != dev::Access::Write)
+                record.values.push_back(dev::files::makeValueRow(meta, it->second));
+        }
+        file.modules.push_back(std::move(record));
+    }
+    for (const dev::files::ModuleRecord &record : m_unmapped)
+        file.modules.push_back(record);
+    std::sort(file.modules.begin(), file.modules.end(),
+              [](const auto &a, const auto &b) { return a.address < b.address; });
+    // Two modules of one address (a file module of another family beside the device's) cannot
+    // both be saved under that address: the later keeps its values under the next free one.
+    for (std::size_t i = 1; i < file.modules.size(); ++i)
+        if (file.modules[i].address <= file.modules[i - 1].address)
+            file.modules[i].address = file.modules[i - 1].address + 1;
+    return file;
+}
+
+void ParameterDocument::markSaved(const QString &path)
+{
+    const dev::files::ParamFile saved = toParamFile({});
+    for (ParamModule &m : m_modules) {
+        m.file = m.working;
+        for (const dev::files::ModuleRecord &record : saved.modules)
+            if (record.family == m.dictionary->family && record.address == m.address)
+                m.record = record;
+    }
+    m_fileHeader = saved;
+    m_fileHeader.modules.clear();
+    m_undo.setClean();
+    if (path != m_filePath) {
+        m_filePath = path;
+        emit filePathChanged(m_filePath);
+    }
+    for (int i = 0; i < moduleCount(); ++i)
+        emit moduleValuesChanged(i);
+}
+
+std::optional<dev::RawValue> ParameterDocument::value(int module, const dev::ParamMeta *row, Layer layer) const
+{
+    if (module < 0 || module >= moduleCount())
+        return std::nullopt;
+    return m_modules[static_cast<std::size_t>(module)].value(row, layer);
+}
+
+std::optional<dev::LocalText> ParameterDocument::edit(int module, const dev::ParamMeta *row, const dev::RawValue &value)
+{
+    if (module < 0 || module >= moduleCount() || !row)
+        return both("No such parameter.", "Diesen Parameter gibt es nicht.");
+    if (!row->writable())
+        return both("This parameter is read only.", "Dieser Parameter ist nur lesbar.");
+    if (row->isString() != dev::isText(value))
+        return row->isString() ? both("This parameter takes a text.", "Dieser Parameter nimmt einen Text.")
+                               : both("This parameter takes a number.", "Dieser Parameter nimmt eine Zahl.");
+    if (const auto *text = std::get_if<std::string>(&value)) {
+        if (row->length > 0 && text->size() > static_cast<std::size_t>(row->length))
+            return dev::LocalText{"At most " + std::to_string(row->length) + " characters.",
+                                  "Höchstens " + std::to_string(row->length) + " Zeichen."};
+    } else if (auto error = dev::checkRange(*row, dev::rawNumber(value))) {
+        return error->message;
+    }
+    const auto before = this->value(module, row);
+    if (sameValue(before, value))
+        return std::nullopt;
+    const QString text = tr("Set %1 to %2")
+                             .arg(QString::fromStdString(row->name),
+                                  QString::fromStdString(valueText(*row, value, m_language)));
+    m_undo.push(new SetValuesCommand(*this, {{module, row, before, value}}, text));
+    return std::nullopt;
+}
+
+void ParameterDocument::editMany(const std::vector<Change> &changes, const QString &undoText)
+{
+    std::vector<SetValuesCommand::Row> rows;
+    for (const Change &c : changes) {
+        const auto before = value(c.module, c.row);
+        if (!sameValue(before, c.value))
+            rows.push_back({c.module, c.row, before, c.value});
+    }
+    if (!rows.empty())
+        m_undo.push(new SetValuesCommand(*this, std::move(rows), undoText));
+}
+
+void ParameterDocument::setWorking(int module, const dev::ParamMeta *row, const std::optional<dev::RawValue> &value)
+{
+    if (module < 0 || module >= moduleCount() || !row)
+        return;
+    auto &working = m_modules[static_cast<std::size_t>(module)].working;
+    if (value)
+        working[row] = *value;
+    else
+        working.erase(row);
+    emit valueChanged(module, row);
+}
+
+void ParameterDocument::applyRead(int module, const std::vector<RowValue> &values)
+{
+    if (module < 0 || module >= moduleCount())
+        return;
+    ParamModule &m = m_modules[static_cast<std::size_t>(module)];
+    std::vector<const dev::ParamMeta *> touched;
+    for (const RowValue &v : values) {
+        if (!v.row)
+            continue;
+        const auto oldDevice = m.value(v.row, Layer::Device);
+        const auto working = m.value(v.row, Layer::Working);
+        const bool follows = !v.row->writable() || !working ||
+                             (!m.file.count(v.row) && sameValue(working, oldDevice));
+        if (sameValue(oldDevice, v.value) && (!follows || sameValue(working, v.value)))
+            continue;
+        m.device[v.row] = v.value;
+        if (follows)
+            m.working[v.row] = v.value;
+        touched.push_back(v.row);
+    }
+    if (touched.size() > 16) {
+        emit moduleValuesChanged(module);
+    } else {
+        for (const dev::ParamMeta *row : touched)
+            emit valueChanged(module, row);
+    }
+}
+
+void ParameterDocument::applyWritten(int module, const std::vector<WriteItem> &items)
+{
+    if (module < 0 || module >= moduleCount())
+        return;
+    ParamModule &m = m_modules[static_cast<std::size_t>(module)];
+    for (const WriteItem &item : items) {
+        if (!item.row || !isOnDevice(item.status))
+            continue;
+        m.device[item.row] = item.readBack.value_or(item.value);
+        emit valueChanged(module, item.row);
+    }
+}
+
+std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
+{
+    std::vector<WriteItem> items;
+    if (module < 0 || module >= moduleCount())
+        return items;
+    const ParamModule &m = m_modules[static_cast<std::size_t>(module)];
+    for (const dev::ParamMeta &row : m.dictionary->params) {
+        if (!row.writable() || !m.active(row))
+            continue;
+        const auto working = m.value(&row, Layer::Working);
+        const auto device = m.value(&row, Layer::Device);
+        if (!working || sameValue(working, device))
+            continue;
+        WriteItem item;
+        item.row = &row;
+        item.value = *working;
+        item.before = device;
+        items.push_back(std::move(item));
+    }
+    return items;
+}
+
+bool ParameterDocument::differsFromDevice(int module, const dev::ParamMeta *row) const
+{
+    const auto device = value(module, row, Layer::Device);
+    return device && !sameValue(value(module, row), device);
+}
+
+bool ParameterDocument::changed(int module, const dev::ParamMeta *row) const
+{
+    if (!row || !row->writable())
+        return false;
+    const auto working = value(module, row);
+    if (!working)
+        return false;
+    if (const auto file = value(module, row, Layer::File))
+        return !sameValue(working, file);
+    if (const auto device = value(module, row, Layer::Device))
+        return !sameValue(working, device);
+    if (row->defaultValue && !row->isString())
+        return !sameValue(working, dev::RawValue{*row->defaultValue});
+    return false;
+}
+
+void ParameterDocument::revertToDevice()
+{
+    std::vector<Change> changes;
+    for (int i = 0; i < moduleCount(); ++i)
+        for (const auto &[row, value] : m_modules[static_cast<std::size_t>(i)].device)
+            if (row->writable())
+                changes.push_back({i, row, value});
+    editMany(changes, tr("Revert to device"));
+}
+
+void ParameterDocument::revertToFile()
+{
+    std::vector<Change> changes;
+    for (int i = 0; i < moduleCount(); ++i)
+        for (const auto &[row, value] : m_modules[static_cast<std::size_t>(i)].file)
+            if (row->writable())
+                changes.push_back({i, row, value});
+    editMany(changes, tr("Revert to file"));
+}
+
+} // namespace vt::model

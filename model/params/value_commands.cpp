@@ -1,0 +1,24 @@
+#include "value_commands.h"
+
+#include "parameter_document.h"
+
+namespace vt::model {
+
+SetValuesCommand::SetValuesCommand(ParameterDocument &document, std::vector<Row> rows, const QString &text)
+    : QUndoCommand(text), m_document(document), m_rows(std::move(rows))
+{
+}
+
+void SetValuesCommand::undo()
+{
+    for (auto it = m_rows.rbegin(); it != m_rows.rend(); ++it)
+        m_document.setWorking(it->module, it->row, it->before);
+}
+
+void SetValuesCommand::redo()
+{
+    for (const Row &r : m_rows)
+        m_document.setWorking(r.module, r.row, r.after);
+}
+
+} // namespace vt::model

@@ -1,0 +1,169 @@
+// The parameter editor end to end through the simulator (issue #7): connect → read all → edit
+// C1.07 to 1.000 V in the editor → write → the simulator holds raw 1000 → undo marks the row as
+// differing from the device → save → reopen → compare shows no difference; an out-of-range entry
+// is refused in the editor with the limits named; German input "1,5" in a volt field is raw 1500.
+#include "app/gui/app_settings.h"
+#include "app/gui/device_controller.h"
+#include "app/gui/file_controller.h"
+#include "app/gui/language.h"
+#include "app/gui/main_window.h"
+#include "app/gui/workspace.h"
+#include "model/params/compare_model.h"
+#include "model/params/param_roles.h"
+#include "model/params/parameter_filter_model.h"
+#include "model/params/parameter_tree_model.h"
+#include "session_fixture.h"
+#include "widgets/editor/compare_dialog.h"
+#include "widgets/editor/parameter_editor.h"
+#include "widgets/editor/write_dialog.h"
+
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTreeView>
+
+namespace vt::test {
+namespace {
+
+using app::MainWindow;
+
+struct EditorE2E : ::testing::Test
+{
+    QTemporaryDir dir;
+    app::AppSettings settings{dir.filePath("settings.ini")};
+    app::Language language;
+    std::unique_ptr<MainWindow> window;
+
+    void SetUp() override
+    {
+        ASSERT_TRUE(language.setLanguage("en"));
+        window = std::make_unique<MainWindow>(settings, language);
+        window->show();
+        window->files().setPromptHook([] { return QMessageBox::Discard; });
+    }
+
+    void connectSimulator()
+    {
+        QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
+        model::ConnectionSpec spec;
+        spec.kind = model::ConnectionKind::Sim;
+        spec.sim.family = "dma-pn-v51";
+        window->device().connectTo(spec); // reads all once connected
+        ASSERT_TRUE(read.wait(30000));
+        ASSERT_TRUE(read.at(0).at(0).toBool());
+    }
+
+    const dev::ParamMeta *row(const char *name) const
+    {
+        return window->workspace().document().module(0).dictionary->find(name);
+    }
+
+    // Types `text` into the value cell of `name` through the real delegate and presses Enter.
+    void typeValue(const char *name, const QString &text)
+    {
+        ui::ParameterEditor *editor = window->editor();
+        ASSERT_TRUE(editor->selectParameter(0, row(name)));
+        QTreeView *view = editor->view();
+        view->edit(view->currentIndex());
+        auto *line = view->viewport()->findChild<QLineEdit *>();
+        ASSERT_NE(line, nullptr);
+        line->selectAll();
+        QTest::keyClicks(line, text);
+        QTest::keyClick(line, Qt::Key_Return);
+        QCoreApplication::processEvents();
+    }
+
+    std::optional<dev::RawValue> working(const char *name) const
+    {
+        return window->workspace().document().value(0, row(name));
+    }
+};
+
+TEST_F(EditorE2E, EditWriteUndoSaveReopenCompare)
+{
+    connectSimulator();
+    typeValue("C1.07", QStringLiteral("1.000"));
+    EXPECT_EQ(working("C1.07"), dev::RawValue{1000.0});
+    EXPECT_TRUE(window->workspace().document().differsFromDevice(0, row("C1.07")));
+
+    ui::WriteDialog *dialog = window->device().writeChanges();
+    ASSERT_NE(dialog, nullptr);
+    ASSERT_EQ(dialog->table()->rowCount(), 1); // only the changed value
+    EXPECT_EQ(dialog->table()->item(0, 1)->text(), "C1.07");
+    EXPECT_EQ(dialog->table()->item(0, 4)->text(), "1.000 V");
+    QSignalSpy finished(dialog, &ui::WriteDialog::writeFinished);
+    dialog->confirm();
+    ASSERT_TRUE(finished.wait(kWaitMs));
+    EXPECT_TRUE(finished.at(0).at(0).toBool());
+    EXPECT_TRUE(dialog->table()->item(0, 5)->text().startsWith("verified", Qt::CaseInsensitive))
+        << dialog->table()->item(0, 5)->text().toStdString();
+    model::SimEndpoint *sim = window->workspace().connection()->simEndpoint();
+    EXPECT_EQ(storedRaw(sim->node()->module(0), *row("C1.07")), 1000.0);
+    dialog->close();
+
+    // Undo after the write: the editor value goes back, the row differs from the device.
+    window->workspace().document().undoStack()->undo();
+    const QModelIndex source = window->editor()->treeModel()->indexOf(0, row("C1.07"));
+    EXPECT_TRUE(source.data(model::DiffersFromDeviceRole).toBool());
+    window->workspace().document().undoStack()->redo();
+    EXPECT_FALSE(source.data(model::DiffersFromDeviceRole).toBool());
+
+    const QString path = dir.filePath("press.vtpar");
+    ASSERT_TRUE(window->files().saveTo(path)) << window->files().lastError().toStdString();
+    ASSERT_TRUE(window->files().openPath(path)) << window->files().lastError().toStdString();
+    EXPECT_EQ(working("C1.07"), dev::RawValue{1000.0});
+    QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
+    window->device().readAll();
+    ASSERT_TRUE(read.wait(30000));
+    window->device().compareWithDevice();
+    auto *compare = window->findChild<ui::CompareDialog *>();
+    ASSERT_NE(compare, nullptr);
+    EXPECT_EQ(compare->compareModel()->rowCount(), 0);
+}
+
+TEST_F(EditorE2E, OutOfRangeIsRefusedInTheEditorWithTheLimits)
+{
+    connectSimulator();
+    const auto before = working("C1.07");
+    typeValue("C1.07", QStringLiteral("12"));
+    EXPECT_EQ(working("C1.07"), before);
+    QLabel *message = window->editor()->messageLabel();
+    EXPECT_TRUE(message->isVisible());
+    EXPECT_TRUE(message->text().contains(QStringLiteral("9.999"))) << message->text().toStdString();
+    EXPECT_TRUE(message->text().contains(QStringLiteral("C1.07")));
+}
+
+TEST_F(EditorE2E, GermanLocaleTakesTheDecimalComma)
+{
+    ASSERT_TRUE(language.setLanguage("de"));
+    QCoreApplication::processEvents();
+    connectSimulator();
+    typeValue("C1.07", QStringLiteral("1,5"));
+    EXPECT_EQ(working("C1.07"), dev::RawValue{1500.0});
+    const QModelIndex value =
+        window->editor()->treeModel()->indexOf(0, row("C1.07"), model::ParameterTreeModel::ColValue);
+    EXPECT_EQ(value.data().toString(), "1,500 V");
+}
+
+TEST_F(EditorE2E, LiveDisplayValuesArriveWithoutDisturbingAnEdit)
+{
+    connectSimulator();
+    ui::ParameterEditor *editor = window->editor();
+    ASSERT_TRUE(editor->selectParameter(0, row("C1.07")));
+    editor->view()->edit(editor->view()->currentIndex());
+    auto *line = editor->view()->viewport()->findChild<QLineEdit *>();
+    ASSERT_NE(line, nullptr);
+    line->setText(QStringLiteral("0.5"));
+    // A stale display value is replaced by the slow poll while the editor stays open with its text.
+    model::ParameterDocument &doc = window->workspace().document();
+    doc.applyRead(0, {{row("d1.11"), 12345.0}});
+    ASSERT_EQ(working("d1.11"), dev::RawValue{12345.0});
+    ASSERT_TRUE(QTest::qWaitFor([&] { return working("d1.11") != dev::RawValue{12345.0}; }, 5000));
+    EXPECT_EQ(line->text(), "0.5");
+    EXPECT_TRUE(line->isVisible());
+}
+
+} // namespace
+} // namespace vt::test

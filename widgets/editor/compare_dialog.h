@@ -1,0 +1,39 @@
+// CompareDialog: File ▸ Compare — the open document against the device or another file, one row
+// per differing parameter with a "take other" choice, applied to the document as one undo step.
+#pragma once
+
+#include "files/param_file.h"
+
+#include <QDialog>
+
+class QLabel;
+class QTableView;
+
+namespace vt::model {
+class CompareModel;
+class ParameterDocument;
+}
+
+namespace vt::ui {
+
+class CompareDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    CompareDialog(model::ParameterDocument &document, QWidget *parent = nullptr);
+
+    model::CompareModel *compareModel() const { return m_model; }
+    QTableView *table() const { return m_table; }
+    // Sets the comparison; the dialog's summary line follows.
+    void compareWithDevice();
+    void compareWithFile(const dev::files::ParamFile &file, const QString &name);
+
+private:
+    void updateSummary();
+
+    model::CompareModel *m_model = nullptr;
+    QTableView *m_table = nullptr;
+    QLabel *m_summary = nullptr;
+};
+
+} // namespace vt::ui

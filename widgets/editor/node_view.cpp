@@ -1,0 +1,80 @@
+#include "node_view.h"
+
+#include "model/params/parameter_document.h"
+#include "model/params/parameter_tree_model.h"
+
+#include <QEvent>
+#include <QHeaderView>
+
+namespace vt::ui {
+
+NodeView::NodeView(model::ParameterDocument &document, QWidget *parent) : QTreeWidget(parent), m_document(document)
+{
+    setObjectName(QStringLiteral("nodeView"));
+    setColumnCount(6);
+    setRootIsDecorated(true);
+    header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    connect(&m_document, &model::ParameterDocument::modulesReset, this, &NodeView::rebuild);
+    connect(&m_document, &model::ParameterDocument::moduleChanged, this, &NodeView::rebuild);
+    connect(&m_document, &model::ParameterDocument::moduleValuesChanged, this, &NodeView::rebuild);
+    connect(&m_document, &model::ParameterDocument::languageChanged, this, &NodeView::rebuild);
+    // Live values: only the state word column changes.
+    connect(&m_document, &model::ParameterDocument::valueChanged, this, [this](int module, const dev::ParamMeta *) {
+        QTreeWidgetItem *node = topLevelItem(0);
+        if (node && module < node->childCount())
+            node->child(module)->setText(4, model::stateWordText(m_document.module(module), m_document.language()));
+    });
+    connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
+        const QVariant module = item->data(0, Qt::UserRole);
+        if (module.isValid())
+            emit moduleActivated(module.toInt());
+    });
+    connect(this, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem *item) {
+        const QVariant module = item->data(0, Qt::UserRole);
+        if (module.isValid())
+            emit moduleActivated(module.toInt());
+    });
+    retranslate();
+}
+
+void NodeView::setNodeText(const QString &text)
+{
+    m_nodeText = text;
+    rebuild();
+}
+
+void NodeView::rebuild()
+{
+    clear();
+    auto *node = new QTreeWidgetItem(this);
+    node->setText(0, m_nodeText.isEmpty() ? tr("Node") : m_nodeText);
+    node->setFirstColumnSpanned(true);
+    for (int i = 0; i < m_document.moduleCount(); ++i) {
+        const model::ParamModule &m = m_document.module(i);
+        auto *item = new QTreeWidgetItem(node);
+        item->setData(0, Qt::UserRole, i);
+        item->setText(0, tr("Module %1").arg(m.address));
+        item->setText(1, m.label.isEmpty() ? QString::fromStdString(m.dictionary->family) : m.label);
+        item->setText(2, QString::fromStdString(m.version));
+        item->setText(3, QString::fromStdString(m.mode));
+        item->setText(4, model::stateWordText(m, m_document.language()));
+        item->setText(5, m.online ? tr("online") : tr("offline"));
+        item->setToolTip(1, m.identity);
+    }
+    expandAll();
+}
+
+void NodeView::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QTreeWidget::changeEvent(event);
+}
+
+void NodeView::retranslate()
+{
+    setHeaderLabels({tr("Module"), tr("Device"), tr("Version"), tr("Mode"), tr("State word"), tr("Link")});
+    rebuild();
+}
+
+} // namespace vt::ui

@@ -1,0 +1,36 @@
+// NodeView: the node and its modules — address, identity, version, mode, state word, online —
+// from a scan of the connected node or from the open file. Selecting a module tells the editor.
+#pragma once
+
+#include <QTreeWidget>
+
+namespace vt::model {
+class ParameterDocument;
+}
+
+namespace vt::ui {
+
+class NodeView : public QTreeWidget
+{
+    Q_OBJECT
+public:
+    explicit NodeView(model::ParameterDocument &document, QWidget *parent = nullptr);
+
+    // The node's description ("sim dma-pn-v51 ×3, modbus-tcp …" or the file name).
+    void setNodeText(const QString &text);
+
+signals:
+    void moduleActivated(int module);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void rebuild();
+    void retranslate();
+
+    model::ParameterDocument &m_document;
+    QString m_nodeText;
+};
+
+} // namespace vt::ui
