@@ -121,8 +121,9 @@ public:
     QList<SampleMarker> markersIn(double t0, double t1) const;
 
     // CSV with '#' header lines naming the channels, one row per sample (empty cell = NaN) and
-    // one row per marker (empty values, text in the last column). Numbers are locale-free and
-    // round-trip exactly. False (and *error) on a write error.
+    // one row per marker (empty values, text in the last column). Separator and decimal sign
+    // follow the UI language (German ';' and ',', else ',' and '.'); the first lines state them,
+    // and numbers round-trip exactly. False (and *error) on a write error.
     bool writeCsv(QIODevice &out, double t0, double t1, QString *error = nullptr) const;
     bool writeCsv(QIODevice &out, QString *error = nullptr) const;
     // Reads what writeCsv() wrote into a store with capacity = the rows read (at least 1).
