@@ -54,6 +54,7 @@ const std::vector<Command> &commands()
         {"write", "write a .vtpar file's changed values, verified (--dry-run: list them)", runWrite},
         {"diff", "compare a .vtpar file with the device", runDiff},
         {"monitor", "poll display values at a rate for a time (--csv)", runMonitor},
+        {"fold", "plan a multi-module node's PLC configuration (GSD, byte map)", runFold},
     };
     return list;
 }

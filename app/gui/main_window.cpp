@@ -5,9 +5,12 @@
 #include "dict/dictionary_loader.h"
 #include "file_controller.h"
 #include "language.h"
+#include "model/curve/lcurve_table_model.h"
+#include "model/params/curve_binding.h"
 #include "model/recent_files.h"
 #include "transports/link.h"
 #include "widgets/about_dialog.h"
+#include "widgets/curve/lcurve_editor.h"
 #include "widgets/editor/node_view.h"
 #include "widgets/editor/parameter_editor.h"
 #include "workspace.h"
@@ -201,10 +204,25 @@ void MainWindow::createDocks()
     m_monitorDock = dock("dockMonitor", m_monitorHint, Qt::RightDockWidgetArea);
     m_telegramsHint = hintLabel(this);
     m_telegramsDock = dock("dockTelegrams", m_telegramsHint, Qt::BottomDockWidgetArea);
+    // Linearisation: the L curves of the module the editor works on, dragged or typed.
+    m_curves = new model::LCurveTableModel(this);
+    m_curveBinding = new model::CurveBinding(m_workspace->document(), *m_curves, this);
+    m_curveEditor = new ui::LCurveEditor(this);
+    m_curveEditor->setModel(m_curves);
+    m_curveDock = dock("dockCurve", m_curveEditor, Qt::RightDockWidgetArea);
+    tabifyDockWidget(m_monitorDock, m_curveDock);
+    m_monitorDock->raise();
     connect(m_nodeView, &ui::NodeView::moduleActivated, this, [this](int module) {
         const auto &m = m_workspace->document().module(module);
         if (!m.dictionary->params.empty())
             m_editor->selectParameter(module, &m.dictionary->params.front());
+        m_curveBinding->setModule(module);
+    });
+    connect(m_editor, &ui::ParameterEditor::parameterSelected, this, [this](int module, const dev::ParamMeta *row) {
+        if (module != m_curveBinding->module())
+            m_curveBinding->setModule(module);
+        if (row && row->block == "L")
+            m_curveDock->raise();
     });
 }
 
@@ -317,6 +335,7 @@ void MainWindow::retranslate()
     m_nodeDock->setWindowTitle(tr("Node"));
     m_monitorDock->setWindowTitle(tr("Monitor"));
     m_telegramsDock->setWindowTitle(tr("Telegrams"));
+    m_curveDock->setWindowTitle(tr("Linearisation"));
     m_monitorHint->setText(tr("Live values of the connected device are plotted here."));
     m_telegramsHint->setText(tr("Every telegram sent and received is listed here."));
     if (!m_workspace->connection())

@@ -18,10 +18,13 @@ class DictionarySet;
 }
 
 namespace vt::model {
+class CurveBinding;
+class LCurveTableModel;
 class RecentFiles;
 }
 
 namespace vt::ui {
+class LCurveEditor;
 class NodeView;
 class ParameterEditor;
 }
@@ -49,6 +52,8 @@ public:
     QDockWidget *nodeDock() const { return m_nodeDock; }
     QDockWidget *monitorDock() const { return m_monitorDock; }
     QDockWidget *telegramsDock() const { return m_telegramsDock; }
+    QDockWidget *curveDock() const { return m_curveDock; }
+    ui::LCurveEditor *curveEditor() const { return m_curveEditor; }
     QLabel *linkStateLabel() const { return m_linkState; }
 
     // Saves the window layout into the settings (also done on close).
@@ -80,6 +85,9 @@ private:
     model::RecentFiles *m_recent = nullptr;
     ui::ParameterEditor *m_editor = nullptr;
     ui::NodeView *m_nodeView = nullptr;
+    model::LCurveTableModel *m_curves = nullptr;
+    model::CurveBinding *m_curveBinding = nullptr;
+    ui::LCurveEditor *m_curveEditor = nullptr;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
@@ -115,6 +123,7 @@ private:
     QDockWidget *m_nodeDock = nullptr;
     QDockWidget *m_monitorDock = nullptr;
     QDockWidget *m_telegramsDock = nullptr;
+    QDockWidget *m_curveDock = nullptr;
     QLabel *m_monitorHint = nullptr;
     QLabel *m_telegramsHint = nullptr;
     QLabel *m_linkState = nullptr;

@@ -278,6 +278,15 @@ void ParameterDocument::editMany(const std::vector<Change> &changes, const QStri
         m_undo.push(new SetValuesCommand(*this, std::move(rows), undoText));
 }
 
+void ParameterDocument::editNumbers(int module, const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
+                                    const QString &undoText)
+{
+    std::vector<Change> changes;
+    for (const auto &[row, number] : values)
+        changes.push_back({module, row, dev::RawValue{number}});
+    editMany(changes, undoText);
+}
+
 void ParameterDocument::setWorking(int module, const dev::ParamMeta *row, const std::optional<dev::RawValue> &value)
 {
     if (module < 0 || module >= moduleCount() || !row)

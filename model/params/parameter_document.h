@@ -72,6 +72,9 @@ public:
         std::optional<dev::RawValue> value;
     };
     void editMany(const std::vector<Change> &changes, const QString &undoText);
+    // Several number rows of one module as one undo step (a drag on the L curve).
+    void editNumbers(int module, const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
+                     const QString &undoText);
     // Used by the undo commands: sets the working value without recording.
     void setWorking(int module, const dev::ParamMeta *row, const std::optional<dev::RawValue> &value);
 

@@ -59,7 +59,7 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
     EXPECT_EQ(actionTexts(w, "menuDevice"),
               (QStringList{"&Connect…", "&Disconnect", "&Read All", "&Write Changes…", "Compare with De&vice…",
                            "&Live Display Values", "&Scan Node", "&Fold Wizard…"}));
-    EXPECT_EQ(actionTexts(w, "menuView"), (QStringList{"Node", "Monitor", "Telegrams"}));
+    EXPECT_EQ(actionTexts(w, "menuView"), (QStringList{"Node", "Monitor", "Telegrams", "Linearisation"}));
     EXPECT_EQ(actionTexts(w, "menuLanguage"), (QStringList{"English", "Deutsch"}));
 
     for (QDockWidget *d : {w.nodeDock(), w.monitorDock(), w.telegramsDock()}) {

@@ -1,0 +1,246 @@
+#include "fold_export.h"
+
+#include "core/hex.h"
+
+#include <QAbstractTextDocumentLayout>
+#include <QFile>
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QTextDocument>
+
+namespace vt::model {
+
+using dev::Language;
+using dev::LocalText;
+
+namespace {
+
+QString q(const std::string &s)
+{
+    return QString::fromStdString(s);
+}
+
+QString esc(const std::string &s)
+{
+    return q(s).toHtmlEscaped();
+}
+
+QString bitList(const std::array<dev::hcs::BitMeaning, 8> &bits, Language lang)
+{
+    QStringList parts;
+    for (const auto &bit : bits)
+        if (bit.used)
+            parts << QStringLiteral("<b>0x%1 %2</b> %3")
+                         .arg(QString::number(bit.mask, 16)
+                                  .toUpper()
+                                  .rightJustified(2, QLatin1Char('0')),
+                              esc(std::string(bit.name)), esc(bit.text.in(lang)));
+    return parts.isEmpty() ? QStringLiteral("–") : parts.join(QStringLiteral("<br>"));
+}
+
+QString csvField(const QString &s)
+{
+    if (!s.contains(QLatin1Char(';')) && !s.contains(QLatin1Char('"')) &&
+        !s.contains(QLatin1Char('\n')))
+        return s;
+    QString quoted = s;
+    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
+
+} // namespace
+
+std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, LocalText *why)
+{
+    auto config = buildPlcConfig(plan);
+    if (!config.ok()) {
+        if (why)
+            *why = config.error();
+        return std::nullopt;
+    }
+    return FoldSheet{plan, *config, checkFoldPlan(plan)};
+}
+
+QString foldSheetHtml(const FoldSheet &sheet, Language lang)
+{
+    const PlcConfig &c = sheet.config;
+    const auto t = [lang](const char *en, const char *de) {
+        return QString::fromUtf8(lang == Language::German ? de : en);
+    };
+    QString h;
+    h += QStringLiteral("<!DOCTYPE html>\n<html lang=\"%1\"><head><meta charset=\"utf-8\">\n")
+             .arg(lang == Language::German ? QStringLiteral("de") : QStringLiteral("en"));
+    h += QStringLiteral("<title>%1</title>\n").arg(t("PLC configuration", "SPS-Konfiguration"));
+    h += QStringLiteral(
+        "<style>body{font-family:sans-serif;font-size:10pt}"
+        "table{border-collapse:collapse;margin-bottom:8pt}"
+        "td,th{border:1px solid #888;padding:2px 6px;vertical-align:top;text-align:left}"
+        "th{background:#ddd}.error{color:#a00}.warning{color:#a60}"
+        "code{font-family:monospace}</style></head><body>\n");
+    h += QStringLiteral("<h1>%1</h1>\n")
+             .arg(t("PLC configuration of the fold", "SPS-Konfiguration des Knotens"));
+    if (!sheet.plan.title.empty())
+        h += QStringLiteral("<h2>%1</h2>\n").arg(esc(sheet.plan.title));
+
+    h += QStringLiteral("<table>\n");
+    const auto row = [&h](const QString &k, const QString &v) {
+        h += QStringLiteral("<tr><th>%1</th><td>%2</td></tr>\n").arg(k, v);
+    };
+    row(t("Node", "Knoten"), esc(foldNodeTitle(c.node).in(lang)) + QStringLiteral(" (") +
+                                 esc(std::string(foldNodeKey(c.node))) + QStringLiteral(")"));
+    row(t("Modules", "Module"), QString::number(c.modules));
+    if (!sheet.plan.productNumber.empty())
+        row(t("Product number", "Produktnummer"), esc(sheet.plan.productNumber));
+    row(t("GSD file", "GSD-Datei"), QStringLiteral("<code>%1</code>").arg(esc(c.gsdFile)));
+    row(t("Catalogue device", "Katalog-Gerät"), esc(c.gsdDevice));
+    row(t("GSD module", "GSD-Modul"), QStringLiteral("<b>%1</b>").arg(esc(c.gsdModule)));
+    row(t("Output (PLC → node)", "Ausgang (SPS → Knoten)"),
+        t("%1 bytes, SNUM = %2", "%1 Byte, SNUM = %2").arg(c.outputBytes).arg(c.snum));
+    row(t("Input (node → PLC)", "Eingang (Knoten → SPS)"),
+        t("%1 bytes, one module per answer", "%1 Byte, ein Modul je Antwort").arg(c.inputBytes));
+    row(t("Reserved by the GSD module", "Vom GSD-Modul reserviert"),
+        t("%1 bytes out / %2 bytes in", "%1 Byte aus / %2 Byte ein")
+            .arg(c.moduleOutputBytes)
+            .arg(c.moduleInputBytes));
+    row(t("Source", "Quelle"), esc(c.gsdNote.in(lang)));
+    h += QStringLiteral("</table>\n");
+
+    h +=
+        QStringLiteral(
+            "<h2>%1</h2>\n<table><tr><th>#</th><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>\n")
+            .arg(t("Modules and addresses", "Module und Adressen"), t("Address", "Adresse"),
+                 t("Software / mode", "Software / Modus"), t("Name", "Name"),
+                 t("Options", "Optionen"));
+    for (std::size_t i = 0; i < sheet.plan.modules.size(); ++i) {
+        const FoldModule &m = sheet.plan.modules[i];
+        QStringList options;
+        for (const std::string &name : foldOptionNames(c.node, i))
+            if (const auto v = foldOption(m.options, name))
+                options << QStringLiteral("%1 = %2").arg(q(name)).arg(*v);
+        const QString sw =
+            (m.version ? QStringLiteral("V%1").arg(m.version) : QStringLiteral("V?")) +
+            QStringLiteral(" / ") + (m.mode ? QString::number(m.mode) : QStringLiteral("?"));
+        h += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>\n")
+                 .arg(i + 1)
+                 .arg(esc(foldAddressText(c.node, m).in(lang)), sw, esc(m.name),
+                      options.isEmpty() ? QStringLiteral("–") : options.join(QStringLiteral(", ")));
+    }
+    h += QStringLiteral("</table>\n");
+
+    if (!sheet.findings.empty()) {
+        h += QStringLiteral("<h2>%1</h2>\n<ul>\n").arg(t("Check", "Prüfung"));
+        for (const FoldFinding &f : sheet.findings)
+            h += QStringLiteral("<li class=\"%1\"><b>%2</b>: %3</li>\n")
+                     .arg(q(std::string(foldSeverityKey(f.severity))),
+                          esc(foldSeverityText(f.severity).in(lang)), esc(f.message.in(lang)));
+        h += QStringLiteral("</ul>\n");
+    }
+
+    const auto imageTable = [&](const std::vector<PlcImageByte> &bytes, const QString &title) {
+        h += QStringLiteral(
+                 "<h2>%1</h2>\n<table><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>\n")
+                 .arg(title, t("Byte", "Byte"), t("Module", "Modul"), t("Field", "Feld"),
+                      t("Meaning", "Bedeutung"));
+        for (const PlcImageByte &b : bytes)
+            h += QStringLiteral(
+                     "<tr><td>%1</td><td>%2</td><td><code>%3</code></td><td>%4</td></tr>\n")
+                     .arg(b.offset)
+                     .arg(b.module < 0 ? QStringLiteral("–") : QString::number(b.module + 1),
+                          esc(b.field), esc(b.text.in(lang)));
+        h += QStringLiteral("</table>\n");
+    };
+    imageTable(c.output, t("Output image (PLC → node, CMD 15 request)",
+                           "Ausgangsabbild (SPS → Knoten, CMD-15-Anfrage)"));
+    imageTable(c.input, t("Input image (node → PLC, multiplexed: SADR names the module)",
+                          "Eingangsabbild (Knoten → SPS, gemultiplext: SADR nennt das Modul)"));
+
+    h += QStringLiteral("<h2>%1</h2>\n<p>%2</p>\n<table><tr><th>%3</th><th>%4</th><th>%5</"
+                        "th><th>%6</th><th>%7</th></tr>\n")
+             .arg(t("Bits per module", "Bits je Modul"),
+                  t("Only the bits of each module's own mode apply (DMA Profibus Anleitung §6, DMA "
+                    "Profinet manual §5).",
+                    "Nur die Bits entsprechend dem Modus des jeweiligen Moduls gelten (DMA "
+                    "Profibus Anleitung §6, "
+                    "DMA-Profinet-Handbuch §5)."),
+                  t("Module / SADR", "Modul / SADR"), t("Layout", "Layout"),
+                  t("Control byte", "Steuerbyte"), t("Status high byte", "Status High-Byte"),
+                  t("Status low byte", "Status Low-Byte"));
+    for (const PlcModuleSection &s : c.sections) {
+        const auto &info = dev::hcs::profileInfo(s.profile);
+        const QString layout =
+            esc(info.title.in(lang)) + QStringLiteral("<br>VALUE1 → ") +
+            esc(std::string(info.response1.parameter) + " " + info.response1.text.in(lang)) +
+            QStringLiteral("<br>VALUE2 → ") +
+            esc(std::string(info.response2.parameter) + " " + info.response2.text.in(lang)) +
+            QStringLiteral("<br><i>%1</i>").arg(esc(std::string(info.source)));
+        h += QStringLiteral(
+                 "<tr><td>%1 / %2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td></tr>\n")
+                 .arg(s.module + 1)
+                 .arg(s.sadr)
+                 .arg(layout, bitList(s.controlBits, lang), bitList(s.statusHighBits, lang),
+                      bitList(s.statusLowBits, lang));
+    }
+    h += QStringLiteral("</table>\n");
+
+    h += QStringLiteral("<h2>%1</h2>\n<p>%2</p>\n<p><code>%3</code></p>\n")
+             .arg(t("Example CMD 15 telegram", "Beispiel CMD-15-Telegramm"),
+                  t("TADR 0x01, control byte 0x00, VALUE1 = 1000 (1.000 V), VALUE2 = 0 for every "
+                    "module.",
+                    "TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 (1,000 V), VALUE2 = 0 für jedes "
+                    "Modul."),
+                  esc(dev::toHex(c.exampleRequestBytes)));
+    h += QStringLiteral("<p><small>%1: %2</small></p>\n")
+             .arg(t("Sources", "Quellen"), esc(c.source));
+    h += QStringLiteral("</body></html>\n");
+    return h;
+}
+
+QString foldSheetCsv(const FoldSheet &sheet, Language lang)
+{
+    const PlcConfig &c = sheet.config;
+    QString out = QStringLiteral("direction;byte;module;sadr;field;meaning\n");
+    const auto rows = [&](const std::vector<PlcImageByte> &bytes, const QString &dir) {
+        for (const PlcImageByte &b : bytes) {
+            QString sadr;
+            if (b.module >= 0 && b.module < static_cast<int>(c.sections.size()))
+                sadr = QString::number(c.sections[static_cast<std::size_t>(b.module)].sadr);
+            out += dir + QLatin1Char(';') + QString::number(b.offset) + QLatin1Char(';') +
+                   (b.module < 0 ? QString() : QString::number(b.module + 1)) + QLatin1Char(';') +
+                   sadr + QLatin1Char(';') + csvField(q(b.field)) + QLatin1Char(';') +
+                   csvField(q(b.text.in(lang))) + QLatin1Char('\n');
+        }
+    };
+    rows(c.output, QStringLiteral("out"));
+    rows(c.input, QStringLiteral("in"));
+    return out;
+}
+
+std::optional<int> writeFoldSheetPdf(const FoldSheet &sheet, Language lang, const QString &path)
+{
+    {
+        // QPdfWriter reports no open failure; find out first.
+        QFile probe(path);
+        if (!probe.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            return std::nullopt;
+    }
+    QPdfWriter writer(path);
+    writer.setPageSize(QPageSize(QPageSize::A4));
+    writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+    writer.setTitle(QStringLiteral("ValveTune fold plan"));
+    writer.setCreator(QStringLiteral("ValveTune"));
+
+    QTextDocument doc;
+    // Lay the document out for the writer (its resolution, its page) so that point sizes come out
+    // as points on paper and pageCount() is the printed page count.
+    doc.documentLayout()->setPaintDevice(&writer);
+    doc.setHtml(foldSheetHtml(sheet, lang));
+    doc.setPageSize(writer.pageLayout().paintRectPixels(writer.resolution()).size());
+    doc.print(&writer);
+    const int pages = doc.pageCount();
+    if (QFile(path).size() <= 0)
+        return std::nullopt;
+    return pages;
+}
+
+} // namespace vt::model

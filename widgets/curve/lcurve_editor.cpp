@@ -1,0 +1,101 @@
+#include "lcurve_editor.h"
+
+#include "lcurve_delegate.h"
+#include "lcurve_plot.h"
+#include "model/curve/lcurve_table_model.h"
+
+#include <QEvent>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSplitter>
+#include <QTableView>
+#include <QVBoxLayout>
+
+namespace vt::ui {
+
+LCurveEditor::LCurveEditor(QWidget *parent) : QWidget(parent)
+{
+    m_plot = new LCurvePlot(this);
+    m_table = new QTableView(this);
+    m_table->setItemDelegate(new LCurveDelegate(m_table));
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                             QAbstractItemView::AnyKeyPressed);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // The table is as wide as its columns; the plot takes the rest.
+    m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    m_table->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Expanding);
+    m_plot->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+
+    connect(m_plot, &LCurvePlot::pointPicked, this, [this](int curve, int index) {
+        if (m_model)
+            m_table->setCurrentIndex(m_model->indexOf(curve, index, model::LAxis::Y));
+    });
+
+    auto *splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->addWidget(m_plot);
+    splitter->addWidget(m_table);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 0);
+    splitter->setChildrenCollapsible(false);
+
+    m_hint = new QLabel(this);
+    m_hint->setWordWrap(true);
+    m_message = new QLabel(this);
+    m_message->setObjectName(QStringLiteral("refusal"));
+    m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText);
+    QPalette warn = m_message->palette();
+    warn.setColor(QPalette::WindowText, QColor(180, 0, 0));
+    m_message->setPalette(warn);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(splitter, 1);
+    layout->addWidget(m_hint);
+    layout->addWidget(m_message);
+    retranslate();
+}
+
+void LCurveEditor::setModel(model::LCurveTableModel *model)
+{
+    if (m_model)
+        disconnect(m_model, nullptr, this, nullptr);
+    m_model = model;
+    m_plot->setModel(model);
+    m_table->setModel(model);
+    m_message->clear();
+    if (model) {
+        connect(model, &model::LCurveTableModel::editRefused, this, &LCurveEditor::showRefusal);
+        connect(model, &model::LCurveTableModel::rowsEdited, m_message, &QLabel::clear);
+        connect(model, &QObject::destroyed, this, [this] { m_model = nullptr; });
+    }
+}
+
+QString LCurveEditor::message() const
+{
+    return m_message->text();
+}
+
+void LCurveEditor::showRefusal(int, int, const QString &reason)
+{
+    m_message->setText(reason);
+}
+
+void LCurveEditor::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void LCurveEditor::retranslate()
+{
+    if (m_model)
+        m_model->retranslate();
+    m_hint->setText(
+        tr("Drag a point or type its coordinates. Input x must rise from point to "
+           "point; grey coordinates are fixed by the device. Whether the module applies "
+           "the curve depends on the branch's Linearization parameter (C1.02 / C2.02)."));
+}
+
+} // namespace vt::ui
