@@ -1,5 +1,7 @@
 #include "telegram_log.h"
 
+#include "inspect/logged_frame.h"
+
 #include "core/hex.h"
 #include "inspect/describe_any.h"
 
@@ -211,19 +213,15 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
 {
     if (r.status == Status::Timeout)
         return r.note.isEmpty() ? tr("no reply") : tr("no reply: %1").arg(r.note);
-    // The node image carries the HCS gateway telegrams of the manuals (describeAny's "gateway").
-    const std::optional<vt::dev::Protocol> protocol =
-        r.protocol == QLatin1String("node-image")
-            ? vt::dev::Protocol::Gateway
-            : vt::dev::protocolFromName(r.protocol.toStdString());
-    if (!protocol)
+    // describeLogged: the node image is the gateway telegram with padding, and a CANopen record
+    // is a 16-byte SocketCAN image that is unwrapped first.
+    if (!vt::dev::inspect::protocolForLogKey(r.protocol.toStdString()))
         return tr("%n byte(s)", nullptr, static_cast<int>(r.bytes.size()));
     vt::dev::AnyOptions any;
-    any.protocol = *protocol;
     any.family = options.family;
     any.direction = r.direction;
     any.dictionary = options.dictionary;
-    const auto described = vt::dev::describeAny(asSpan(r.bytes), any);
+    const auto described = vt::dev::inspect::describeLogged(r.protocol.toStdString(), asSpan(r.bytes), any);
     if (!described)
         return fromStd(described.error());
     if (!described->summary.en.empty())

@@ -12,6 +12,7 @@
 #include "widgets/about_dialog.h"
 #include "widgets/curve/lcurve_editor.h"
 #include "widgets/editor/node_view.h"
+#include "widgets/inspector/inspector_view.h"
 #include "widgets/editor/parameter_editor.h"
 #include "workspace.h"
 
@@ -202,8 +203,23 @@ void MainWindow::createDocks()
     m_nodeDock = dock("dockNode", m_nodeView, Qt::LeftDockWidgetArea);
     m_monitorHint = hintLabel(this);
     m_monitorDock = dock("dockMonitor", m_monitorHint, Qt::RightDockWidgetArea);
-    m_telegramsHint = hintLabel(this);
-    m_telegramsDock = dock("dockTelegrams", m_telegramsHint, Qt::BottomDockWidgetArea);
+    // Every frame in and out of the connection (Workspace's TelegramRecorder fills the log).
+    m_inspector = new ui::InspectorView(this);
+    m_inspector->setLog(&m_workspace->telegramLog());
+    m_telegramsDock = dock("dockTelegrams", m_inspector, Qt::BottomDockWidgetArea);
+    connect(m_editor, &ui::ParameterEditor::showFramesRequested, this, [this](int module, const QString &name) {
+        m_telegramsDock->show();
+        m_telegramsDock->raise();
+        m_inspector->showFramesFor(m_workspace->document().module(module).address, name);
+    });
+    connect(m_inspector, &ui::InspectorView::parameterActivated, this, [this](int address, const QString &name) {
+        const int module = m_workspace->document().findModule(address);
+        if (module < 0)
+            return;
+        const dev::Dictionary *dict = m_workspace->document().module(module).dictionary;
+        if (const dev::ParamMeta *row = dict->find(name.toStdString()))
+            m_editor->selectParameter(module, row);
+    });
     // Linearisation: the L curves of the module the editor works on, dragged or typed.
     m_curves = new model::LCurveTableModel(this);
     m_curveBinding = new model::CurveBinding(m_workspace->document(), *m_curves, this);
@@ -244,9 +260,13 @@ void MainWindow::connectWorkspace()
     connect(m_workspace, &Workspace::connected, this, [this] {
         m_linkState->setText(m_workspace->connection()->describe());
         m_nodeView->setNodeText(m_workspace->connection()->describe());
+        m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
         showStatus(tr("Connected: %n module(s).", nullptr, static_cast<int>(m_workspace->modules().size())));
         updateActions();
         m_device->readAll(); // what the engineer does first anyway; the live d-values start with it
+    });
+    connect(m_workspace, &Workspace::scanFinished, this, [this] {
+        m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
     });
     connect(m_workspace, &Workspace::connectFailed, this, [this](const QString &reason) {
         m_linkState->setText(link::linkStateText(link::LinkState::Closed));
@@ -256,6 +276,7 @@ void MainWindow::connectWorkspace()
     connect(m_workspace, &Workspace::disconnected, this, [this](const QString &reason) {
         m_linkState->setText(link::linkStateText(link::LinkState::Closed));
         m_nodeView->setNodeText(QString());
+        m_inspector->clearConnection();
         showStatus(reason.isEmpty() ? tr("Disconnected.") : tr("Connection lost: %1").arg(reason));
         updateActions();
     });
@@ -337,7 +358,6 @@ void MainWindow::retranslate()
     m_telegramsDock->setWindowTitle(tr("Telegrams"));
     m_curveDock->setWindowTitle(tr("Linearisation"));
     m_monitorHint->setText(tr("Live values of the connected device are plotted here."));
-    m_telegramsHint->setText(tr("Every telegram sent and received is listed here."));
     if (!m_workspace->connection())
         m_linkState->setText(link::linkStateText(link::LinkState::Closed));
     updateTitle();

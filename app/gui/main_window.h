@@ -24,6 +24,7 @@ class RecentFiles;
 }
 
 namespace vt::ui {
+class InspectorView;
 class LCurveEditor;
 class NodeView;
 class ParameterEditor;
@@ -54,6 +55,7 @@ public:
     QDockWidget *telegramsDock() const { return m_telegramsDock; }
     QDockWidget *curveDock() const { return m_curveDock; }
     ui::LCurveEditor *curveEditor() const { return m_curveEditor; }
+    ui::InspectorView *inspector() const { return m_inspector; }
     QLabel *linkStateLabel() const { return m_linkState; }
 
     // Saves the window layout into the settings (also done on close).
@@ -88,6 +90,7 @@ private:
     model::LCurveTableModel *m_curves = nullptr;
     model::CurveBinding *m_curveBinding = nullptr;
     ui::LCurveEditor *m_curveEditor = nullptr;
+    ui::InspectorView *m_inspector = nullptr;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
@@ -125,7 +128,6 @@ private:
     QDockWidget *m_telegramsDock = nullptr;
     QDockWidget *m_curveDock = nullptr;
     QLabel *m_monitorHint = nullptr;
-    QLabel *m_telegramsHint = nullptr;
     QLabel *m_linkState = nullptr;
 };
 

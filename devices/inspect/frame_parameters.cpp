@@ -1,0 +1,130 @@
+#include "frame_parameters.h"
+
+#include "access/canopen_adapter.h"
+#include "canopen/can_frame.h"
+#include "canopen/sdo.h"
+#include "dsp408/pkw.h"
+#include "hart/device_specific.h"
+#include "hart/frame.h"
+#include "hcs/telegram.h"
+#include "inspect/logged_frame.h"
+#include "modbus/rtu.h"
+#include "modbus/tcp.h"
+
+#include <type_traits>
+#include <variant>
+
+namespace vt::dev::inspect {
+namespace {
+
+void addRange(CarriedParameters &out, std::uint16_t first, std::uint32_t count)
+{
+    for (std::uint32_t i = 0; i < count && first + i <= 0xFFFFu; ++i)
+        out.ids.push_back(static_cast<std::uint16_t>(first + i));
+}
+
+void fromModbusPdu(CarriedParameters &out, const modbus::RequestPdu &pdu)
+{
+    if (const auto *r = std::get_if<modbus::ReadRequest>(&pdu))
+        addRange(out, r->start, r->count);
+    else if (const auto *w = std::get_if<modbus::WriteRequest>(&pdu))
+        out.ids.push_back(w->address);
+}
+
+void fromSdo(CarriedParameters &out, std::span<const std::uint8_t> data)
+{
+    const auto sdo = canopen::decodeSdo(data, Direction::Request);
+    if (sdo && (sdo->command == canopen::SdoCommand::InitiateUploadRequest ||
+                sdo->command == canopen::SdoCommand::InitiateDownloadRequest))
+        out.canObject = CanObject{sdo->index, sdo->subindex};
+}
+
+} // namespace
+
+CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> bytes,
+                            Direction direction, hcs::Family family)
+{
+    CarriedParameters out;
+    if (direction != Direction::Request)
+        return out;
+    const auto protocol = protocolForLogKey(key);
+    if (!protocol)
+        return out;
+    switch (*protocol) {
+    case Protocol::Gateway: {
+        const auto request =
+            hcs::decodeRequest(bytes, hcs::DecodeOptions{family, key == "node-image"});
+        if (!request)
+            break;
+        if (const auto *r = std::get_if<hcs::ReadRequest>(&*request))
+            addRange(out, r->firstId, r->count);
+        else if (const auto *w = std::get_if<hcs::WriteRequest>(&*request))
+            out.ids.push_back(w->id);
+        break;
+    }
+    case Protocol::ModbusRtu:
+        if (const auto r = modbus::decodeRtuRequest(bytes))
+            fromModbusPdu(out, r->pdu);
+        break;
+    case Protocol::ModbusTcp:
+        if (const auto r = modbus::decodeTcpRequest(bytes))
+            fromModbusPdu(out, r->pdu);
+        break;
+    case Protocol::Hart: {
+        const auto frame = hart::decodeFrame(bytes);
+        if (!frame || frame->isResponse() || !hart::isParameterCommand(frame->command))
+            break;
+        if (const auto access = hart::decodeParamAccess(frame->command, false, frame->data))
+            out.indPnu =
+                CarriedParameters::IndPnu{access->ref.ind, access->ref.pnu, access->ref.instance};
+        break;
+    }
+    case Protocol::Pkw: {
+        const auto pkw = dsp408::decodePkw(bytes);
+        if (pkw && pkw->ak != 0)
+            out.indPnu = CarriedParameters::IndPnu{pkw->ind, pkw->pnu, 0};
+        break;
+    }
+    case Protocol::Canopen:
+        if (bytes.size() == canopen::kSocketCanFrameSize) {
+            const auto frame = canopen::fromSocketCan(bytes);
+            if (frame && !frame->extended && !frame->rtr && !frame->errorFrame)
+                fromSdo(out, frame->payload());
+        } else {
+            fromSdo(out, bytes);
+        }
+        break;
+    case Protocol::Profidrive:
+    case Protocol::Pzd: break; // process data: set values, no parameter numbers
+    }
+    return out;
+}
+
+std::vector<const ParamMeta *> rowsOf(const CarriedParameters &carried,
+                                      const Dictionary &dictionary)
+{
+    std::vector<const ParamMeta *> rows;
+    for (std::uint16_t id : carried.ids)
+        if (const ParamMeta *p = dictionary.findId(id))
+            rows.push_back(p);
+    if (carried.indPnu)
+        if (const ParamMeta *p = dictionary.findIndPnu(carried.indPnu->ind, carried.indPnu->pnu,
+                                                       carried.indPnu->instance))
+            rows.push_back(p);
+    if (carried.canObject) {
+        const auto profile = dictionary.protocol == DeviceProtocol::Hcs
+                                 ? access::CanopenProfile::Hcs
+                                 : access::CanopenProfile::Dsp408;
+        for (const ParamMeta &p : dictionary.params) {
+            const auto object = access::canopenObjectOf(p, profile);
+            if (object && object->index == carried.canObject->index &&
+                object->sub == carried.canObject->sub) {
+                rows.push_back(&p);
+                break;
+            }
+        }
+    }
+    return rows;
+}
+
+} // namespace vt::dev::inspect

@@ -1,0 +1,40 @@
+// Which parameters a request frame addresses, for the inspector's linked navigation (frame →
+// parameter, parameter → its last frames). Reads the request the way the device would.
+#pragma once
+
+#include "core/direction.h"
+#include "dict/dictionary.h"
+#include "hcs/types.h"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace vt::dev::inspect {
+
+struct CarriedParameters
+{
+    std::vector<std::uint16_t> ids; // HCS parameter IDs (gateway CMD 3/6, Modbus FC 3/6)
+    struct IndPnu
+    {
+        int ind = 0, pnu = 0, instance = 0;
+    };
+    std::optional<IndPnu> indPnu;       // HART 128..133, DSP-408 PKW
+    std::optional<CanObject> canObject; // CANopen SDO
+
+    bool empty() const { return ids.empty() && !indPnu && !canObject; }
+};
+
+// `key` is the log / link protocol key ("node-image", "modbus-rtu", "canopen" 16-byte images …)
+// or describeAny's name. Only requests name parameters (a CMD 3 answer does not carry its IDs);
+// anything that does not decode carries nothing.
+CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> bytes,
+                            Direction direction, hcs::Family family = hcs::Family::Dma);
+
+// The dictionary rows behind them (unknown ones left out), in frame order.
+std::vector<const ParamMeta *> rowsOf(const CarriedParameters &carried,
+                                      const Dictionary &dictionary);
+
+} // namespace vt::dev::inspect

@@ -1,0 +1,79 @@
+#include "frame_links.h"
+
+#include "dict/dictionary.h"
+#include "inspect/frame_parameters.h"
+
+#include <span>
+
+namespace vt::model {
+namespace {
+
+std::span<const std::uint8_t> asSpan(const QByteArray &b)
+{
+    return {reinterpret_cast<const std::uint8_t *>(b.constData()),
+            static_cast<std::size_t>(b.size())};
+}
+
+QStringList namesOf(const TelegramRecord &r, const vt::dev::Dictionary &dictionary,
+                    vt::dev::hcs::Family family)
+{
+    QStringList names;
+    const auto carried =
+        vt::dev::inspect::carriedBy(r.protocol.toStdString(), asSpan(r.bytes), r.direction, family);
+    for (const vt::dev::ParamMeta *p : vt::dev::inspect::rowsOf(carried, dictionary))
+        names << QString::fromStdString(p->name);
+    return names;
+}
+
+} // namespace
+
+std::optional<quint64> requestSeqOf(const TelegramLog &log, quint64 seq)
+{
+    const TelegramRecord *r = log.find(seq);
+    if (!r)
+        return std::nullopt;
+    if (r->direction == vt::dev::Direction::Request)
+        return seq;
+    for (quint64 s = seq; s > log.firstSeq();) {
+        --s;
+        const TelegramRecord *q = log.find(s);
+        if (q && q->direction == vt::dev::Direction::Request && q->module == r->module)
+            return s;
+    }
+    return std::nullopt;
+}
+
+QStringList parametersOfRecord(const TelegramLog &log, quint64 seq,
+                               const vt::dev::Dictionary &dictionary, vt::dev::hcs::Family family)
+{
+    const auto request = requestSeqOf(log, seq);
+    const TelegramRecord *r = request ? log.find(*request) : nullptr;
+    return r ? namesOf(*r, dictionary, family) : QStringList{};
+}
+
+QList<quint64> lastFramesFor(const TelegramLog &log, int module, const QString &parameterName,
+                             const vt::dev::Dictionary &dictionary, vt::dev::hcs::Family family)
+{
+    QList<quint64> out;
+    for (qsizetype i = log.size(); i-- > 0;) {
+        const TelegramRecord &r = log.at(i);
+        if (r.direction != vt::dev::Direction::Request || (module >= 0 && r.module != module))
+            continue;
+        if (!namesOf(r, dictionary, family).contains(parameterName))
+            continue;
+        out << r.seq;
+        // Everything of this module up to its next request answers this one.
+        for (qsizetype k = i + 1; k < log.size(); ++k) {
+            const TelegramRecord &a = log.at(k);
+            if (a.module != r.module)
+                continue;
+            if (a.direction == vt::dev::Direction::Request)
+                break;
+            out << a.seq;
+        }
+        break;
+    }
+    return out;
+}
+
+} // namespace vt::model

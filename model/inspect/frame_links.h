@@ -1,0 +1,34 @@
+// Linked navigation between the telegram log and the parameters (issue #8 "from a parameter in
+// the editor jump to its last frames; from a frame jump to its parameter"). A request names its
+// parameters; an answer belongs to the request of its module just before it.
+// Pure functions over a TelegramLog; GUI thread (the log's).
+#pragma once
+
+#include "hcs/types.h"
+#include "model/telegram_log.h"
+
+#include <QList>
+#include <QStringList>
+
+namespace vt::dev {
+struct Dictionary;
+}
+
+namespace vt::model {
+
+// The request record a record belongs to: itself for a request, else the latest earlier request
+// of the same module (nullopt when there is none or it is gone).
+std::optional<quint64> requestSeqOf(const TelegramLog &log, quint64 seq);
+
+// Names of the dictionary parameters the record's exchange addresses, in frame order.
+QStringList parametersOfRecord(const TelegramLog &log, quint64 seq,
+                               const vt::dev::Dictionary &dictionary,
+                               vt::dev::hcs::Family family = vt::dev::hcs::Family::Dma);
+
+// The newest exchange that carried `parameterName` to / from `module` (-1 = any module): the
+// request's seq and the seqs of the records answering it (replies, timeouts). Empty when none.
+QList<quint64> lastFramesFor(const TelegramLog &log, int module, const QString &parameterName,
+                             const vt::dev::Dictionary &dictionary,
+                             vt::dev::hcs::Family family = vt::dev::hcs::Family::Dma);
+
+} // namespace vt::model
