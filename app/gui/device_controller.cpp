@@ -2,6 +2,7 @@
 
 #include "app_settings.h"
 #include "model/params/device_jobs.h"
+#include "widgets/connect/connect_dialog.h"
 #include "widgets/editor/compare_dialog.h"
 #include "widgets/editor/write_dialog.h"
 #include "workspace.h"
@@ -19,8 +20,11 @@ DeviceController::~DeviceController() = default;
 
 void DeviceController::connectDialog()
 {
-    // The connect dialog (widgets/connect) is wired in by the main window when present.
-    emit statusMessage(tr("Use the connect dialog."));
+    // Remembers every kind's last fields in the settings and opens on the last kind used.
+    auto *dialog = new ui::ConnectDialog(m_workspace.dictionaries(), &m_settings.store(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { connectTo(dialog->spec()); });
+    dialog->open();
 }
 
 void DeviceController::connectTo(const model::ConnectionSpec &spec) { m_workspace.connectTo(spec); }

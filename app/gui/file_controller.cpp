@@ -3,6 +3,8 @@
 #include "model/params/param_file_io.h"
 #include "model/recent_files.h"
 #include "widgets/editor/compare_dialog.h"
+#include "widgets/files/new_file.h"
+#include "widgets/files/new_file_dialog.h"
 #include "widgets/editor/map_report_dialog.h"
 #include "workspace.h"
 
@@ -51,9 +53,29 @@ bool FileController::maybeSave()
 
 void FileController::newFile()
 {
-    // The New-file dialog (family, version, mode, modules) arrives with widgets/files; until
-    // then a new document starts from the connected node's modules or is not offered.
-    emit statusMessage(tr("Choose File ▸ New from the dialog."));
+    if (!maybeSave())
+        return;
+    auto *dialog = new ui::NewFileDialog(m_workspace.dictionaries(), m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    // Offer the connected device's family first.
+    if (!m_workspace.modules().empty() && m_workspace.modules().front().dictionary)
+        dialog->setFamily(m_workspace.modules().front().dictionary->family);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { newFrom(dialog->choice()); });
+    dialog->open();
+}
+
+void FileController::newFrom(const ui::NewFileChoice &choice)
+{
+    if (!choice.valid())
+        return;
+    const std::string tool = "ValveTune " + QCoreApplication::applicationVersion().toStdString();
+    const dev::files::ParamFile file = ui::newParamFile(choice, tool, std::chrono::system_clock::now());
+    model::ParameterDocument &doc = m_workspace.document();
+    doc.loadFile(file, m_workspace.dictionaries(), QString());
+    if (m_workspace.isConnected())
+        doc.attachDevice(m_workspace.modules());
+    emit statusMessage(tr("New parameter set for %1 with the dictionary's defaults.")
+                           .arg(QString::fromStdString(choice.dictionary->family)));
 }
 
 void FileController::open()

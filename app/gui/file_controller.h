@@ -16,6 +16,10 @@ namespace vt::model {
 class RecentFiles;
 }
 
+namespace vt::ui {
+struct NewFileChoice;
+}
+
 namespace vt::app {
 
 class Workspace;
@@ -26,7 +30,8 @@ class FileController : public QObject
 public:
     FileController(Workspace &workspace, model::RecentFiles &recent, QWidget *window);
 
-    void newFile();            // asks family, version, mode, modules
+    void newFile();            // asks family, version, mode, modules (NewFileDialog)
+    void newFrom(const ui::NewFileChoice &choice);
     void open();               // asks for a file
     bool openPath(const QString &path);
     bool save();               // Save As when the document has no file yet

@@ -11,6 +11,7 @@
 #include "transports/link.h"
 #include "widgets/about_dialog.h"
 #include "widgets/curve/lcurve_editor.h"
+#include "widgets/connect/link_status_widget.h"
 #include "widgets/editor/node_view.h"
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/editor/parameter_editor.h"
@@ -58,9 +59,10 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     createMenus();
     createDocks();
 
-    m_linkState = new QLabel(this);
-    m_linkState->setObjectName(QStringLiteral("linkState"));
-    statusBar()->addPermanentWidget(m_linkState);
+    // Link, device identity and the error / retry counters, live.
+    m_linkStatus = new ui::LinkStatusWidget(this);
+    m_linkStatus->setObjectName(QStringLiteral("linkStatus"));
+    statusBar()->addPermanentWidget(m_linkStatus);
 
     connect(m_recent, &model::RecentFiles::changed, this, &MainWindow::rebuildRecentMenu);
     connect(&m_language, &Language::languageChanged, this, [this](const QString &code) {
@@ -254,11 +256,12 @@ void MainWindow::connectWorkspace()
     });
     connect(&doc, &model::ParameterDocument::modulesReset, this, &MainWindow::updateActions);
     connect(m_workspace, &Workspace::connecting, this, [this](const QString &description) {
-        m_linkState->setText(tr("Connecting to %1…").arg(description));
+        m_linkStatus->setConnection(m_workspace->connection(), {});
+        showStatus(tr("Connecting to %1…").arg(description));
         updateActions();
     });
     connect(m_workspace, &Workspace::connected, this, [this] {
-        m_linkState->setText(m_workspace->connection()->describe());
+        m_linkStatus->setModules(m_workspace->modules());
         m_nodeView->setNodeText(m_workspace->connection()->describe());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
         showStatus(tr("Connected: %n module(s).", nullptr, static_cast<int>(m_workspace->modules().size())));
@@ -266,15 +269,16 @@ void MainWindow::connectWorkspace()
         m_device->readAll(); // what the engineer does first anyway; the live d-values start with it
     });
     connect(m_workspace, &Workspace::scanFinished, this, [this] {
+        m_linkStatus->setModules(m_workspace->modules());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
     });
     connect(m_workspace, &Workspace::connectFailed, this, [this](const QString &reason) {
-        m_linkState->setText(link::linkStateText(link::LinkState::Closed));
+        m_linkStatus->clearConnection();
         showStatus(tr("Connection failed: %1").arg(reason));
         updateActions();
     });
     connect(m_workspace, &Workspace::disconnected, this, [this](const QString &reason) {
-        m_linkState->setText(link::linkStateText(link::LinkState::Closed));
+        m_linkStatus->clearConnection();
         m_nodeView->setNodeText(QString());
         m_inspector->clearConnection();
         showStatus(reason.isEmpty() ? tr("Disconnected.") : tr("Connection lost: %1").arg(reason));
@@ -358,8 +362,6 @@ void MainWindow::retranslate()
     m_telegramsDock->setWindowTitle(tr("Telegrams"));
     m_curveDock->setWindowTitle(tr("Linearisation"));
     m_monitorHint->setText(tr("Live values of the connected device are plotted here."));
-    if (!m_workspace->connection())
-        m_linkState->setText(link::linkStateText(link::LinkState::Closed));
     updateTitle();
     rebuildRecentMenu();
 }

@@ -25,6 +25,7 @@ class RecentFiles;
 
 namespace vt::ui {
 class InspectorView;
+class LinkStatusWidget;
 class LCurveEditor;
 class NodeView;
 class ParameterEditor;
@@ -56,7 +57,7 @@ public:
     QDockWidget *curveDock() const { return m_curveDock; }
     ui::LCurveEditor *curveEditor() const { return m_curveEditor; }
     ui::InspectorView *inspector() const { return m_inspector; }
-    QLabel *linkStateLabel() const { return m_linkState; }
+    ui::LinkStatusWidget *linkStatus() const { return m_linkStatus; }
 
     // Saves the window layout into the settings (also done on close).
     void saveLayout();
@@ -128,7 +129,7 @@ private:
     QDockWidget *m_telegramsDock = nullptr;
     QDockWidget *m_curveDock = nullptr;
     QLabel *m_monitorHint = nullptr;
-    QLabel *m_linkState = nullptr;
+    ui::LinkStatusWidget *m_linkStatus = nullptr;
 };
 
 } // namespace vt::app

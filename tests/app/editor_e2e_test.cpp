@@ -15,8 +15,12 @@
 #include "session_fixture.h"
 #include "widgets/editor/compare_dialog.h"
 #include "widgets/editor/parameter_editor.h"
+#include "widgets/connect/connect_dialog.h"
+#include "widgets/connect/link_status_widget.h"
 #include "widgets/editor/write_dialog.h"
+#include "widgets/files/new_file_dialog.h"
 
+#include <QAction>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -163,6 +167,45 @@ TEST_F(EditorE2E, LiveDisplayValuesArriveWithoutDisturbingAnEdit)
     ASSERT_TRUE(QTest::qWaitFor([&] { return working("d1.11") != dev::RawValue{12345.0}; }, 5000));
     EXPECT_EQ(line->text(), "0.5");
     EXPECT_TRUE(line->isVisible());
+}
+
+} // namespace
+} // namespace vt::test
+
+namespace vt::test {
+namespace {
+
+TEST_F(EditorE2E, NewFileFromTheDictionaryDefaultsAndConnectThroughTheDialog)
+{
+    // File ▸ New: the dialog's choice becomes a document with the dictionary's defaults.
+    window->findChild<QAction *>("actionNew")->trigger();
+    auto *newDialog = window->findChild<ui::NewFileDialog *>();
+    ASSERT_NE(newDialog, nullptr);
+    ASSERT_TRUE(newDialog->setFamily("dma-pn-v51"));
+    const int modules = newDialog->choice().modules;
+    newDialog->accept(); // the dialog deletes itself on close
+    QCoreApplication::processEvents();
+    ASSERT_EQ(window->workspace().document().moduleCount(), modules);
+    const dev::ParamMeta *c107 = row("C1.07");
+    EXPECT_EQ(working("C1.07"), dev::RawValue{*c107->defaultValue});
+    EXPECT_FALSE(window->workspace().document().hasFile());
+
+    // Device ▸ Connect…: the dialog's spec connects, the status bar names the link and counts.
+    window->findChild<QAction *>("actionConnect")->trigger();
+    auto *connectDialog = window->findChild<ui::ConnectDialog *>();
+    ASSERT_NE(connectDialog, nullptr);
+    model::ConnectionSpec spec;
+    spec.kind = model::ConnectionKind::Sim;
+    spec.sim.family = "dma-pn-v51";
+    connectDialog->setSpec(spec);
+    QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
+    connectDialog->accept();
+    ASSERT_TRUE(read.wait(30000));
+    EXPECT_TRUE(window->linkStatus()->linkText().contains("dma-pn-v51")) << window->linkStatus()->linkText().toStdString();
+    EXPECT_TRUE(window->workspace().document().module(0).online);
+    // The new document's module 1 paired with the device's: its values now differ where the
+    // simulator's stored values are not the defaults, and nothing was written.
+    EXPECT_EQ(window->workspace().document().moduleCount(), modules);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "app/gui/app_settings.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "widgets/connect/link_status_widget.h"
 
 #include <QAction>
 #include <QCoreApplication>
@@ -66,7 +67,7 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
         ASSERT_NE(d, nullptr);
         EXPECT_TRUE(d->isVisible());
     }
-    EXPECT_EQ(w.linkStateLabel()->text(), "Not connected");
+    EXPECT_EQ(w.linkStatus()->linkText(), "Not connected");
     // Without a connection the device actions that need one are disabled.
     EXPECT_TRUE(w.findChild<QAction *>("actionConnect")->isEnabled());
     EXPECT_FALSE(w.findChild<QAction *>("actionReadAll")->isEnabled());
@@ -88,13 +89,13 @@ TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)
               (QStringList{"&Verbinden…", "&Trennen", "Alle &lesen", "Änderungen &schreiben…",
                            "Mit &Gerät vergleichen…", "&Live-Anzeigewerte", "Knoten &abfragen", "&Knoten-Assistent…"}));
     EXPECT_EQ(w.nodeDock()->windowTitle(), "Knoten");
-    EXPECT_EQ(w.linkStateLabel()->text(), "Nicht verbunden");
+    EXPECT_EQ(w.linkStatus()->linkText(), "Nicht verbunden");
     EXPECT_EQ(settings.language(), "de"); // the choice is remembered
 
     w.findChild<QAction *>("actionEnglish")->trigger();
     QCoreApplication::processEvents();
     EXPECT_EQ(menuTitles(w).first(), "&File");
-    EXPECT_EQ(w.linkStateLabel()->text(), "Not connected");
+    EXPECT_EQ(w.linkStatus()->linkText(), "Not connected");
 }
 
 TEST_F(Fixture, LayoutIsKeptInTheSettings)
@@ -102,7 +103,7 @@ TEST_F(Fixture, LayoutIsKeptInTheSettings)
     {
         MainWindow w(settings, language);
         w.show();
-        w.resize(900, 700);
+        w.resize(1400, 950);
         w.telegramsDock()->hide();
         w.saveLayout();
     }
@@ -110,7 +111,7 @@ TEST_F(Fixture, LayoutIsKeptInTheSettings)
     again.show();
     EXPECT_FALSE(again.telegramsDock()->isVisible());
     EXPECT_TRUE(again.nodeDock()->isVisible());
-    EXPECT_EQ(again.size(), QSize(900, 700));
+    EXPECT_EQ(again.size(), QSize(1400, 950));
 }
 
 TEST(Language, RejectsUnknownCodesAndKeepsTheCurrentOne)

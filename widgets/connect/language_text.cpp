@@ -1,0 +1,40 @@
+#include "language_text.h"
+
+#include "dict/dictionary.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+namespace vt::ui {
+
+dev::Language uiLanguage()
+{
+    return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
+}
+
+QString localText(const dev::LocalText &text)
+{
+    return QString::fromStdString(text.in(uiLanguage()));
+}
+
+QString familyText(const dev::Dictionary &dictionary)
+{
+    return QCoreApplication::translate("vt::ui::DictionaryTexts", "%1 (%2)")
+        .arg(localText(dictionary.title), QString::fromStdString(dictionary.family));
+}
+
+QString modeText(const dev::Dictionary &dictionary, const std::string &mode)
+{
+    const QString number = QString::fromStdString(mode);
+    bool numeric = false;
+    const int raw = number.toInt(&numeric);
+    const dev::ParamMeta *e00 =
+        dictionary.protocol == dev::DeviceProtocol::Hcs ? dictionary.find("E00") : nullptr;
+    const dev::EnumLabel *label = numeric && e00 ? e00->findEnum(raw) : nullptr;
+    if (!label)
+        return number;
+    return QCoreApplication::translate("vt::ui::DictionaryTexts", "%1 — %2")
+        .arg(QLocale().toString(raw), localText(label->text));
+}
+
+} // namespace vt::ui
