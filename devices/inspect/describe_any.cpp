@@ -1,5 +1,7 @@
 #include "describe_any.h"
 
+#include "logged_frame.h"
+
 #include "canopen/sdo.h"
 #include "dict/cooking.h"
 #include "dsp408/pkw.h"
@@ -45,27 +47,8 @@ std::optional<Protocol> protocolFromName(std::string_view name)
 
 namespace {
 
-hcs::ParameterHooks hooksFor(const Dictionary *dict)
-{
-    if (!dict)
-        return {};
-    hcs::ParameterHooks hooks;
-    hooks.name = [dict](std::uint16_t id) -> std::optional<LocalText> {
-        const ParamMeta *p = dict->findId(id);
-        if (!p)
-            return std::nullopt;
-        return LocalText{p->name + " " + p->label.en, p->name + " " + p->label.de};
-    };
-    hooks.cook = [dict](std::uint16_t id, std::uint16_t raw) -> std::optional<LocalText> {
-        const ParamMeta *p = dict->findId(id);
-        if (!p || p->isString())
-            return std::nullopt;
-        // HCS words: signed unless the row's type says otherwise.
-        const double value = p->type == RawType::UInt16 ? raw : static_cast<std::int16_t>(raw);
-        return LocalText{formatValue(*p, value, Language::English), formatValue(*p, value, Language::German)};
-    };
-    return hooks;
-}
+// HCS parameter names and cooked values: one definition, shared with the telegram log.
+hcs::ParameterHooks hooksFor(const Dictionary *dict) { return inspect::parameterHooks(dict); }
 
 } // namespace
 

@@ -418,30 +418,29 @@ void InspectorView::onContextMenu(const QPoint &pos)
     menu.exec(m_table->viewport()->mapToGlobal(pos));
 }
 
+namespace {
+
+bool openForWriting(QFile &file, QString *error)
+{
+    if (file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+        return true;
+    if (error)
+        *error = file.errorString();
+    return false;
+}
+
+} // namespace
+
 bool InspectorView::saveCsv(const QString &path, QString *error) const
 {
-    if (!m_log)
-        return false;
     QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return m_log->writeCsv(file, summaryOptions(), filter(), error);
+    return m_log && openForWriting(file, error) && m_log->writeCsv(file, summaryOptions(), filter(), error);
 }
 
 bool InspectorView::saveText(const QString &path, QString *error) const
 {
-    if (!m_log)
-        return false;
     QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return m_log->writeText(file, summaryOptions(), filter(), error);
+    return m_log && openForWriting(file, error) && m_log->writeText(file, summaryOptions(), filter(), error);
 }
 
 void InspectorView::saveInteractive(bool csv)
