@@ -2,6 +2,115 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>vt::app::DeviceController</name>
+    <message>
+        <source>Scanning the node…</source>
+        <translation>Knoten wird abgefragt…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan found %n module(s).</source>
+        <translation>
+            <numerusform>Abfrage: %n Modul gefunden.</numerusform>
+            <numerusform>Abfrage: %n Module gefunden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading all parameters…</source>
+        <translation>Alle Parameter werden gelesen…</translation>
+    </message>
+    <message>
+        <source>All parameters read.</source>
+        <translation>Alle Parameter gelesen.</translation>
+    </message>
+    <message>
+        <source>Read incomplete: %1</source>
+        <translation>Lesen unvollständig: %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>Nothing to write: the editor and the device agree.</source>
+        <translation>Nichts zu schreiben: Editor und Gerät stimmen überein.</translation>
+    </message>
+    <message>
+        <source>Every change written and verified.</source>
+        <translation>Alle Änderungen geschrieben und geprüft.</translation>
+    </message>
+    <message>
+        <source>Not every change reached the device; see the write results.</source>
+        <translation>Nicht alle Änderungen haben das Gerät erreicht; siehe Schreibergebnisse.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::app::FileController</name>
+    <message>
+        <source>ValveTune parameter files (*.vtpar);;All files (*)</source>
+        <translation>ValveTune-Parameterdateien (*.vtpar);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>ValveTune</source>
+        <translation>ValveTune</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The parameters have unsaved changes. Save them first?</source>
+        <translation>Die Parameter enthalten ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>New parameter set for %1 with the dictionary&apos;s defaults.</source>
+        <translation>Neuer Parametersatz für %1 mit den Vorgabewerten des Wörterbuchs.</translation>
+    </message>
+    <message>
+        <source>Open Parameter File</source>
+        <translation>Parameterdatei öffnen</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Save Parameter File</source>
+        <translation>Parameterdatei speichern</translation>
+    </message>
+    <message>
+        <source>There are no parameters to save.</source>
+        <translation>Es gibt keine Parameter zum Speichern.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>CSV exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Exported %1 (separator &apos;;&apos;, decimal comma)</source>
+        <translation>%1 exportiert (Trennzeichen &apos;;&apos;, Dezimalkomma)</translation>
+    </message>
+    <message>
+        <source>Exported %1 (separator &apos;,&apos;, decimal point)</source>
+        <translation>%1 exportiert (Trennzeichen &apos;,&apos;, Dezimalpunkt)</translation>
+    </message>
+    <message>
+        <source>Compare with File</source>
+        <translation>Mit Datei vergleichen</translation>
+    </message>
+</context>
+<context>
     <name>vt::app::MainWindow</name>
     <message>
         <source>ValveTune</source>
@@ -48,10 +157,6 @@
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <source>&amp;Export…</source>
-        <translation>&amp;Exportieren…</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -88,10 +193,6 @@
         <translation>In dieser Version noch nicht verfügbar</translation>
     </message>
     <message>
-        <source>Parameters</source>
-        <translation>Parameter</translation>
-    </message>
-    <message>
         <source>Monitor</source>
         <translation>Monitor</translation>
     </message>
@@ -100,20 +201,8 @@
         <translation>Telegramme</translation>
     </message>
     <message>
-        <source>The parameters of the connected device or the open file appear here.</source>
-        <translation>Hier erscheinen die Parameter des verbundenen Geräts oder der geöffneten Datei.</translation>
-    </message>
-    <message>
         <source>Live values of the connected device are plotted here.</source>
         <translation>Hier werden die Live-Werte des verbundenen Geräts aufgezeichnet.</translation>
-    </message>
-    <message>
-        <source>Every telegram sent and received is listed here.</source>
-        <translation>Hier wird jedes gesendete und empfangene Telegramm aufgelistet.</translation>
-    </message>
-    <message>
-        <source>No device connected and no parameter file open.</source>
-        <translation>Kein Gerät verbunden und keine Parameterdatei geöffnet.</translation>
     </message>
     <message>
         <source>(none)</source>
@@ -122,6 +211,84 @@
     <message>
         <source>Clear List</source>
         <translation>Liste leeren</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Verbinde mit %1…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Connected: %n module(s).</source>
+        <translation>
+            <numerusform>Verbunden: %n Modul.</numerusform>
+            <numerusform>Verbunden: %n Module.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connection failed: %1</source>
+        <translation>Verbindung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Getrennt.</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Verbindung verloren: %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Export CSV…</source>
+        <translation>CSV &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Compare with &amp;File…</source>
+        <translation>Mit &amp;Datei vergleichen…</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>Revert to &amp;Device</source>
+        <translation>Auf &amp;Gerätewerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Revert to &amp;File</source>
+        <translation>Auf &amp;Dateiwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Compare with De&amp;vice…</source>
+        <translation>Mit &amp;Gerät vergleichen…</translation>
+    </message>
+    <message>
+        <source>&amp;Live Display Values</source>
+        <translation>&amp;Live-Anzeigewerte</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Linearisation</source>
+        <translation>Linearisierung</translation>
+    </message>
+</context>
+<context>
+    <name>vt::app::Workspace</name>
+    <message>
+        <source>No module answered on %1.</source>
+        <translation>Auf %1 hat kein Modul geantwortet.</translation>
     </message>
 </context>
 <context>
@@ -305,6 +472,160 @@
     </message>
 </context>
 <context>
+    <name>vt::model::BlockTitles</name>
+    <message>
+        <source>Display values</source>
+        <translation>Anzeigewerte</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Regler</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Bus values</source>
+        <translation>Buswerte</translation>
+    </message>
+    <message>
+        <source>Linearisation</source>
+        <translation>Linearisierung</translation>
+    </message>
+    <message>
+        <source>Ramps</source>
+        <translation>Rampen</translation>
+    </message>
+    <message>
+        <source>Reserved (S)</source>
+        <translation>Reserviert (S)</translation>
+    </message>
+    <message>
+        <source>PROFIdrive set values</source>
+        <translation>PROFIdrive-Sollwerte</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Drive actual value conditioning</source>
+        <translation>Istwertaufbereitung Antrieb</translation>
+    </message>
+    <message>
+        <source>Drive output processing</source>
+        <translation>Ausgangsverarbeitung Antrieb</translation>
+    </message>
+    <message>
+        <source>Drive position control</source>
+        <translation>Lageregelung Antrieb</translation>
+    </message>
+    <message>
+        <source>Open loop movement</source>
+        <translation>Gesteuerte Bewegung</translation>
+    </message>
+    <message>
+        <source>Velocity control axis</source>
+        <translation>Geschwindigkeitsregelung Achse</translation>
+    </message>
+    <message>
+        <source>Spool position control open loop</source>
+        <translation>Schieberposition gesteuert</translation>
+    </message>
+    <message>
+        <source>Pressure control</source>
+        <translation>Druckregelung</translation>
+    </message>
+    <message>
+        <source>Actual value</source>
+        <translation>Istwert</translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <source>Ramp</source>
+        <translation>Rampe</translation>
+    </message>
+    <message>
+        <source>n-point controller</source>
+        <translation>n-Punkt-Regler</translation>
+    </message>
+    <message>
+        <source>Command value</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <source>Fixed command values</source>
+        <translation>Festsollwerte</translation>
+    </message>
+    <message>
+        <source>Analogue output</source>
+        <translation>Analogausgang</translation>
+    </message>
+    <message>
+        <source>Solenoid 1</source>
+        <translation>Magnet 1</translation>
+    </message>
+    <message>
+        <source>Solenoid 2</source>
+        <translation>Magnet 2</translation>
+    </message>
+    <message>
+        <source>HART</source>
+        <translation>HART</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::CompareModel</name>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>This document</source>
+        <translation>Dieses Dokument</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>File %1</source>
+        <translation>Datei %1</translation>
+    </message>
+    <message>
+        <source>Take other</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <source>(not set)</source>
+        <translation>(nicht gesetzt)</translation>
+    </message>
+    <message>
+        <source>Take values from the device</source>
+        <translation>Werte vom Gerät übernehmen</translation>
+    </message>
+    <message>
+        <source>Take values from %1</source>
+        <translation>Werte aus %1 übernehmen</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::Connection</name>
     <message>
         <source>a TCP connection needs a host and a port</source>
@@ -328,6 +649,13 @@
     </message>
 </context>
 <context>
+    <name>vt::model::CurveBinding</name>
+    <message>
+        <source>Edit linearisation curve</source>
+        <translation>Linearisierungskennlinie bearbeiten</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::DeviceAccess</name>
     <message>
         <source>not readable over %1</source>
@@ -335,10 +663,189 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FieldTreeModel</name>
+    <message>
+        <source>Field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::LCurveTableModel</name>
+    <message>
+        <source>P%1</source>
+        <translation>P%1</translation>
+    </message>
+    <message>
+        <source>Point %1</source>
+        <translation>Punkt %1</translation>
+    </message>
+    <message>
+        <source>%1: input (set value) coordinate, branch %2</source>
+        <translation>%1: Eingangskoordinate (Sollwert), Zweig %2</translation>
+    </message>
+    <message>
+        <source>%1: output coordinate, branch %2</source>
+        <translation>%1: Ausgangskoordinate, Zweig %2</translation>
+    </message>
+    <message>
+        <source>%1 x (%2)</source>
+        <translation>%1 x (%2)</translation>
+    </message>
+    <message>
+        <source>%1 y (%2)</source>
+        <translation>%1 y (%2)</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::MonitorScheduler</name>
     <message>
         <source>incomplete answer</source>
         <translation>unvollständige Antwort</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ParamFileIo</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB: not a parameter file.</source>
+        <translation>%1 ist größer als %2 MiB: keine Parameterdatei.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ParameterDocument</name>
+    <message>
+        <source>, mode %1</source>
+        <translation>, Modus %1</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>%1 auf %2 setzen</translation>
+    </message>
+    <message>
+        <source>Revert to device</source>
+        <translation>Auf Gerätewerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Revert to file</source>
+        <translation>Auf Dateiwerte zurücksetzen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ParameterTreeModel</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Zugriff</translation>
+    </message>
+    <message numerus="yes">
+        <source>text, at most %n characters</source>
+        <translation>
+            <numerusform>Text, höchstens %n Zeichen</numerusform>
+            <numerusform>Text, höchstens %n Zeichen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n choices</source>
+        <translation>
+            <numerusform>%n Auswahlmöglichkeit</numerusform>
+            <numerusform>%n Auswahlmöglichkeiten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>bit field</source>
+        <translation>Bitfeld</translation>
+    </message>
+    <message>
+        <source>Address: %1</source>
+        <translation>Adresse: %1</translation>
+    </message>
+    <message>
+        <source>Range: %1</source>
+        <translation>Bereich: %1</translation>
+    </message>
+    <message>
+        <source>Access: %1</source>
+        <translation>Zugriff: %1</translation>
+    </message>
+    <message>
+        <source>Default: %1</source>
+        <translation>Vorgabe: %1</translation>
+    </message>
+    <message>
+        <source>The display scale depends on the installation; %1 is a typical value.</source>
+        <translation>Die Anzeigeskalierung hängt von der Anlage ab; %1 ist ein typischer Wert.</translation>
+    </message>
+    <message>
+        <source>Not active for this module&apos;s version and mode.</source>
+        <translation>Für Version und Modus dieses Moduls nicht aktiv.</translation>
+    </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation>online</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>offline</translation>
+    </message>
+    <message>
+        <source>Branch %1</source>
+        <translation>Zweig %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ReadAllJob</name>
+    <message numerus="yes">
+        <source>Module %1: %n rows not read (%2)</source>
+        <translation>
+            <numerusform>Modul %1: %n Zeile nicht gelesen (%2)</numerusform>
+            <numerusform>Modul %1: %n Zeilen nicht gelesen (%2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -699,6 +1206,996 @@ Licensed under the GNU General Public License, version 3 or later. Plots use QCu
 Parametrierung, Optimierung und Inbetriebnahme von Elektroniken für hydraulische Proportionalventile: HCS OPAT und DMA-2, Wandfluh ED1/SD1 (DSP-408) und SD7 (HART-7).
 
 Lizenziert unter der GNU General Public License, Version 3 oder später. Die Diagramme verwenden QCustomPlot (GPL-3.0).</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::CanPage</name>
+    <message>
+        <source>CAN (CANopen)</source>
+        <translation>CAN (CANopen)</translation>
+    </message>
+    <message>
+        <source>Type the CAN interface (can0, vcan0 …).</source>
+        <translation>Geben Sie die CAN-Schnittstelle ein (can0, vcan0 …).</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a network interface name.</source>
+        <translation>&quot;%1&quot; ist kein Name einer Netzwerkschnittstelle.</translation>
+    </message>
+    <message>
+        <source>CANopen node id %1 is outside %2..%3.</source>
+        <translation>CANopen-Knoten-ID %1 liegt außerhalb von %2..%3.</translation>
+    </message>
+    <message>
+        <source>&amp;Interface:</source>
+        <translation>&amp;Schnittstelle:</translation>
+    </message>
+    <message>
+        <source>&amp;Node id:</source>
+        <translation>&amp;Knoten-ID:</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>&amp;Gerät:</translation>
+    </message>
+    <message>
+        <source>HCS module (objects 0x2000 + ID)</source>
+        <translation>HCS-Modul (Objekte 0x2000 + ID)</translation>
+    </message>
+    <message>
+        <source>Wandfluh ED1 (CiA 408)</source>
+        <translation>Wandfluh ED1 (CiA 408)</translation>
+    </message>
+    <message>
+        <source>Pro&amp;duct:</source>
+        <translation>Pro&amp;dukt:</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::CompareDialog</name>
+    <message>
+        <source>Compare</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <source>Take All</source>
+        <translation>Alle übernehmen</translation>
+    </message>
+    <message>
+        <source>Take None</source>
+        <translation>Keine übernehmen</translation>
+    </message>
+    <message>
+        <source>Apply Chosen</source>
+        <translation>Auswahl anwenden</translation>
+    </message>
+    <message>
+        <source>No differences.</source>
+        <translation>Keine Unterschiede.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) differ. Tick &quot;Take other&quot; for each value to take into this document.</source>
+        <translation>
+            <numerusform>%n Parameter weicht ab. Kreuzen Sie &quot;Übernehmen&quot; bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
+            <numerusform>%n Parameter weichen ab. Kreuzen Sie &quot;Übernehmen&quot; bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ComposePanel</name>
+    <message>
+        <source>%1: not a number</source>
+        <translation>%1: keine Zahl</translation>
+    </message>
+    <message>
+        <source>Long address: device type 0..0xFFFF, device id 0..0xFFFFFF</source>
+        <translation>Lange Adresse: Gerätetyp 0..0xFFFF, Geräte-ID 0..0xFFFFFF</translation>
+    </message>
+    <message>
+        <source>Data: not hex</source>
+        <translation>Daten: nicht hexadezimal</translation>
+    </message>
+    <message>
+        <source>Modules: &quot;CTRL,VALUE1,VALUE2&quot; per module (0..255, two -32768..32767), separated by &quot;;&quot;</source>
+        <translation>Module: &quot;CTRL,VALUE1,VALUE2&quot; je Modul (0..255, zweimal -32768..32767), getrennt durch &quot;;&quot;</translation>
+    </message>
+    <message>
+        <source>Nothing to send: the fields do not make a frame.</source>
+        <translation>Nichts zu senden: Die Felder ergeben kein Telegramm.</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>Waiting for the answer to the last frame.</source>
+        <translation>Warte auf die Antwort auf das letzte Telegramm.</translation>
+    </message>
+    <message>
+        <source>No link of ValveTune carries %1 frames (PROFIBUS DP needs a master card); copy the bytes instead.</source>
+        <translation>Keine Verbindung von ValveTune überträgt %1-Telegramme (PROFIBUS DP braucht eine Masterkarte); kopieren Sie stattdessen die Bytes.</translation>
+    </message>
+    <message>
+        <source>The current link speaks %1; this frame needs %2.</source>
+        <translation>Die aktuelle Verbindung spricht %1; dieses Telegramm braucht %2.</translation>
+    </message>
+    <message>
+        <source>This frame changes the device:
+%1
+
+Send it?</source>
+        <translation>Dieses Telegramm verändert das Gerät:
+%1
+
+Senden?</translation>
+    </message>
+    <message>
+        <source>Send a write</source>
+        <translation>Schreibzugriff senden</translation>
+    </message>
+    <message>
+        <source>Sent; waiting for the answer…</source>
+        <translation>Gesendet; warte auf Antwort…</translation>
+    </message>
+    <message>
+        <source>Answered: %1</source>
+        <translation>Antwort: %1</translation>
+    </message>
+    <message>
+        <source>HCS CMD 3 read</source>
+        <translation>HCS CMD 3 lesen</translation>
+    </message>
+    <message>
+        <source>HCS CMD 6 write</source>
+        <translation>HCS CMD 6 schreiben</translation>
+    </message>
+    <message>
+        <source>HCS CMD 15 cyclic</source>
+        <translation>HCS CMD 15 zyklisch</translation>
+    </message>
+    <message>
+        <source>Modbus FC 3 read</source>
+        <translation>Modbus FC 3 lesen</translation>
+    </message>
+    <message>
+        <source>Modbus FC 6 write</source>
+        <translation>Modbus FC 6 schreiben</translation>
+    </message>
+    <message>
+        <source>PKW read</source>
+        <translation>PKW lesen</translation>
+    </message>
+    <message>
+        <source>PKW write</source>
+        <translation>PKW schreiben</translation>
+    </message>
+    <message>
+        <source>HART command</source>
+        <translation>HART-Kommando</translation>
+    </message>
+    <message>
+        <source>HART parameter read (128/130/132)</source>
+        <translation>HART-Parameter lesen (128/130/132)</translation>
+    </message>
+    <message>
+        <source>HART parameter write (129/131/133)</source>
+        <translation>HART-Parameter schreiben (129/131/133)</translation>
+    </message>
+    <message>
+        <source>SDO upload (read)</source>
+        <translation>SDO-Upload (lesen)</translation>
+    </message>
+    <message>
+        <source>SDO download (write)</source>
+        <translation>SDO-Download (schreiben)</translation>
+    </message>
+    <message>
+        <source>1 byte</source>
+        <translation>1 Byte</translation>
+    </message>
+    <message>
+        <source>2 bytes</source>
+        <translation>2 Bytes</translation>
+    </message>
+    <message>
+        <source>4 bytes</source>
+        <translation>4 Bytes</translation>
+    </message>
+    <message>
+        <source>Modbus TCP (MBAP header)</source>
+        <translation>Modbus TCP (MBAP-Header)</translation>
+    </message>
+    <message>
+        <source>Frame:</source>
+        <translation>Telegramm:</translation>
+    </message>
+    <message>
+        <source>Family:</source>
+        <translation>Familie:</translation>
+    </message>
+    <message>
+        <source>Framing:</source>
+        <translation>Rahmenformat:</translation>
+    </message>
+    <message>
+        <source>TADR:</source>
+        <translation>TADR:</translation>
+    </message>
+    <message>
+        <source>SADR (module):</source>
+        <translation>SADR (Modul):</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Unit-ID:</translation>
+    </message>
+    <message>
+        <source>Transaction id:</source>
+        <translation>Transaktions-ID:</translation>
+    </message>
+    <message>
+        <source>Parameter ID / register:</source>
+        <translation>Parameter-ID / Register:</translation>
+    </message>
+    <message>
+        <source>Count:</source>
+        <translation>Anzahl:</translation>
+    </message>
+    <message>
+        <source>Value (raw):</source>
+        <translation>Rohwert:</translation>
+    </message>
+    <message>
+        <source>Modules (CTRL,V1,V2; …):</source>
+        <translation>Module (CTRL,V1,V2; …):</translation>
+    </message>
+    <message>
+        <source>IND:</source>
+        <translation>IND:</translation>
+    </message>
+    <message>
+        <source>PNU:</source>
+        <translation>PNU:</translation>
+    </message>
+    <message>
+        <source>Instance:</source>
+        <translation>Instanz:</translation>
+    </message>
+    <message>
+        <source>Poll address:</source>
+        <translation>Polling-Adresse:</translation>
+    </message>
+    <message>
+        <source>Device type (long frame):</source>
+        <translation>Gerätetyp (langes Telegramm):</translation>
+    </message>
+    <message>
+        <source>Device id (long frame):</source>
+        <translation>Geräte-ID (langes Telegramm):</translation>
+    </message>
+    <message>
+        <source>Command:</source>
+        <translation>Kommando:</translation>
+    </message>
+    <message>
+        <source>Data (hex):</source>
+        <translation>Daten (hex):</translation>
+    </message>
+    <message>
+        <source>Node id:</source>
+        <translation>Knoten-ID:</translation>
+    </message>
+    <message>
+        <source>Object index:</source>
+        <translation>Objektindex:</translation>
+    </message>
+    <message>
+        <source>Sub-index:</source>
+        <translation>Subindex:</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Breite:</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ConnectDialog</name>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::DecodePanel</name>
+    <message>
+        <source>Paste or type a frame as hex (&quot;23 00 06&quot;, &quot;0x23,0x00&quot;, &quot;230006&quot;) or a CAN frame as &quot;605#40416000&quot;.</source>
+        <translation>Fügen Sie ein Telegramm als Hex ein oder geben Sie es ein (&quot;23 00 06&quot;, &quot;0x23,0x00&quot;, &quot;230006&quot;), ein CAN-Telegramm als &quot;605#40416000&quot;.</translation>
+    </message>
+    <message>
+        <source>Too long: at most %1 characters.</source>
+        <translation>Zu lang: höchstens %1 Zeichen.</translation>
+    </message>
+    <message>
+        <source>Not hex at character %1.</source>
+        <translation>Kein Hex-Zeichen an Stelle %1.</translation>
+    </message>
+    <message>
+        <source>Auto cannot decide: the bytes are no frame of any protocol ValveTune knows. Choose a protocol to see why.</source>
+        <translation>Auto kann nicht entscheiden: Die Bytes sind kein Telegramm eines Protokolls, das ValveTune kennt. Wählen Sie ein Protokoll, um den Grund zu sehen.</translation>
+    </message>
+    <message>
+        <source>Auto cannot decide between %1. Choose the protocol.</source>
+        <translation>Auto kann nicht zwischen %1 entscheiden. Wählen Sie das Protokoll.</translation>
+    </message>
+    <message>
+        <source>Auto: %1 (%2).</source>
+        <translation>Auto: %1 (%2).</translation>
+    </message>
+    <message>
+        <source>request</source>
+        <translation>Anfrage</translation>
+    </message>
+    <message>
+        <source>response</source>
+        <translation>Antwort</translation>
+    </message>
+    <message>
+        <source>The frame is not valid.</source>
+        <translation>Das Telegramm ist ungültig.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n byte(s).</source>
+        <translation>
+            <numerusform>%n Byte.</numerusform>
+            <numerusform>%n Byte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Hex bytes, e.g. 23 00 06 00 30 03 E8</source>
+        <translation>Hex-Bytes, z. B. 23 00 06 00 30 03 E8</translation>
+    </message>
+    <message>
+        <source>Protocol:</source>
+        <translation>Protokoll:</translation>
+    </message>
+    <message>
+        <source>Family:</source>
+        <translation>Familie:</translation>
+    </message>
+    <message>
+        <source>Direction:</source>
+        <translation>Richtung:</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>request (master → device)</source>
+        <translation>Anfrage (Master → Gerät)</translation>
+    </message>
+    <message>
+        <source>response (device → master)</source>
+        <translation>Antwort (Gerät → Master)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::DictionaryTexts</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FrameDetail</name>
+    <message>
+        <source>Error at byte %1: %2</source>
+        <translation>Fehler bei Byte %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::HartPage</name>
+    <message>
+        <source>HART</source>
+        <translation>HART</translation>
+    </message>
+    <message>
+        <source>Choose the HART modem&apos;s serial port or type its path.</source>
+        <translation>Wählen Sie die serielle Schnittstelle des HART-Modems oder geben Sie ihren Pfad ein.</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>Line:</source>
+        <translation>Leitung:</translation>
+    </message>
+    <message>
+        <source>%1 baud %2 (fixed by HART)</source>
+        <translation>%1 Baud %2 (durch HART festgelegt)</translation>
+    </message>
+    <message>
+        <source>P&amp;oll address:</source>
+        <translation>P&amp;olling-Adresse:</translation>
+    </message>
+    <message>
+        <source>0 for a single device on the loop</source>
+        <translation>0 für ein einzelnes Gerät in der Stromschleife</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::HcsProductBox</name>
+    <message>
+        <source>Tell from the version</source>
+        <translation>Aus der Version ermitteln</translation>
+    </message>
+    <message>
+        <source>HCS OPAT</source>
+        <translation>HCS OPAT</translation>
+    </message>
+    <message>
+        <source>HCS DMA-2 PROFINET</source>
+        <translation>HCS DMA-2 PROFINET</translation>
+    </message>
+    <message>
+        <source>HCS DMA-2 PROFIBUS</source>
+        <translation>HCS DMA-2 PROFIBUS</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::InspectorView</name>
+    <message>
+        <source>Go to parameter %1</source>
+        <translation>Zu Parameter %1 wechseln</translation>
+    </message>
+    <message>
+        <source>Decode a copy</source>
+        <translation>Kopie dekodieren</translation>
+    </message>
+    <message>
+        <source>Save telegrams as CSV</source>
+        <translation>Telegramme als CSV speichern</translation>
+    </message>
+    <message>
+        <source>Save telegrams as text</source>
+        <translation>Telegramme als Text speichern</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt)</source>
+        <translation>Textdateien (*.txt)</translation>
+    </message>
+    <message>
+        <source>Save failed</source>
+        <translation>Speichern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>%1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Module:</source>
+        <translation>Modul:</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <source>Protocol:</source>
+        <translation>Protokoll:</translation>
+    </message>
+    <message>
+        <source>Errors only</source>
+        <translation>Nur Fehler</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Freezes the list; frames are still recorded and appear when resumed.</source>
+        <translation>Hält die Liste an; Telegramme werden weiter aufgezeichnet und erscheinen beim Fortsetzen.</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Save CSV…</source>
+        <translation>CSV speichern…</translation>
+    </message>
+    <message>
+        <source>Save text…</source>
+        <translation>Text speichern…</translation>
+    </message>
+    <message>
+        <source>Go to parameter</source>
+        <translation>Zum Parameter</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Telegramm</translation>
+    </message>
+    <message>
+        <source>Decode</source>
+        <translation>Dekodieren</translation>
+    </message>
+    <message>
+        <source>Compose</source>
+        <translation>Erstellen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::LCurveEditor</name>
+    <message>
+        <source>Drag a point or type its coordinates. Input x must rise from point to point; grey coordinates are fixed by the device. Whether the module applies the curve depends on the branch&apos;s Linearization parameter (C1.02 / C2.02).</source>
+        <translation>Ziehen Sie einen Punkt oder geben Sie seine Koordinaten ein. Der Eingang x muss von Punkt zu Punkt steigen; graue Koordinaten sind vom Gerät vorgegeben. Ob das Modul die Kennlinie anwendet, hängt vom Parameter Linearisierung des Zweigs ab (C1.02 / C2.02).</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::LCurvePlot</name>
+    <message>
+        <source>Input (set value)</source>
+        <translation>Eingang (Sollwert)</translation>
+    </message>
+    <message>
+        <source>Input (set value) / %1</source>
+        <translation>Eingang (Sollwert) / %1</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>Output / %1</source>
+        <translation>Ausgang / %1</translation>
+    </message>
+    <message>
+        <source>Branch %1 (%2)</source>
+        <translation>Zweig %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::LinkStatusWidget</name>
+    <message>
+        <source>%1, V%2</source>
+        <translation>%1, V%2</translation>
+    </message>
+    <message>
+        <source>%1, mode %2</source>
+        <translation>%1, Modus %2</translation>
+    </message>
+    <message>
+        <source>#%1 %2</source>
+        <translation>#%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 (nearest match)</source>
+        <translation>%1 (nächste Übereinstimmung)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>requests %1 · retries %2 · timeouts %3 · refused %4 · failed %5</source>
+        <translation>Anfragen %1 · Wiederholungen %2 · Zeitüberschreitungen %3 · abgelehnt %4 · fehlgeschlagen %5</translation>
+    </message>
+    <message>
+        <source>Frames sent: %1. Refused: the device answered with an exception. Failed: no answer after every retry, or the link was lost.</source>
+        <translation>Gesendete Telegramme: %1. Abgelehnt: Das Gerät hat mit einer Ausnahme geantwortet. Fehlgeschlagen: keine Antwort nach allen Wiederholungen, oder die Verbindung ist abgerissen.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::MapReportDialog</name>
+    <message>
+        <source>What Did Not Map</source>
+        <translation>Nicht zugeordnete Werte</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): %3</source>
+        <translation>Modul %1 (%2): %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>Module %1: family &quot;%2&quot; is not known to this version; its %n value(s) are kept and saved unchanged.</source>
+        <translation>
+            <numerusform>Modul %1: Die Familie &quot;%2&quot; ist dieser Version nicht bekannt; der %n Wert des Moduls wird beibehalten und unverändert gespeichert.</numerusform>
+            <numerusform>Modul %1: Die Familie &quot;%2&quot; ist dieser Version nicht bekannt; die %n Werte des Moduls werden beibehalten und unverändert gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Rows that did not map are kept in the file and written back unchanged on save.</source>
+        <translation>Nicht zugeordnete Zeilen bleiben in der Datei erhalten und werden beim Speichern unverändert zurückgeschrieben.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::NewFileDialog</name>
+    <message>
+        <source>This combination cannot be a device.</source>
+        <translation>Diese Kombination ergibt kein gültiges Gerät.</translation>
+    </message>
+    <message>
+        <source>address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+    <message>
+        <source>address %1 (V%2)</source>
+        <translation>Adresse %1 (V%2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n module(s): %1. Values start at the dictionary&apos;s defaults.</source>
+        <translation>
+            <numerusform>%n Modul: %1. Die Werte beginnen bei den Vorgabewerten des Wörterbuchs.</numerusform>
+            <numerusform>%n Module: %1. Die Werte beginnen bei den Vorgabewerten des Wörterbuchs.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New parameter file</source>
+        <translation>Neue Parameterdatei</translation>
+    </message>
+    <message>
+        <source>&amp;Device family:</source>
+        <translation>&amp;Gerätefamilie:</translation>
+    </message>
+    <message>
+        <source>Software &amp;version:</source>
+        <translation>Software&amp;version:</translation>
+    </message>
+    <message>
+        <source>&amp;Mode:</source>
+        <translation>&amp;Modus:</translation>
+    </message>
+    <message>
+        <source>M&amp;odules:</source>
+        <translation>M&amp;odule:</translation>
+    </message>
+    <message>
+        <source>V%1</source>
+        <translation>V%1</translation>
+    </message>
+    <message>
+        <source>identified from the device</source>
+        <translation>vom Gerät ermittelt</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::NodeView</name>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation>online</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>offline</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Version</source>
+        <translation>Version</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>State word</source>
+        <translation>Statuswort</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ParameterEditor</name>
+    <message>
+        <source>Search name or text…</source>
+        <translation>Name oder Text suchen…</translation>
+    </message>
+    <message>
+        <source>Changed only</source>
+        <translation>Nur geänderte</translation>
+    </message>
+    <message>
+        <source>Differs from device</source>
+        <translation>Abweichend vom Gerät</translation>
+    </message>
+    <message>
+        <source>Show inactive</source>
+        <translation>Inaktive anzeigen</translation>
+    </message>
+    <message>
+        <source>Show Telegrams of This Parameter</source>
+        <translation>Telegramme dieses Parameters anzeigen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::SerialLineFields</name>
+    <message>
+        <source>The baud rate &quot;%1&quot; is not a positive whole number.</source>
+        <translation>Die Baudrate &quot;%1&quot; ist keine positive ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baudrate:</translation>
+    </message>
+    <message>
+        <source>&amp;Data bits:</source>
+        <translation>Da&amp;tenbits:</translation>
+    </message>
+    <message>
+        <source>Pa&amp;rity:</source>
+        <translation>Pa&amp;rität:</translation>
+    </message>
+    <message>
+        <source>&amp;Stop bits:</source>
+        <translation>&amp;Stoppbits:</translation>
+    </message>
+    <message>
+        <source>None (N)</source>
+        <translation>Keine (N)</translation>
+    </message>
+    <message>
+        <source>Even (E)</source>
+        <translation>Gerade (E)</translation>
+    </message>
+    <message>
+        <source>Odd (O)</source>
+        <translation>Ungerade (O)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::SerialPage</name>
+    <message>
+        <source>Serial (Modbus RTU)</source>
+        <translation>Seriell (Modbus RTU)</translation>
+    </message>
+    <message>
+        <source>Choose a serial port or type its path.</source>
+        <translation>Wählen Sie eine serielle Schnittstelle oder geben Sie ihren Pfad ein.</translation>
+    </message>
+    <message>
+        <source>Module address 0 is the Modbus broadcast address, which no module answers; use 1..%1.</source>
+        <translation>Moduladresse 0 ist die Modbus-Broadcast-Adresse, auf die kein Modul antwortet; verwenden Sie 1..%1.</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>Module &amp;address:</source>
+        <translation>Modul&amp;adresse:</translation>
+    </message>
+    <message>
+        <source>Modbus unit: the module&apos;s address on an RS485 line (E22, DIP switches); 1 on a point-to-point line</source>
+        <translation>Modbus-Unit: die Adresse des Moduls an einer RS485-Leitung (E22, DIP-Schalter); 1 bei einer Punkt-zu-Punkt-Verbindung</translation>
+    </message>
+    <message>
+        <source>Pro&amp;duct:</source>
+        <translation>Pro&amp;dukt:</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::SerialPortBox</name>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Serielle Schnittstellen neu auflisten</translation>
+    </message>
+    <message>
+        <source>/dev/ttyUSB0</source>
+        <translation>/dev/ttyUSB0</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::SimPage</name>
+    <message>
+        <source>Simulator</source>
+        <translation>Simulator</translation>
+    </message>
+    <message>
+        <source>No device family can be simulated: the dictionaries did not load.</source>
+        <translation>Keine Gerätefamilie kann simuliert werden: Die Wörterbücher wurden nicht geladen.</translation>
+    </message>
+    <message>
+        <source>Over Modbus RTU the OPAT master (address 0) is the broadcast address and cannot answer; choose Modbus TCP or the node image for a node with slaves.</source>
+        <translation>Über Modbus RTU ist der OPAT-Master (Adresse 0) die Broadcast-Adresse und kann nicht antworten; wählen Sie Modbus TCP oder das Knotenabbild für einen Knoten mit Slaves.</translation>
+    </message>
+    <message>
+        <source>&amp;Family:</source>
+        <translation>&amp;Familie:</translation>
+    </message>
+    <message>
+        <source>&amp;Mode:</source>
+        <translation>&amp;Modus:</translation>
+    </message>
+    <message>
+        <source>M&amp;odules:</source>
+        <translation>M&amp;odule:</translation>
+    </message>
+    <message>
+        <source>Modules of the node: an OPAT master and its CAN slaves, or DMA-2 modules with addresses 1, 2, 3 …</source>
+        <translation>Module des Knotens: ein OPAT-Master und seine CAN-Slaves oder DMA-2-Module mit den Adressen 1, 2, 3 …</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protokoll:</translation>
+    </message>
+    <message>
+        <source>not chosen at start-up</source>
+        <translation>beim Start nicht gewählt</translation>
+    </message>
+    <message>
+        <source>Automatic (Modbus RTU for one module, Modbus TCP for a node)</source>
+        <translation>Automatisch (Modbus RTU für ein Modul, Modbus TCP für einen Knoten)</translation>
+    </message>
+    <message>
+        <source>Modbus RTU</source>
+        <translation>Modbus RTU</translation>
+    </message>
+    <message>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Node image (cyclic telegrams, CMD 3/6/15)</source>
+        <translation>Knotenabbild (zyklische Telegramme, CMD 3/6/15)</translation>
+    </message>
+    <message>
+        <source>HART</source>
+        <translation>HART</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::TcpPage</name>
+    <message>
+        <source>TCP</source>
+        <translation>TCP</translation>
+    </message>
+    <message>
+        <source>Type the host name or IP address of the gateway.</source>
+        <translation>Geben Sie den Hostnamen oder die IP-Adresse des Gateways ein.</translation>
+    </message>
+    <message>
+        <source>A host name has no spaces: &quot;%1&quot;.</source>
+        <translation>Ein Hostname enthält keine Leerzeichen: &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>Port 0 cannot be connected to; Modbus TCP uses %1.</source>
+        <translation>Mit Port 0 ist keine Verbindung möglich; Modbus TCP verwendet %1.</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>192.168.0.10 or gateway.local</source>
+        <translation>192.168.0.10 oder gateway.local</translation>
+    </message>
+    <message>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;ort:</translation>
+    </message>
+    <message>
+        <source>P&amp;rotocol:</source>
+        <translation>P&amp;rotokoll:</translation>
+    </message>
+    <message>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Node image (cyclic telegrams, CMD 3/6/15)</source>
+        <translation>Knotenabbild (zyklische Telegramme, CMD 3/6/15)</translation>
+    </message>
+    <message>
+        <source>Module &amp;address:</source>
+        <translation>Modul&amp;adresse:</translation>
+    </message>
+    <message>
+        <source>Modbus unit / SADR of the module; 0 is the OPAT master</source>
+        <translation>Modbus-Unit / SADR des Moduls; 0 ist der OPAT-Master</translation>
+    </message>
+    <message>
+        <source>Pro&amp;duct:</source>
+        <translation>Pro&amp;dukt:</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::WriteDialog</name>
+    <message>
+        <source>Write Changes</source>
+        <translation>Änderungen schreiben</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>Neuer Wert</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Every change is on the device.</source>
+        <translation>Alle Änderungen sind im Gerät.</translation>
+    </message>
+    <message>
+        <source>Not every change reached the device: see the result of each parameter.</source>
+        <translation>Nicht alle Änderungen haben das Gerät erreicht: siehe Ergebnis je Parameter.</translation>
+    </message>
+    <message>
+        <source>(unknown)</source>
+        <translation>(unbekannt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n change(s) will be written to the device, one at a time, each read back.</source>
+        <translation>
+            <numerusform>%n Änderung wird in das Gerät geschrieben und zurückgelesen.</numerusform>
+            <numerusform>%n Änderungen werden nacheinander in das Gerät geschrieben und jeweils zurückgelesen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>Schreibe…</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,53 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>vt::app::DeviceController</name>
+    <message numerus="yes">
+        <source>Scan found %n module(s).</source>
+        <translation>
+            <numerusform>Scan found %n module.</numerusform>
+            <numerusform>Scan found %n modules.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::app::MainWindow</name>
+    <message numerus="yes">
+        <source>Connected: %n module(s).</source>
+        <translation>
+            <numerusform>Connected: %n module.</numerusform>
+            <numerusform>Connected: %n modules.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ParameterTreeModel</name>
+    <message numerus="yes">
+        <source>text, at most %n characters</source>
+        <translation>
+            <numerusform>text, at most %n character</numerusform>
+            <numerusform>text, at most %n characters</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n choices</source>
+        <translation>
+            <numerusform>%n choice</numerusform>
+            <numerusform>%n choices</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ReadAllJob</name>
+    <message numerus="yes">
+        <source>Module %1: %n rows not read (%2)</source>
+        <translation>
+            <numerusform>Module %1: %n row not read (%2)</numerusform>
+            <numerusform>Module %1: %n rows not read (%2)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vt::model::Session</name>
     <message numerus="yes">
         <source>No answer after %n attempt(s)</source>
@@ -32,6 +79,56 @@
         <translation>
             <numerusform>%n older record dropped</numerusform>
             <numerusform>%n older records dropped</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::CompareDialog</name>
+    <message numerus="yes">
+        <source>%n parameter(s) differ. Tick &quot;Take other&quot; for each value to take into this document.</source>
+        <translation>
+            <numerusform>%n parameter differs. Tick &quot;Take other&quot; for each value to take into this document.</numerusform>
+            <numerusform>%n parameters differ. Tick &quot;Take other&quot; for each value to take into this document.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::DecodePanel</name>
+    <message numerus="yes">
+        <source>%n byte(s).</source>
+        <translation>
+            <numerusform>%n byte.</numerusform>
+            <numerusform>%n bytes.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::MapReportDialog</name>
+    <message numerus="yes">
+        <source>Module %1: family &quot;%2&quot; is not known to this version; its %n value(s) are kept and saved unchanged.</source>
+        <translation>
+            <numerusform>Module %1: family &quot;%2&quot; is not known to this version; its %n value is kept and saved unchanged.</numerusform>
+            <numerusform>Module %1: family &quot;%2&quot; is not known to this version; its %n values are kept and saved unchanged.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::NewFileDialog</name>
+    <message numerus="yes">
+        <source>%n module(s): %1. Values start at the dictionary&apos;s defaults.</source>
+        <translation>
+            <numerusform>%n module: %1. Values start at the dictionary&apos;s defaults.</numerusform>
+            <numerusform>%n modules: %1. Values start at the dictionary&apos;s defaults.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::WriteDialog</name>
+    <message numerus="yes">
+        <source>%n change(s) will be written to the device, one at a time, each read back.</source>
+        <translation>
+            <numerusform>%n change will be written to the device and read back.</numerusform>
+            <numerusform>%n changes will be written to the device, one at a time, each read back.</numerusform>
         </translation>
     </message>
 </context>
