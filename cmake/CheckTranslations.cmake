@@ -6,7 +6,9 @@ file(GLOB_RECURSE sources
     ${SOURCE_DIR}/model/*.cpp ${SOURCE_DIR}/model/*.h ${SOURCE_DIR}/transports/*.cpp ${SOURCE_DIR}/transports/*.h)
 file(MAKE_DIRECTORY ${WORK})
 configure_file(${TS} ${WORK}/check_de.ts COPYONLY)
-execute_process(COMMAND ${LUPDATE} -no-obsolete -locations none ${sources} -ts ${WORK}/check_de.ts
+# Include paths as the update_translations target has them, so lupdate resolves the same contexts.
+execute_process(COMMAND ${LUPDATE} -no-obsolete -locations none -I ${SOURCE_DIR} -I ${SOURCE_DIR}/devices
+                        ${sources} -ts ${WORK}/check_de.ts
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "lupdate failed (${rc})")

@@ -50,10 +50,6 @@
 <context>
     <name>vt::app::FileController</name>
     <message>
-        <source>ValveTune parameter files (*.vtpar);;All files (*)</source>
-        <translation>ValveTune-Parameterdateien (*.vtpar);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>ValveTune</source>
         <translation>ValveTune</translation>
     </message>
@@ -108,6 +104,10 @@
     <message>
         <source>Compare with File</source>
         <translation>Mit Datei vergleichen</translation>
+    </message>
+    <message>
+        <source>ValveTune parameter files (*.vtpar);;Fold plans (*.vtfold);;All files (*)</source>
+        <translation>ValveTune-Parameterdateien (*.vtpar);;Modulpläne (*.vtfold);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -189,20 +189,12 @@
         <translation>Ü&amp;ber ValveTune…</translation>
     </message>
     <message>
-        <source>Not available in this version yet</source>
-        <translation>In dieser Version noch nicht verfügbar</translation>
-    </message>
-    <message>
         <source>Monitor</source>
         <translation>Monitor</translation>
     </message>
     <message>
         <source>Telegrams</source>
         <translation>Telegramme</translation>
-    </message>
-    <message>
-        <source>Live values of the connected device are plotted here.</source>
-        <translation>Hier werden die Live-Werte des verbundenen Geräts aufgezeichnet.</translation>
     </message>
     <message>
         <source>(none)</source>
@@ -682,6 +674,89 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldApply</name>
+    <message>
+        <source>The address changes cannot be ordered: two modules would need the same address.</source>
+        <translation>Die Adressänderungen lassen sich nicht ordnen: Zwei Module bräuchten dieselbe Adresse.</translation>
+    </message>
+    <message>
+        <source>Address not changed.</source>
+        <translation>Adresse nicht geändert.</translation>
+    </message>
+    <message>
+        <source>Module %1: identifying at address %2 …</source>
+        <translation>Modul %1: Identifizierung an Adresse %2 …</translation>
+    </message>
+    <message>
+        <source>Module %1: no module answers at address %2 (%3).</source>
+        <translation>Modul %1: An Adresse %2 antwortet kein Modul (%3).</translation>
+    </message>
+    <message>
+        <source>Software V%1 found, the plan says V%2.</source>
+        <translation>Software V%1 gefunden, der Plan sieht V%2 vor.</translation>
+    </message>
+    <message>
+        <source>Mode %1 found, the plan says mode %2.</source>
+        <translation>Modus %1 gefunden, der Plan sieht Modus %2 vor.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist on this module&apos;s software; not written.</source>
+        <translation>%1 gibt es in der Software dieses Moduls nicht; nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>Module %1: writing %2 option(s) …</source>
+        <translation>Modul %1: %2 Option(en) werden geschrieben …</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Module %1 answers at address %2: set its rotary switch to %3.</source>
+        <translation>Modul %1 antwortet an Adresse %2: Stellen Sie seinen Drehschalter auf %3.</translation>
+    </message>
+    <message>
+        <source>Module %1: address %2 → %3 …</source>
+        <translation>Modul %1: Adresse %2 → %3 …</translation>
+    </message>
+    <message>
+        <source>Module %1: E22 not written (%2).</source>
+        <translation>Modul %1: E22 nicht geschrieben (%2).</translation>
+    </message>
+    <message>
+        <source>no answer with E22 = %1 at address %1</source>
+        <translation>keine Antwort mit E22 = %1 an Adresse %1</translation>
+    </message>
+    <message>
+        <source>Module %1: %2.</source>
+        <translation>Modul %1: %2.</translation>
+    </message>
+    <message>
+        <source>Scan: identifying address %1 …</source>
+        <translation>Abfrage: Identifizierung von Adresse %1 …</translation>
+    </message>
+    <message>
+        <source>Scan: no module answers at address %1.</source>
+        <translation>Abfrage: An Adresse %1 antwortet kein Modul.</translation>
+    </message>
+    <message>
+        <source>Scan: address %1 answers as %2, expected %3.</source>
+        <translation>Abfrage: Adresse %1 antwortet als %2, erwartet %3.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Every module is configured and answers at its address.</source>
+        <translation>Alle Module sind konfiguriert und antworten an ihrer Adresse.</translation>
+    </message>
+    <message>
+        <source>The node is not configured as planned; see the modules&apos; notes.</source>
+        <translation>Der Knoten ist nicht wie geplant konfiguriert; siehe die Hinweise zu den Modulen.</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::LCurveTableModel</name>
     <message>
         <source>P%1</source>
@@ -713,6 +788,13 @@
     <message>
         <source>incomplete answer</source>
         <translation>unvollständige Antwort</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::MonitorSession</name>
+    <message>
+        <source>No channels are monitored.</source>
+        <translation>Es werden keine Kanäle überwacht.</translation>
     </message>
 </context>
 <context>
@@ -836,6 +918,21 @@
     <message>
         <source>Branch %1</source>
         <translation>Zweig %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::PlcTestBench</name>
+    <message>
+        <source>CMD 15 addresses 1 to %1 modules on this node, not %2.</source>
+        <translation>CMD 15 adressiert auf diesem Knoten 1 bis %1 Module, nicht %2.</translation>
+    </message>
+    <message>
+        <source>The PLC test bench needs a node image link.</source>
+        <translation>Der SPS-Prüfstand braucht eine Knotenabbild-Verbindung.</translation>
+    </message>
+    <message>
+        <source>The CMD 15 telegram for %1 modules does not fit the node&apos;s output image.</source>
+        <translation>Das CMD-15-Telegramm für %1 Module passt nicht in das Ausgangsabbild des Knotens.</translation>
     </message>
 </context>
 <context>
@@ -963,6 +1060,25 @@
     <message>
         <source>cannot be encoded</source>
         <translation>nicht codierbar</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::SetValueStep</name>
+    <message>
+        <source>E17 (set value activation mode) is %1: the analogue set value is added to the bus set value %2, so the controller would not see the step alone. The manuals: &quot;For switching off of the analogue set-value, set E17 = 2&quot; (DMA manual, ID 0x1F) and &quot;If only the set value by the PLC is used … E17 = 2 is required&quot; (OPAT manual §5.3). Set E17 to 2 (only the digital set values active) first.</source>
+        <translation>E17 (Sollwert-Aktivierungsmodus) ist %1: Der analoge Sollwert wird zum Bus-Sollwert %2 addiert, der Regler sähe den Sprung also nicht allein. Die Handbücher: &quot;For switching off of the analogue set-value, set E17 = 2&quot; (DMA-Handbuch, ID 0x1F) und &quot;If only the set value by the PLC is used … E17 = 2 is required&quot; (OPAT-Handbuch §5.3). Setzen Sie zuerst E17 auf 2 (nur die digitalen Sollwerte aktiv).</translation>
+    </message>
+    <message>
+        <source>This module has no set value activation mode E17; a bus set value step is not offered for it.</source>
+        <translation>Dieses Modul hat keinen Sollwert-Aktivierungsmodus E17; ein Bus-Sollwertsprung wird dafür nicht angeboten.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>Reading E17 failed: %1</source>
+        <translation>Lesen von E17 fehlgeschlagen: %1</translation>
     </message>
 </context>
 <context>
@@ -1100,6 +1216,13 @@
     <message>
         <source>no answer to attempt %1</source>
         <translation>keine Antwort auf Versuch %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::TuningJournal</name>
+    <message>
+        <source>module %1: %2</source>
+        <translation>Modul %1: %2</translation>
     </message>
 </context>
 <context>
@@ -1249,6 +1372,29 @@ Lizenziert unter der GNU General Public License, Version 3 oder später. Die Dia
     <message>
         <source>Pro&amp;duct:</source>
         <translation>Pro&amp;dukt:</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ChannelChooser</name>
+    <message>
+        <source>Monitor channels</source>
+        <translation>Monitor-Kanäle</translation>
+    </message>
+    <message>
+        <source>Tick the live values to plot. Each module is polled in one request per sample, so more modules share the link&apos;s rate; changing a module&apos;s channels starts its recording anew.</source>
+        <translation>Kreuzen Sie die Live-Werte an, die angezeigt werden sollen. Jedes Modul wird mit einer Anfrage je Messwert abgefragt, mehrere Module teilen sich also die Rate der Verbindung; wenn Sie die Kanäle eines Moduls ändern, beginnt seine Aufzeichnung neu.</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
     </message>
 </context>
 <context>
@@ -1599,6 +1745,469 @@ Senden?</translation>
     </message>
 </context>
 <context>
+    <name>vt::ui::FoldAddressPage</name>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>E24 stays as it is on the master.</source>
+        <translation>E24 bleibt am Master unverändert.</translation>
+    </message>
+    <message>
+        <source>Addresses</source>
+        <translation>Adressen</translation>
+    </message>
+    <message>
+        <source>Which address each module answers to, and how to set it.</source>
+        <translation>Auf welche Adresse jedes Modul antwortet und wie sie eingestellt wird.</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>What to do</source>
+        <translation>Vorgehen</translation>
+    </message>
+    <message>
+        <source>Number 1, 2, 3 … from the left</source>
+        <translation>Nummer 1, 2, 3 … von links</translation>
+    </message>
+    <message>
+        <source>Set the master&apos;s PROFIBUS address E24 to</source>
+        <translation>PROFIBUS-Adresse E24 des Masters setzen auf</translation>
+    </message>
+    <message>
+        <source>126 = the PROFIBUS master sets the address over the bus</source>
+        <translation>126 = der PROFIBUS-Master setzt die Adresse über den Bus</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldApplyPage</name>
+    <message>
+        <source>not applied</source>
+        <translation>nicht angewendet</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>running …</source>
+        <translation>läuft …</translation>
+    </message>
+    <message>
+        <source>done, found by the scan</source>
+        <translation>fertig, von der Abfrage gefunden</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>Offline planning: no node is connected, so nothing is written. Next continues to the PLC configuration.</source>
+        <translation>Offline-Planung: Es ist kein Knoten verbunden, daher wird nichts geschrieben. „Weiter“ führt zur SPS-Konfiguration.</translation>
+    </message>
+    <message>
+        <source>Writes each module&apos;s address and options (range-checked, read back), then identifies every planned address. Connection: %1</source>
+        <translation>Schreibt Adresse und Optionen jedes Moduls (bereichsgeprüft, zurückgelesen) und identifiziert dann jede geplante Adresse. Verbindung: %1</translation>
+    </message>
+    <message>
+        <source>Apply to module %1</source>
+        <translation>Auf Modul %1 anwenden</translation>
+    </message>
+    <message>
+        <source>Apply to the node</source>
+        <translation>Auf den Knoten anwenden</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Write the addresses and options to the modules and check that every module answers.</source>
+        <translation>Adressen und Optionen in die Module schreiben und prüfen, dass jedes Modul antwortet.</translation>
+    </message>
+    <message>
+        <source>Point-to-point cable: one module at a time</source>
+        <translation>Punkt-zu-Punkt-Kabel: ein Modul nach dem anderen</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Writes and notes</source>
+        <translation>Schreibvorgänge und Hinweise</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldBenchPage</name>
+    <message>
+        <source>Module %1 (SADR %2)</source>
+        <translation>Modul %1 (SADR %2)</translation>
+    </message>
+    <message>
+        <source>The test bench needs a node image connection (TCP with the node image protocol, or the simulator with protocol &quot;node-image&quot;).</source>
+        <translation>Der Prüfstand braucht eine Knotenabbild-Verbindung (TCP mit dem Knotenabbild-Protokoll oder den Simulator mit dem Protokoll &quot;node-image&quot;).</translation>
+    </message>
+    <message>
+        <source>error %1</source>
+        <translation>Fehler %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n answer(s))</source>
+        <translation>
+            <numerusform>%1 (%n Antwort)</numerusform>
+            <numerusform>%1 (%n Antworten)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Telegrams sent %1, answers %2, stale %3, exceptions %4, no answer %5; TADR %6</source>
+        <translation>Gesendete Telegramme %1, Antworten %2, veraltet %3, Ausnahmen %4, keine Antwort %5; TADR %6</translation>
+    </message>
+    <message>
+        <source>Sends CMD 15 to every module with the values below, TADR changing every telegram, and shows each module&apos;s answer as the node multiplexes them (DMA Profinet manual §4.2, OPAT manual §3.2).</source>
+        <translation>Sendet CMD 15 mit den Werten unten an jedes Modul, mit wechselnder TADR in jedem Telegramm, und zeigt die Antwort jedes Moduls, wie der Knoten sie multiplext (DMA-Profinet-Handbuch §4.2, OPAT-Handbuch §3.2).</translation>
+    </message>
+    <message>
+        <source>Not available: connect through a node image link (TCP with the node image protocol, or the simulator with protocol &quot;node-image&quot;) to use the test bench.</source>
+        <translation>Nicht verfügbar: Verbinden Sie sich über eine Knotenabbild-Verbindung (TCP mit dem Knotenabbild-Protokoll oder den Simulator mit dem Protokoll &quot;node-image&quot;), um den Prüfstand zu nutzen.</translation>
+    </message>
+    <message>
+        <source>PLC test bench</source>
+        <translation>SPS-Prüfstand</translation>
+    </message>
+    <message>
+        <source>The check a PLC programmer does: cyclic CMD 15 telegrams and the decoded answers.</source>
+        <translation>Die Prüfung eines SPS-Programmierers: zyklische CMD-15-Telegramme und die dekodierten Antworten.</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Control byte</source>
+        <translation>Steuer-Byte</translation>
+    </message>
+    <message>
+        <source>VALUE1 out</source>
+        <translation>VALUE1 aus</translation>
+    </message>
+    <message>
+        <source>VALUE2 out</source>
+        <translation>VALUE2 aus</translation>
+    </message>
+    <message>
+        <source>Status word</source>
+        <translation>Statuswort</translation>
+    </message>
+    <message>
+        <source>VALUE1 in</source>
+        <translation>VALUE1 ein</translation>
+    </message>
+    <message>
+        <source>VALUE2 in</source>
+        <translation>VALUE2 ein</translation>
+    </message>
+    <message>
+        <source>Recent TADR</source>
+        <translation>Letzte TADR</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Cycle:</source>
+        <translation>Zyklus:</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldCheckPage</name>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s) must be fixed before the plan can be applied; go Back to change it.</source>
+        <translation>
+            <numerusform>%n Fehler muss behoben werden, bevor der Plan angewendet werden kann; gehen Sie zurück, um ihn zu ändern.</numerusform>
+            <numerusform>%n Fehler müssen behoben werden, bevor der Plan angewendet werden kann; gehen Sie zurück, um ihn zu ändern.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>No errors; %n warning(s) to read.</source>
+        <translation>
+            <numerusform>Keine Fehler; %n Warnung zu lesen.</numerusform>
+            <numerusform>Keine Fehler; %n Warnungen zu lesen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The plan passes every check.</source>
+        <translation>Der Plan besteht alle Prüfungen.</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>What the manuals say about this plan. Errors block Next.</source>
+        <translation>Was die Handbücher zu diesem Plan sagen. Fehler sperren „Weiter“.</translation>
+    </message>
+    <message>
+        <source>The PLC program already exists; the SNUM it sends:</source>
+        <translation>Das SPS-Programm existiert bereits; die SNUM, die es sendet:</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Schweregrad</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <source>Finding</source>
+        <translation>Befund</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldModulesPage</name>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source> (master)</source>
+        <translation> (Master)</translation>
+    </message>
+    <message>
+        <source> (CAN slave)</source>
+        <translation> (CAN-Slave)</translation>
+    </message>
+    <message>
+        <source>V%1</source>
+        <translation>V%1</translation>
+    </message>
+    <message>
+        <source>Mode %1</source>
+        <translation>Modus %1</translation>
+    </message>
+    <message>
+        <source>Scan finished: no module answered.</source>
+        <translation>Abfrage beendet: Kein Modul hat geantwortet.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan finished: %n module(s) at address %1.</source>
+        <translation>
+            <numerusform>Abfrage beendet: %n Modul an Adresse %1.</numerusform>
+            <numerusform>Abfrage beendet: %n Module an den Adressen %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scanning address %1 …</source>
+        <translation>Adresse %1 wird abgefragt …</translation>
+    </message>
+    <message>
+        <source>Modules</source>
+        <translation>Module</translation>
+    </message>
+    <message>
+        <source>How many modules the node has and which software and mode each runs. Scan the connected node, or enter them for offline planning.</source>
+        <translation>Wie viele Module der Knoten hat und welche Software und welchen Modus jedes betreibt. Fragen Sie den verbundenen Knoten ab oder geben Sie die Module für eine Offline-Planung ein.</translation>
+    </message>
+    <message>
+        <source>Modules on the node:</source>
+        <translation>Module am Knoten:</translation>
+    </message>
+    <message>
+        <source>Scan the connected node</source>
+        <translation>Verbundenen Knoten abfragen</translation>
+    </message>
+    <message>
+        <source>Identifies every address of the connection and takes the modules that answer.</source>
+        <translation>Identifiziert jede Adresse der Verbindung und übernimmt die Module, die antworten.</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>Software</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Name (for the PLC sheet)</source>
+        <translation>Name (für das SPS-Blatt)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldNodePage</name>
+    <message>
+        <source>The OPAT master carries the PROFIBUS interface (SADR 0) and drives up to seven OPAT CAN slaves (SADR 1 to 7 by rotary switch). One CMD 15 telegram reaches all eight. (OPAT manual §1.4, §3)</source>
+        <translation>Der OPAT-Master trägt die PROFIBUS-Schnittstelle (SADR 0) und steuert bis zu sieben OPAT-CAN-Slaves (SADR 1 bis 7 per Drehschalter). Ein CMD-15-Telegramm erreicht alle acht. (OPAT-Handbuch §1.4, §3)</translation>
+    </message>
+    <message>
+        <source>DMA-2 modules behind a PROFIBUS node module; each module answers to its E22. CMD 15 reaches E22 = 1 to 5. The node&apos;s product number decides the GSD file. (DMA Profibus Anleitung §1.3, §4–5)</source>
+        <translation>DMA-2-Module hinter einem PROFIBUS-Knotenmodul; jedes Modul antwortet auf seine E22. CMD 15 erreicht E22 = 1 bis 5. Die Produktnummer des Knotens bestimmt die GSD-Datei. (DMA Profibus Anleitung §1.3, §4–5)</translation>
+    </message>
+    <message>
+        <source>DMA-2 modules behind a PROFINET node module; each module answers to its E22. CMD 15 reaches E22 = 1 to 5. (DMA Profinet manual §1.3, §4–5)</source>
+        <translation>DMA-2-Module hinter einem PROFINET-Knotenmodul; jedes Modul antwortet auf seine E22. CMD 15 erreicht E22 = 1 bis 5. (DMA-Profinet-Handbuch §1.3, §4–5)</translation>
+    </message>
+    <message>
+        <source>Node type</source>
+        <translation>Knotentyp</translation>
+    </message>
+    <message>
+        <source>Which kind of node are you setting up?</source>
+        <translation>Welche Art von Knoten richten Sie ein?</translation>
+    </message>
+    <message>
+        <source>Product number of the node:</source>
+        <translation>Produktnummer des Knotens:</translation>
+    </message>
+    <message>
+        <source>e.g. 5 005 123 45</source>
+        <translation>z. B. 5 005 123 45</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldOptionsPage</name>
+    <message>
+        <source>Module %1 — %2, V%3, mode %4</source>
+        <translation>Modul %1 — %2, V%3, Modus %4</translation>
+    </message>
+    <message>
+        <source>No parameter list for this software version: options cannot be set.</source>
+        <translation>Keine Parameterliste für diese Softwareversion: Optionen können nicht gesetzt werden.</translation>
+    </message>
+    <message>
+        <source>This module has no bus options to set.</source>
+        <translation>Dieses Modul hat keine Busoptionen zum Setzen.</translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation>Optionen</translation>
+    </message>
+    <message>
+        <source>Tick an option to write it. Unticked options stay as they are on the module.</source>
+        <translation>Kreuzen Sie eine Option an, um sie zu schreiben. Nicht angekreuzte Optionen bleiben im Modul unverändert.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldPlcPage</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>PDF exportieren</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export HTML</source>
+        <translation>HTML exportieren</translation>
+    </message>
+    <message>
+        <source>HTML (*.html)</source>
+        <translation>HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>CSV exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save fold plan</source>
+        <translation>Modulplan speichern</translation>
+    </message>
+    <message>
+        <source>Fold plan (*.vtfold)</source>
+        <translation>Modulplan (*.vtfold)</translation>
+    </message>
+    <message>
+        <source>fold</source>
+        <translation>modulplan</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>Geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>PLC configuration</source>
+        <translation>SPS-Konfiguration</translation>
+    </message>
+    <message>
+        <source>What the PLC programmer installs and configures. Export it or save the plan.</source>
+        <translation>Was der SPS-Programmierer installiert und konfiguriert. Exportieren Sie es oder speichern Sie den Plan.</translation>
+    </message>
+    <message>
+        <source>Export PDF …</source>
+        <translation>PDF exportieren …</translation>
+    </message>
+    <message>
+        <source>Export HTML …</source>
+        <translation>HTML exportieren …</translation>
+    </message>
+    <message>
+        <source>Export CSV …</source>
+        <translation>CSV exportieren …</translation>
+    </message>
+    <message>
+        <source>Save plan …</source>
+        <translation>Plan speichern …</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::FoldWizard</name>
+    <message>
+        <source>Module fold wizard</source>
+        <translation>Knoten-Assistent</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::FrameDetail</name>
     <message>
         <source>Error at byte %1: %2</source>
@@ -1827,6 +2436,136 @@ Senden?</translation>
     <message>
         <source>Rows that did not map are kept in the file and written back unchanged on save.</source>
         <translation>Nicht zugeordnete Zeilen bleiben in der Datei erhalten und werden beim Speichern unverändert zurückgeschrieben.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::MonitorPlot</name>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::MonitorView</name>
+    <message>
+        <source>Monitor, module %1: %2</source>
+        <translation>Monitor, Modul %1: %2</translation>
+    </message>
+    <message>
+        <source>achieved: –</source>
+        <translation>erreicht: –</translation>
+    </message>
+    <message>
+        <source>%1: %2 Hz</source>
+        <translation>%1: %2 Hz</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>achieved: %1</source>
+        <translation>erreicht: %1</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export monitor</source>
+        <translation>Monitor exportieren</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Exportiert nach %1</translation>
+    </message>
+    <message>
+        <source>Export to %1 failed: %2</source>
+        <translation>Export nach %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>could not write the file</source>
+        <translation>die Datei konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Rate:</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>as fast as the link allows</source>
+        <translation>so schnell die Verbindung erlaubt</translation>
+    </message>
+    <message>
+        <source>Polls per second and module; the lowest value polls back to back, as fast as the link allows.</source>
+        <translation>Abfragen je Sekunde und Modul; der kleinste Wert fragt ohne Pause ab, so schnell die Verbindung erlaubt.</translation>
+    </message>
+    <message>
+        <source>Window:</source>
+        <translation>Fenster:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Follow</source>
+        <translation>Folgen</translation>
+    </message>
+    <message>
+        <source>Keep the newest samples in view. Dragging or zooming the time axis turns this off.</source>
+        <translation>Die neuesten Messwerte im Blick behalten. Ziehen oder Zoomen der Zeitachse schaltet dies aus.</translation>
+    </message>
+    <message>
+        <source>Channels…</source>
+        <translation>Kanäle…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Visible range as CSV…</source>
+        <translation>Sichtbarer Bereich als CSV…</translation>
+    </message>
+    <message>
+        <source>Everything as CSV…</source>
+        <translation>Alles als CSV…</translation>
+    </message>
+    <message>
+        <source>Plot as PNG…</source>
+        <translation>Diagramm als PNG…</translation>
+    </message>
+    <message>
+        <source>Plot as PDF…</source>
+        <translation>Diagramm als PDF…</translation>
     </message>
 </context>
 <context>
@@ -2083,6 +2822,45 @@ Senden?</translation>
     <message>
         <source>HART</source>
         <translation>HART</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::StepControl</name>
+    <message>
+        <source>module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>No connected module has a bus set value (A1.01/A2.01); the step is not available.</source>
+        <translation>Kein verbundenes Modul hat einen Bus-Sollwert (A1.01/A2.01); der Sprung ist nicht verfügbar.</translation>
+    </message>
+    <message>
+        <source>Checking E17, then writing %1 …</source>
+        <translation>E17 wird geprüft, dann wird %1 geschrieben …</translation>
+    </message>
+    <message>
+        <source>Writing E17 = 2 …</source>
+        <translation>E17 = 2 wird geschrieben …</translation>
+    </message>
+    <message>
+        <source>Step:</source>
+        <translation>Sprung:</translation>
+    </message>
+    <message>
+        <source>Write step</source>
+        <translation>Sprung schreiben</translation>
+    </message>
+    <message>
+        <source>Writes the bus set value (range-checked, read back) and marks it on the time axis. E17 must be 2 (only the digital set values active), as the manuals require.</source>
+        <translation>Schreibt den Bus-Sollwert (bereichsgeprüft, zurückgelesen) und markiert ihn auf der Zeitachse. E17 muss 2 sein (nur die digitalen Sollwerte aktiv), wie es die Handbücher verlangen.</translation>
+    </message>
+    <message>
+        <source>Set E17 = 2</source>
+        <translation>E17 = 2 setzen</translation>
+    </message>
+    <message>
+        <source>Switches the analogue set value off (E17 = 2, stored in EEPROM).</source>
+        <translation>Schaltet den analogen Sollwert ab (E17 = 2, im EEPROM gespeichert).</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,43 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>FoldBenchPage</name>
+    <message numerus="yes">
+        <source>%1 (%n answer(s))</source>
+        <translation>
+            <numerusform>%1 (%n answer)</numerusform>
+            <numerusform>%1 (%n answers)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>FoldCheckPage</name>
+    <message numerus="yes">
+        <source>%n error(s) must be fixed before the plan can be applied; go Back to change it.</source>
+        <translation>
+            <numerusform>%n error must be fixed before the plan can be applied; go Back to change it.</numerusform>
+            <numerusform>%n errors must be fixed before the plan can be applied; go Back to change them.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>No errors; %n warning(s) to read.</source>
+        <translation>
+            <numerusform>No errors; %n warning to read.</numerusform>
+            <numerusform>No errors; %n warnings to read.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>FoldModulesPage</name>
+    <message numerus="yes">
+        <source>Scan finished: %n module(s) at address %1.</source>
+        <translation>
+            <numerusform>Scan finished: %n module at address %1.</numerusform>
+            <numerusform>Scan finished: %n modules at addresses %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vt::app::DeviceController</name>
     <message numerus="yes">
         <source>Scan found %n module(s).</source>

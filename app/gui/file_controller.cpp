@@ -17,7 +17,10 @@
 namespace vt::app {
 namespace {
 
-QString fileFilter() { return FileController::tr("ValveTune parameter files (*.vtpar);;All files (*)"); }
+QString fileFilter()
+{
+    return FileController::tr("ValveTune parameter files (*.vtpar);;Fold plans (*.vtfold);;All files (*)");
+}
 
 } // namespace
 
@@ -89,6 +92,12 @@ void FileController::open()
 
 bool FileController::openPath(const QString &path)
 {
+    // A fold plan (the fold wizard's file) opens in the wizard, not in the parameter editor.
+    if (QFileInfo(path).suffix().compare(QLatin1String("vtfold"), Qt::CaseInsensitive) == 0) {
+        m_recent.add(QFileInfo(path).absoluteFilePath());
+        emit foldPlanRequested(QFileInfo(path).absoluteFilePath());
+        return true;
+    }
     auto file = model::readParamFile(path, language());
     if (!file.ok()) {
         m_recent.remove(path);

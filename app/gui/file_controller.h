@@ -50,6 +50,8 @@ public:
 
 signals:
     void statusMessage(const QString &text);
+    // A .vtfold fold plan was opened: the main window shows it in the fold wizard.
+    void foldPlanRequested(const QString &path);
 
 private:
     void fail(const QString &message);

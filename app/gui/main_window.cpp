@@ -13,7 +13,9 @@
 #include "widgets/curve/lcurve_editor.h"
 #include "widgets/connect/link_status_widget.h"
 #include "widgets/editor/node_view.h"
+#include "widgets/fold/fold_wizard.h"
 #include "widgets/inspector/inspector_view.h"
+#include "widgets/monitor/monitor_view.h"
 #include "widgets/editor/parameter_editor.h"
 #include "workspace.h"
 
@@ -29,19 +31,6 @@
 #include <QUndoStack>
 
 namespace vt::app {
-namespace {
-
-QLabel *hintLabel(QWidget *parent)
-{
-    auto *label = new QLabel(parent);
-    label->setAlignment(Qt::AlignCenter);
-    label->setWordWrap(true);
-    label->setTextFormat(Qt::PlainText);
-    label->setMargin(12);
-    return label;
-}
-
-} // namespace
 
 MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *parent)
     : QMainWindow(parent), m_settings(settings), m_language(language)
@@ -123,9 +112,6 @@ void MainWindow::createActions()
     m_english = make("actionEnglish");
     m_german = make("actionGerman");
 
-    // The fold wizard arrives with its own milestone: visible, disabled, and saying so.
-    m_foldWizard->setEnabled(false);
-
     auto *group = new QActionGroup(this);
     for (QAction *a : {m_english, m_german}) {
         a->setCheckable(true);
@@ -149,6 +135,7 @@ void MainWindow::createActions()
     connect(m_writeChanges, &QAction::triggered, m_device, &DeviceController::writeChanges);
     connect(m_compareDevice, &QAction::triggered, m_device, &DeviceController::compareWithDevice);
     connect(m_scanNode, &QAction::triggered, m_device, &DeviceController::scan);
+    connect(m_foldWizard, &QAction::triggered, this, [this] { openFoldWizard(); });
     connect(m_liveValues, &QAction::toggled, this, [this](bool on) { m_workspace->setLivePollRate(on ? 2.0 : 0.0); });
 }
 
@@ -203,8 +190,11 @@ void MainWindow::createDocks()
     };
     m_nodeView = new ui::NodeView(m_workspace->document(), this);
     m_nodeDock = dock("dockNode", m_nodeView, Qt::LeftDockWidgetArea);
-    m_monitorHint = hintLabel(this);
-    m_monitorDock = dock("dockMonitor", m_monitorHint, Qt::RightDockWidgetArea);
+    // The live plot of desired / actual value and solenoid currents, with the tuning journal.
+    m_monitor = new ui::MonitorView(this);
+    m_monitorDock = dock("dockMonitor", m_monitor, Qt::RightDockWidgetArea);
+    connect(m_monitor, &ui::MonitorView::statusMessage, this, &MainWindow::showStatus);
+    connect(m_device, &DeviceController::written, m_monitor, &ui::MonitorView::journalWrites);
     // Every frame in and out of the connection (Workspace's TelegramRecorder fills the log).
     m_inspector = new ui::InspectorView(this);
     m_inspector->setLog(&m_workspace->telegramLog());
@@ -248,6 +238,7 @@ void MainWindow::connectWorkspace()
 {
     model::ParameterDocument &doc = m_workspace->document();
     connect(m_files, &FileController::statusMessage, this, &MainWindow::showStatus);
+    connect(m_files, &FileController::foldPlanRequested, this, [this](const QString &path) { openFoldWizard(path); });
     connect(m_device, &DeviceController::statusMessage, this, &MainWindow::showStatus);
     connect(doc.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&doc, &model::ParameterDocument::filePathChanged, this, [this] {
@@ -260,15 +251,25 @@ void MainWindow::connectWorkspace()
         showStatus(tr("Connecting to %1…").arg(description));
         updateActions();
     });
+    // The wizard holds the connection: it lets go before the connection is destroyed.
+    connect(m_workspace, &Workspace::aboutToDisconnect, this, [this] {
+        m_monitor->clearConnection();
+        if (m_wizard)
+            m_wizard->setConnection(nullptr);
+    });
     connect(m_workspace, &Workspace::connected, this, [this] {
+        if (m_wizard)
+            m_wizard->setConnection(m_workspace->connection());
         m_linkStatus->setModules(m_workspace->modules());
         m_nodeView->setNodeText(m_workspace->connection()->describe());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
+        m_monitor->setConnection(m_workspace->connection(), m_workspace->modules());
         showStatus(tr("Connected: %n module(s).", nullptr, static_cast<int>(m_workspace->modules().size())));
         updateActions();
         m_device->readAll(); // what the engineer does first anyway; the live d-values start with it
     });
     connect(m_workspace, &Workspace::scanFinished, this, [this] {
+        m_monitor->setConnection(m_workspace->connection(), m_workspace->modules());
         m_linkStatus->setModules(m_workspace->modules());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
     });
@@ -284,6 +285,25 @@ void MainWindow::connectWorkspace()
         showStatus(reason.isEmpty() ? tr("Disconnected.") : tr("Connection lost: %1").arg(reason));
         updateActions();
     });
+}
+
+ui::FoldWizard *MainWindow::openFoldWizard(const QString &planPath)
+{
+    if (!m_wizard) {
+        m_wizard = new ui::FoldWizard(m_workspace->dictionaries(),
+                                      m_workspace->isConnected() ? m_workspace->connection() : nullptr, this);
+        m_wizard->setAttribute(Qt::WA_DeleteOnClose);
+    } else if (m_workspace->isConnected()) {
+        m_wizard->setConnection(m_workspace->connection());
+    }
+    if (!planPath.isEmpty()) {
+        QString error;
+        if (!m_wizard->openPlan(planPath, &error))
+            showStatus(error);
+    }
+    m_wizard->show();
+    m_wizard->raise();
+    return m_wizard;
 }
 
 void MainWindow::updateActions()
@@ -354,14 +374,11 @@ void MainWindow::retranslate()
     m_english->setText(QStringLiteral("English")); // language names stay in their own language
     m_german->setText(QStringLiteral("Deutsch"));
     m_about->setText(tr("&About ValveTune…"));
-    if (!m_foldWizard->isEnabled())
-        m_foldWizard->setStatusTip(tr("Not available in this version yet"));
 
     m_nodeDock->setWindowTitle(tr("Node"));
     m_monitorDock->setWindowTitle(tr("Monitor"));
     m_telegramsDock->setWindowTitle(tr("Telegrams"));
     m_curveDock->setWindowTitle(tr("Linearisation"));
-    m_monitorHint->setText(tr("Live values of the connected device are plotted here."));
     updateTitle();
     rebuildRecentMenu();
 }

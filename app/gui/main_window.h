@@ -7,6 +7,7 @@
 #include "model/session/connection.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
 class QAction;
 class QDockWidget;
@@ -24,7 +25,9 @@ class RecentFiles;
 }
 
 namespace vt::ui {
+class FoldWizard;
 class InspectorView;
+class MonitorView;
 class LinkStatusWidget;
 class LCurveEditor;
 class NodeView;
@@ -57,7 +60,11 @@ public:
     QDockWidget *curveDock() const { return m_curveDock; }
     ui::LCurveEditor *curveEditor() const { return m_curveEditor; }
     ui::InspectorView *inspector() const { return m_inspector; }
+    ui::MonitorView *monitor() const { return m_monitor; }
     ui::LinkStatusWidget *linkStatus() const { return m_linkStatus; }
+
+    // Device ▸ Fold Wizard; with a path, the wizard opens on that saved fold plan (.vtfold).
+    ui::FoldWizard *openFoldWizard(const QString &planPath = {});
 
     // Saves the window layout into the settings (also done on close).
     void saveLayout();
@@ -92,6 +99,8 @@ private:
     model::CurveBinding *m_curveBinding = nullptr;
     ui::LCurveEditor *m_curveEditor = nullptr;
     ui::InspectorView *m_inspector = nullptr;
+    ui::MonitorView *m_monitor = nullptr;
+    QPointer<ui::FoldWizard> m_wizard;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
@@ -128,7 +137,6 @@ private:
     QDockWidget *m_monitorDock = nullptr;
     QDockWidget *m_telegramsDock = nullptr;
     QDockWidget *m_curveDock = nullptr;
-    QLabel *m_monitorHint = nullptr;
     ui::LinkStatusWidget *m_linkStatus = nullptr;
 };
 

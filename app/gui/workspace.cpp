@@ -16,6 +16,8 @@ void Workspace::teardown()
 {
     ++m_generation;
     m_ready = false;
+    if (m_connection)
+        emit aboutToDisconnect();
     m_live.reset();
     m_recorder.reset();
     if (m_connection) {

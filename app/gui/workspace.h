@@ -48,6 +48,8 @@ public:
 
 signals:
     void connecting(const QString &description);
+    // The connection is about to be destroyed: drop every pointer to it now.
+    void aboutToDisconnect();
     void connected();
     void connectFailed(const QString &reason);
     void disconnected(const QString &reason); // empty when the user disconnected

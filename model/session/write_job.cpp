@@ -1,5 +1,7 @@
 #include "write_job.h"
 
+#include <QPointer>
+
 #include "dict/cooking.h"
 
 #include <algorithm>
@@ -160,7 +162,9 @@ void WriteJob::next()
 void WriteJob::writeItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.write(m_module, *item.row, item.value, Priority::User, [this, index](const Outcome &outcome) {
+    m_access.write(m_module, *item.row, item.value, Priority::User, [this, guard = QPointer<WriteJob>(this), index](const Outcome &outcome) {
+        if (!guard)
+            return; // the job was destroyed while its request was out
         m_sinceWrite.start(); // pacing counts from the device's acknowledgement (or the give-up)
         WriteItem &it = m_items[static_cast<std::size_t>(index)];
         switch (outcome.status) {
@@ -198,7 +202,9 @@ void WriteJob::writeItem(int index)
 void WriteJob::verifyItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(m_module, {item.row}, Priority::User, [this, index](const ReadResult &result) {
+    m_access.read(m_module, {item.row}, Priority::User, [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
+        if (!guard)
+            return; // the job was destroyed while its request was out
         WriteItem &it = m_items[static_cast<std::size_t>(index)];
         if (result.values.size() == 1) {
             it.readBack = result.values.front().value;
@@ -225,7 +231,9 @@ void WriteJob::verifyItem(int index)
 void WriteJob::probeItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(m_module, {item.row}, Priority::User, [this, index](const ReadResult &result) {
+    m_access.read(m_module, {item.row}, Priority::User, [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
+        if (!guard)
+            return; // the job was destroyed while its request was out
         WriteItem &it = m_items[static_cast<std::size_t>(index)];
         if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
             it.readBack = result.values.front().value;

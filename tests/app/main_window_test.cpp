@@ -103,7 +103,7 @@ TEST_F(Fixture, LayoutIsKeptInTheSettings)
     {
         MainWindow w(settings, language);
         w.show();
-        w.resize(1400, 950);
+        w.resize(1700, 1050);
         w.telegramsDock()->hide();
         w.saveLayout();
     }
@@ -111,7 +111,7 @@ TEST_F(Fixture, LayoutIsKeptInTheSettings)
     again.show();
     EXPECT_FALSE(again.telegramsDock()->isVisible());
     EXPECT_TRUE(again.nodeDock()->isVisible());
-    EXPECT_EQ(again.size(), QSize(1400, 950));
+    EXPECT_EQ(again.size(), QSize(1700, 1050));
 }
 
 TEST(Language, RejectsUnknownCodesAndKeepsTheCurrentOne)

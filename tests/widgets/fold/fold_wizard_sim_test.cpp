@@ -1,0 +1,197 @@
+// The fold wizard on a simulated node (issue #9 steps 2, 6 and 8): the scan finds the modules,
+// Apply writes addresses and options and the closing scan confirms them; the test bench gets
+// every module's decoded CMD 15 answer over the node image with TADR toggling.
+#include "dict/dictionary_loader.h"
+#include "model/session/connection.h"
+#include "sim/hcs_module.h"
+#include "sim/hcs_node.h"
+#include "widgets/fold/fold_apply_page.h"
+#include "widgets/fold/fold_bench_page.h"
+#include "widgets/fold/fold_modules_page.h"
+#include "widgets/fold/fold_wizard.h"
+
+#include <QAbstractButton>
+#include <QCheckBox>
+#include <QLabel>
+#include <QRadioButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+#include <gtest/gtest.h>
+
+namespace vt::ui {
+namespace {
+
+constexpr int kWaitMs = 30'000;
+
+std::unique_ptr<model::Connection> openSim(const std::string &family, std::size_t modules,
+                                           const std::string &protocol)
+{
+    model::ConnectionSpec spec;
+    spec.kind = model::ConnectionKind::Sim;
+    spec.sim.family = family;
+    spec.sim.modules = modules;
+    spec.sim.protocol = protocol;
+    auto made = model::Connection::create(spec, *dev::builtinDictionaries());
+    if (!made.ok()) {
+        ADD_FAILURE() << made.error().toStdString();
+        return nullptr;
+    }
+    std::unique_ptr<model::Connection> connection = std::move(made).value();
+    connection->open();
+    if (!QTest::qWaitFor([&] { return connection->isOpen(); }, kWaitMs)) {
+        ADD_FAILURE() << "the simulator link did not open";
+        return nullptr;
+    }
+    return connection;
+}
+
+void nextTo(FoldWizard &wizard, int id)
+{
+    while (wizard.currentId() != id) {
+        const int before = wizard.currentId();
+        wizard.next();
+        if (wizard.currentId() == before) {
+            ADD_FAILURE() << "stuck on page " << before;
+            return;
+        }
+    }
+}
+
+// SimSpec "dma-pn-v51", 3 modules, Modbus TCP; the modules start on E22 = 4, 5, 6.
+TEST(FoldWizardSim, ScanApplyAndVerify)
+{
+    auto c = openSim("dma-pn-v51", 3, "modbus-tcp");
+    ASSERT_TRUE(c);
+    dev::sim::HcsNode &node = *c->simEndpoint()->node();
+    for (std::size_t i = 0; i < 3; ++i)
+        node.module(i).setAddress(static_cast<std::uint8_t>(4 + i));
+
+    FoldWizard wizard(*dev::builtinDictionaries(), c.get());
+    wizard.show();
+    wizard.restart();
+    wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
+    nextTo(wizard, FoldWizard::ModulesPageId);
+    auto *modules = static_cast<FoldModulesPage *>(wizard.currentPage());
+    QSignalSpy scanned(modules, &FoldModulesPage::scanFinished);
+    modules->findChild<QAbstractButton *>(QStringLiteral("scan"))->click();
+    ASSERT_TRUE(scanned.wait(kWaitMs));
+    EXPECT_EQ(scanned.front().front().toInt(), 3);
+    ASSERT_EQ(wizard.plan().modules.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(wizard.plan().modules[i].version, 51);
+        EXPECT_EQ(wizard.plan().modules[i].address, static_cast<int>(4 + i));
+    }
+    EXPECT_EQ(wizard.foundAddresses(), (std::vector<int>{4, 5, 6}));
+
+    nextTo(wizard, FoldWizard::AddressPageId);
+    wizard.currentPage()
+        ->findChild<QAbstractButton *>(QStringLiteral("numberLeftToRight"))
+        ->click();
+    for (model::FoldModule &m : wizard.editPlan().modules) {
+        m.options.e17 = 2;
+        m.options.e23 = 30;
+    }
+    nextTo(wizard, FoldWizard::ApplyPageId);
+    auto *apply = static_cast<FoldApplyPage *>(wizard.currentPage());
+    QSignalSpy applied(apply, &FoldApplyPage::applyFinished);
+    apply->findChild<QAbstractButton *>(QStringLiteral("apply"))->click();
+    EXPECT_FALSE(wizard.button(QWizard::NextButton)->isEnabled()); // while writing
+    ASSERT_TRUE(applied.wait(kWaitMs));
+    EXPECT_TRUE(applied.front().front().toBool());
+    EXPECT_TRUE(wizard.button(QWizard::NextButton)->isEnabled());
+    auto *table = apply->findChild<QTableWidget *>(QStringLiteral("applyResults"));
+    for (std::size_t i = 0; i < 3; ++i) {
+        dev::sim::HcsModule &m = node.module(i);
+        EXPECT_EQ(m.address(), i + 1);
+        EXPECT_EQ(m.storage().raw(*m.dictionary().find("E17")->id), 2);
+        EXPECT_EQ(m.storage().raw(*m.dictionary().find("E23")->id), 30);
+        ASSERT_TRUE(apply->job()->modules()[i].found.has_value());
+        EXPECT_TRUE(*apply->job()->modules()[i].found);
+        EXPECT_FALSE(table->item(static_cast<int>(i), 2)->text().isEmpty());
+    }
+}
+
+// SimSpec "dma-pn-v51", 3 modules, node image: the bench page decodes each module's answer.
+TEST(FoldWizardSim, BenchShowsEveryModulesAnswer)
+{
+    auto c = openSim("dma-pn-v51", 3, "node-image");
+    ASSERT_TRUE(c);
+    FoldWizard wizard(*dev::builtinDictionaries(), c.get());
+    wizard.show();
+    wizard.restart();
+    wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
+    nextTo(wizard, FoldWizard::BenchPageId);
+    auto *page = static_cast<FoldBenchPage *>(wizard.currentPage());
+    ASSERT_TRUE(page->findChild<QAbstractButton *>(QStringLiteral("startBench"))->isEnabled());
+    ASSERT_TRUE(page->startBench());
+    ASSERT_TRUE(page->bench());
+    EXPECT_TRUE(QTest::qWaitFor(
+        [&] {
+            for (const model::BenchModule &m : page->bench()->modules())
+                if (m.answers < 2)
+                    return false;
+            return true;
+        },
+        kWaitMs));
+    page->stopBench();
+    auto *table = page->findChild<QTableWidget *>(QStringLiteral("bench"));
+    ASSERT_EQ(table->rowCount(), 3);
+    for (int row = 0; row < 3; ++row) {
+        EXPECT_TRUE(table->item(row, 4)->text().startsWith(QStringLiteral("0x")))
+            << row;                                          // status word
+        EXPECT_FALSE(table->item(row, 5)->text().isEmpty()); // VALUE1 in
+        EXPECT_FALSE(table->item(row, 7)->text().isEmpty()); // TADRs
+    }
+    EXPECT_EQ(page->bench()->counters().exceptions, 0u);
+    EXPECT_GT(page->bench()->lastTadr(), 1);
+
+    // Disconnecting while telegrams are on the wire drops the bench before the session goes.
+    ASSERT_TRUE(page->startBench());
+    wizard.setConnection(nullptr);
+    EXPECT_FALSE(page->bench());
+    EXPECT_FALSE(page->findChild<QAbstractButton *>(QStringLiteral("startBench"))->isEnabled());
+    c.reset();
+    QTest::qWait(20); // callbacks of the dropped bench, if any were left, would run now
+}
+
+} // namespace
+} // namespace vt::ui
+
+namespace vt::ui {
+namespace {
+
+// Issue #9 step 6: "connect the cable to module 2, then Next".
+TEST(FoldWizardSim, PointToPointGuidesModuleByModule)
+{
+    auto c = openSim("dma-pn-v51", 1, "modbus-rtu");
+    ASSERT_TRUE(c);
+    FoldWizard wizard(*dev::builtinDictionaries(), c.get());
+    wizard.show();
+    wizard.restart();
+    wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
+    nextTo(wizard, FoldWizard::ModulesPageId);
+    wizard.currentPage()->findChild<QSpinBox *>(QStringLiteral("moduleCount"))->setValue(2);
+    nextTo(wizard, FoldWizard::ApplyPageId);
+    auto *apply = static_cast<FoldApplyPage *>(wizard.currentPage());
+    apply->findChild<QCheckBox *>(QStringLiteral("pointToPoint"))->setChecked(true);
+    auto *guide = apply->findChild<QLabel *>(QStringLiteral("guide"));
+    EXPECT_TRUE(guide->text().contains(QStringLiteral("module 1")));
+    QSignalSpy applied(apply, &FoldApplyPage::applyFinished);
+    wizard.next(); // applies to module 1 and stays
+    ASSERT_TRUE(applied.wait(kWaitMs));
+    EXPECT_TRUE(applied.front().front().toBool());
+    EXPECT_EQ(wizard.currentId(), FoldWizard::ApplyPageId);
+    EXPECT_TRUE(guide->text().contains(QStringLiteral("module 2")));
+    wizard.next(); // the cable is on module 2 now
+    ASSERT_TRUE(applied.wait(kWaitMs));
+    EXPECT_TRUE(applied.back().front().toBool());
+    dev::sim::HcsModule &m = c->simEndpoint()->node()->module(0);
+    EXPECT_EQ(m.storage().raw(*m.dictionary().find("E22")->id), 2);
+    wizard.next();
+    EXPECT_EQ(wizard.currentId(), FoldWizard::PlcPageId);
+}
+
+} // namespace
+} // namespace vt::ui

@@ -1,0 +1,130 @@
+// The monitor's set value step (issue #8 "a step control writes a set value step (A1.01/A2.01
+// with E17 as the manual requires)"): refused while E17 ≠ 2 with the manuals' reason, E17 set
+// on request, then the step written through WriteJob, read back and journalled.
+#include "model/monitor/set_value_step.h"
+#include "monitor_rig.h"
+#include "widgets/monitor/monitor_view.h"
+#include "widgets/monitor/step_control.h"
+
+#include <cmath>
+
+namespace vt::test {
+namespace {
+
+using model::SetValueStep;
+
+TEST(SetValueStep, OffersTheBusSetValuesOfHcsModulesOnly)
+{
+    auto names = [](const char *family) {
+        QStringList out;
+        for (const dev::ParamMeta *row : SetValueStep::setValueRows(*dictionaries().find(family)))
+            out.append(QString::fromStdString(row->name));
+        return out;
+    };
+    EXPECT_EQ(names("dma-pn-v51"), (QStringList{"A1.01", "A2.01"}));
+    EXPECT_EQ(names("opat"), (QStringList{"A1.01", "A2.01"}));
+    EXPECT_TRUE(names("wandfluh-sd7").isEmpty());
+    EXPECT_TRUE(SetValueStep::activationRow(*dictionaries().find("dma-pb-v32")));
+}
+
+TEST(SetValueStep, RefusedWhileE17IsNotTwoThenWrittenAfterE17IsSet)
+{
+    auto rig = connectSim("dma-pn-v51");
+    ASSERT_TRUE(rig);
+    ASSERT_EQ(rig->read("E17"), 0.0); // the simulator starts with the manual's default
+    SetValueStep step(rig->connection->access(), rig->module());
+    QSignalSpy refused(&step, &SetValueStep::refused);
+    QSignalSpy written(&step, &SetValueStep::written);
+
+    step.step(rig->row("A1.01"), 1000);
+    ASSERT_TRUE(refused.wait(kWaitMs));
+    EXPECT_TRUE(refused.front().at(1).toBool()); // needs activation
+    const QString reason = refused.front().front().toString();
+    EXPECT_TRUE(reason.contains("E17")) << reason.toStdString();
+    EXPECT_TRUE(reason.contains("E17 = 2 is required")) << reason.toStdString();
+    EXPECT_EQ(written.count(), 0);
+    EXPECT_EQ(rig->read("A1.01"), 0.0); // nothing was written
+
+    step.enableBusSetValue();
+    ASSERT_TRUE(written.wait(kWaitMs));
+    auto items = written.front().at(1).value<std::vector<model::WriteItem>>();
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items.front().row->name, "E17");
+    EXPECT_EQ(items.front().status, model::WriteStatus::Verified);
+    EXPECT_EQ(rig->read("E17"), 2.0);
+
+    written.clear();
+    step.step(rig->row("A1.01"), 1000);
+    ASSERT_TRUE(written.wait(kWaitMs));
+    items = written.front().at(1).value<std::vector<model::WriteItem>>();
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items.front().row->name, "A1.01");
+    EXPECT_EQ(items.front().status, model::WriteStatus::Verified); // range-checked, read back
+    ASSERT_TRUE(items.front().before);
+    EXPECT_EQ(dev::rawNumber(*items.front().before), 0.0);
+    EXPECT_TRUE(written.front().at(2).toBool());
+    EXPECT_EQ(rig->read("A1.01"), 1000.0);
+}
+
+TEST(SetValueStep, OutOfRangeStepIsRefusedLocallyByWriteJob)
+{
+    auto rig = connectSim("dma-pn-v51");
+    ASSERT_TRUE(rig);
+    SetValueStep step(rig->connection->access(), rig->module());
+    QSignalSpy written(&step, &SetValueStep::written);
+    step.enableBusSetValue();
+    ASSERT_TRUE(written.wait(kWaitMs));
+    written.clear();
+    step.step(rig->row("A1.01"), 20000); // manual: -9999 … 9999
+    ASSERT_TRUE(written.wait(kWaitMs));
+    const auto items = written.front().at(1).value<std::vector<model::WriteItem>>();
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items.front().status, model::WriteStatus::RefusedLocally);
+    EXPECT_EQ(rig->read("A1.01"), 0.0);
+}
+
+TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
+{
+    auto rig = connectSim("dma-pn-v51");
+    ASSERT_TRUE(rig);
+    ui::MonitorView view;
+    view.setConnection(rig->connection.get(), rig->modules);
+    ui::StepControl &control = *view.stepControl();
+    ASSERT_TRUE(control.selectTarget(rig->module().address, QStringLiteral("A1.01")));
+    control.setStepValue(1.0);
+    QSignalSpy written(&control, &ui::StepControl::written);
+
+    control.writeStep();
+    ASSERT_TRUE(spinUntil([&] { return control.activationOffered(); }, kWaitMs));
+    EXPECT_TRUE(control.statusText().contains("E17")) << control.statusText().toStdString();
+    EXPECT_TRUE(view.session().journal().markers().empty());
+
+    control.enableBusSetValue();
+    ASSERT_TRUE(written.wait(kWaitMs));
+    ASSERT_EQ(view.session().journal().markers().size(), 1u);
+    EXPECT_TRUE(view.session().journal().markers().back().text.startsWith("E17 "));
+
+    view.setRate(100);
+    view.start();
+    control.writeStep();
+    ASSERT_TRUE(written.wait(kWaitMs));
+    ASSERT_EQ(view.session().journal().markers().size(), 2u);
+    EXPECT_EQ(view.session().journal().markers().back().text,
+              QStringLiteral("A1.01 0.000 V → 1.000 V"));
+    EXPECT_EQ(rig->read("A1.01"), 1000.0);
+
+    // The desired value d1.10 follows the bus set value once E17 = 2.
+    const model::SampleStore *store = view.session().store(rig->module().address);
+    const int desired = store->channelIndex(QStringLiteral("d1.10"));
+    ASSERT_GE(desired, 0);
+    EXPECT_TRUE(spinUntil(
+        [&] {
+            return store->size() > 0 &&
+                   std::abs(store->valueAt(desired, store->size() - 1) - 1.0) < 0.01;
+        },
+        kWaitMs));
+    view.pause();
+}
+
+} // namespace
+} // namespace vt::test

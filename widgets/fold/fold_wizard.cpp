@@ -1,0 +1,102 @@
+#include "widgets/fold/fold_wizard.h"
+
+#include "model/fold/fold_plan_file.h"
+#include "model/session/connection.h"
+#include "widgets/fold/fold_address_page.h"
+#include "widgets/fold/fold_apply_page.h"
+#include "widgets/fold/fold_bench_page.h"
+#include "widgets/fold/fold_check_page.h"
+#include "widgets/fold/fold_modules_page.h"
+#include "widgets/fold/fold_node_page.h"
+#include "widgets/fold/fold_options_page.h"
+#include "widgets/fold/fold_plc_page.h"
+#include "widgets/fold/fold_text.h"
+
+#include <QEvent>
+
+namespace vt::ui {
+
+FoldWizard::FoldWizard(const dev::DictionarySet &dictionaries, model::Connection *connection,
+                       QWidget *parent)
+    : QWizard(parent), m_dictionaries(dictionaries), m_connection(connection),
+      m_plan(model::defaultFoldPlan(model::FoldNode::DmaProfinet, 3))
+{
+    setObjectName(QStringLiteral("foldWizard"));
+    setWizardStyle(QWizard::ClassicStyle);
+    setOption(QWizard::NoBackButtonOnStartPage);
+    setPage(NodePageId, new FoldNodePage(this));
+    setPage(ModulesPageId, new FoldModulesPage(this));
+    setPage(AddressPageId, new FoldAddressPage(this));
+    setPage(OptionsPageId, new FoldOptionsPage(this));
+    setPage(CheckPageId, new FoldCheckPage(this));
+    setPage(ApplyPageId, new FoldApplyPage(this));
+    setPage(PlcPageId, new FoldPlcPage(this));
+    setPage(BenchPageId, new FoldBenchPage(this));
+    setStartId(NodePageId);
+    if (m_connection)
+        connect(m_connection, &model::Connection::lost, this, &FoldWizard::connectionChanged);
+    retranslate();
+}
+
+FoldWizard::~FoldWizard()
+{
+    if (auto *bench = qobject_cast<FoldBenchPage *>(page(BenchPageId)))
+        bench->stopBench();
+}
+
+void FoldWizard::setConnection(model::Connection *connection)
+{
+    if (m_connection)
+        disconnect(m_connection, nullptr, this, nullptr);
+    if (auto *bench = qobject_cast<FoldBenchPage *>(page(BenchPageId)))
+        bench->dropBench();
+    if (auto *apply = qobject_cast<FoldApplyPage *>(page(ApplyPageId)))
+        apply->dropJob();
+    m_connection = connection;
+    if (m_connection)
+        connect(m_connection, &model::Connection::lost, this, &FoldWizard::connectionChanged);
+    if (auto *bench = qobject_cast<FoldBenchPage *>(page(BenchPageId)))
+        bench->refresh();
+    if (auto *apply = qobject_cast<FoldApplyPage *>(page(ApplyPageId)))
+        apply->refresh();
+    emit connectionChanged();
+}
+
+bool FoldWizard::online() const
+{
+    return m_connection && m_connection->isOpen();
+}
+
+void FoldWizard::setPlan(const model::FoldPlan &plan)
+{
+    m_plan = plan;
+    m_found.clear();
+    restart();
+}
+
+bool FoldWizard::openPlan(const QString &path, QString *error)
+{
+    auto loaded = model::loadFoldPlanFile(path.toStdString());
+    if (!loaded.ok()) {
+        if (error)
+            *error = foldText(loaded.error().message);
+        return false;
+    }
+    setPlan(loaded.value());
+    m_planPath = path;
+    return true;
+}
+
+void FoldWizard::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWizard::changeEvent(event);
+}
+
+void FoldWizard::retranslate()
+{
+    setWindowTitle(tr("Module fold wizard"));
+}
+
+} // namespace vt::ui

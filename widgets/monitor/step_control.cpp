@@ -1,0 +1,258 @@
+#include "step_control.h"
+
+#include "dict/cooking.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace vt::ui {
+
+StepControl::StepControl(QWidget *parent) : QWidget(parent)
+{
+    m_title = new QLabel(this);
+    m_module = new QComboBox(this);
+    m_row = new QComboBox(this);
+    m_value = new QDoubleSpinBox(this);
+    m_value->setKeyboardTracking(false);
+    m_write = new QPushButton(this);
+    m_activate = new QPushButton(this);
+    m_activate->setVisible(false);
+    m_status = new QLabel(this);
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto *line = new QHBoxLayout;
+    line->setContentsMargins(0, 0, 0, 0);
+    line->addWidget(m_title);
+    line->addWidget(m_module);
+    line->addWidget(m_row);
+    line->addWidget(m_value);
+    line->addWidget(m_write);
+    line->addWidget(m_activate);
+    line->addStretch(1);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(line);
+    layout->addWidget(m_status);
+
+    connect(m_module, &QComboBox::currentIndexChanged, this, &StepControl::moduleChosen);
+    connect(m_row, &QComboBox::currentIndexChanged, this, &StepControl::rowChosen);
+    connect(m_write, &QPushButton::clicked, this, &StepControl::writeStep);
+    connect(m_activate, &QPushButton::clicked, this, &StepControl::enableBusSetValue);
+    retranslate();
+    updateEnabled();
+}
+
+StepControl::~StepControl() = default;
+
+dev::Language StepControl::language() const
+{
+    return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
+}
+
+void StepControl::setConnection(model::DeviceAccess *access,
+                                const std::vector<model::ModuleInfo> &modules)
+{
+    clearConnection();
+    m_access = access;
+    const QSignalBlocker block(m_module);
+    for (const model::ModuleInfo &module : modules) {
+        if (module.dictionary && !model::SetValueStep::setValueRows(*module.dictionary).empty()) {
+            m_modules.push_back(module);
+            m_module->addItem(tr("module %1").arg(module.address), module.address);
+        }
+    }
+    if (m_access && m_modules.empty())
+        m_status->setText(tr(
+            "No connected module has a bus set value (A1.01/A2.01); the step is not available."));
+    moduleChosen();
+}
+
+void StepControl::clearConnection()
+{
+    m_step.reset(); // a running WriteJob is cancelled with it
+    m_access = nullptr;
+    m_modules.clear();
+    const QSignalBlocker blockModule(m_module);
+    const QSignalBlocker blockRow(m_row);
+    m_module->clear();
+    m_row->clear();
+    m_activate->setVisible(false);
+    m_status->clear();
+    updateEnabled();
+}
+
+const model::ModuleInfo *StepControl::currentModule() const
+{
+    const int i = m_module->currentIndex();
+    return i >= 0 && static_cast<std::size_t>(i) < m_modules.size()
+               ? &m_modules[static_cast<std::size_t>(i)]
+               : nullptr;
+}
+
+const dev::ParamMeta *StepControl::currentRow() const
+{
+    const model::ModuleInfo *module = currentModule();
+    if (!module)
+        return nullptr;
+    return module->dictionary->find(m_row->currentData().toString().toStdString());
+}
+
+void StepControl::moduleChosen()
+{
+    m_step.reset();
+    m_activate->setVisible(false);
+    const QSignalBlocker block(m_row);
+    m_row->clear();
+    if (const model::ModuleInfo *module = currentModule()) {
+        for (const dev::ParamMeta *row : model::SetValueStep::setValueRows(*module->dictionary)) {
+            const QString name = QString::fromStdString(row->name);
+            m_row->addItem(name, name);
+            m_row->setItemData(m_row->count() - 1,
+                               QString::fromStdString(row->label.in(language())), Qt::ToolTipRole);
+        }
+        m_step = std::make_unique<model::SetValueStep>(*m_access, *module);
+        m_step->setLanguage(language());
+        connect(m_step.get(), &model::SetValueStep::refused, this,
+                [this](const QString &reason, bool needsActivation) {
+                    m_status->setText(reason);
+                    m_activate->setVisible(needsActivation);
+                    updateEnabled();
+                });
+        connect(m_step.get(), &model::SetValueStep::written, this, &StepControl::onWritten);
+    }
+    rowChosen();
+}
+
+void StepControl::rowChosen()
+{
+    if (const dev::ParamMeta *row = currentRow()) {
+        const dev::Limits limits = dev::rowLimits(*row);
+        const double factor = row->scale.factor;
+        m_value->setDecimals(row->scale.decimals);
+        m_value->setRange(std::min(limits.min * factor, limits.max * factor),
+                          std::max(limits.min * factor, limits.max * factor));
+        m_value->setSingleStep(std::pow(10.0, -row->scale.decimals) * 100);
+        m_value->setSuffix(row->unit.empty()
+                               ? QString()
+                               : QStringLiteral(" ") + QString::fromStdString(row->unit));
+    }
+    updateEnabled();
+}
+
+bool StepControl::selectTarget(int module, const QString &rowName)
+{
+    const int m = m_module->findData(module);
+    if (m < 0)
+        return false;
+    m_module->setCurrentIndex(m);
+    const int r = m_row->findData(rowName);
+    if (r < 0)
+        return false;
+    m_row->setCurrentIndex(r);
+    return true;
+}
+
+void StepControl::setStepValue(double display)
+{
+    m_value->setValue(display);
+}
+
+double StepControl::stepValue() const
+{
+    return m_value->value();
+}
+
+void StepControl::writeStep()
+{
+    const dev::ParamMeta *row = currentRow();
+    if (!m_step || !row || m_step->isBusy())
+        return;
+    const double factor = row->scale.factor != 0 ? row->scale.factor : 1.0;
+    const double raw = std::round(m_value->value() / factor);
+    m_activate->setVisible(false);
+    m_status->setText(tr("Checking E17, then writing %1 …").arg(QString::fromStdString(row->name)));
+    m_step->setLanguage(language());
+    m_step->step(*row, raw);
+    updateEnabled();
+}
+
+void StepControl::enableBusSetValue()
+{
+    if (!m_step || m_step->isBusy())
+        return;
+    m_activate->setVisible(false);
+    m_status->setText(tr("Writing E17 = 2 …"));
+    m_step->enableBusSetValue();
+    updateEnabled();
+}
+
+void StepControl::onWritten(int module, const std::vector<model::WriteItem> &items, bool complete)
+{
+    QStringList lines;
+    for (const model::WriteItem &item : items) {
+        const QString text = model::writeStatusText(item.status);
+        lines.append(
+            item.reason.isEmpty()
+                ? QStringLiteral("%1: %2").arg(QString::fromStdString(item.row->name), text)
+                : QStringLiteral("%1: %2 (%3)")
+                      .arg(QString::fromStdString(item.row->name), text, item.reason));
+    }
+    m_status->setText(lines.join(QLatin1Char('\n')));
+    updateEnabled();
+    emit written(module, items, complete);
+}
+
+QString StepControl::statusText() const
+{
+    return m_status->text();
+}
+
+bool StepControl::activationOffered() const
+{
+    return !m_activate->isHidden();
+}
+
+bool StepControl::isBusy() const
+{
+    return m_step && m_step->isBusy();
+}
+
+void StepControl::updateEnabled()
+{
+    const bool ready = m_step && currentRow() && !m_step->isBusy();
+    m_module->setEnabled(!isBusy() && m_module->count() > 0);
+    m_row->setEnabled(ready);
+    m_value->setEnabled(ready);
+    m_write->setEnabled(ready);
+    m_activate->setEnabled(ready);
+}
+
+void StepControl::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void StepControl::retranslate()
+{
+    m_title->setText(tr("Step:"));
+    m_write->setText(tr("Write step"));
+    m_write->setToolTip(
+        tr("Writes the bus set value (range-checked, read back) and marks it on the time axis. "
+           "E17 must be 2 (only the digital set values active), as the manuals require."));
+    m_activate->setText(tr("Set E17 = 2"));
+    m_activate->setToolTip(tr("Switches the analogue set value off (E17 = 2, stored in EEPROM)."));
+    for (int i = 0; i < m_module->count(); ++i)
+        m_module->setItemText(i, tr("module %1").arg(m_module->itemData(i).toInt()));
+}
+
+} // namespace vt::ui

@@ -1,0 +1,72 @@
+// StepControl: the monitor's set value step (issue #8) — pick a module and its bus set value
+// (A1.01 / A2.01), a value in display units, and write it through model::SetValueStep, which
+// checks E17 first. A refusal is shown inline with the manuals' reason and an offer to set
+// E17 = 2. GUI thread.
+#pragma once
+
+#include "model/monitor/set_value_step.h"
+
+#include <QWidget>
+#include <memory>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace vt::ui {
+
+class StepControl : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit StepControl(QWidget *parent = nullptr);
+    ~StepControl() override;
+
+    void setConnection(model::DeviceAccess *access, const std::vector<model::ModuleInfo> &modules);
+    void clearConnection();
+
+    // Chooses the step's target (false when the module has no such writable set value).
+    bool selectTarget(int module, const QString &rowName);
+    void setStepValue(double display);
+    double stepValue() const;
+
+    // The Step button: E17 check, then the write.
+    void writeStep();
+    // The offered "Set E17 = 2" button.
+    void enableBusSetValue();
+
+    QString statusText() const;
+    bool activationOffered() const; // the "Set E17 = 2" button is shown
+    bool isBusy() const;
+
+signals:
+    // A write reached its end (the step or E17): for the tuning journal.
+    void written(int module, const std::vector<vt::model::WriteItem> &items, bool complete);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+    void moduleChosen();
+    void rowChosen();
+    void updateEnabled();
+    const dev::ParamMeta *currentRow() const;
+    const model::ModuleInfo *currentModule() const;
+    void onWritten(int module, const std::vector<model::WriteItem> &items, bool complete);
+    dev::Language language() const;
+
+    model::DeviceAccess *m_access = nullptr;
+    std::vector<model::ModuleInfo> m_modules; // those with a bus set value
+    std::unique_ptr<model::SetValueStep> m_step;
+    QLabel *m_title = nullptr;
+    QComboBox *m_module = nullptr;
+    QComboBox *m_row = nullptr;
+    QDoubleSpinBox *m_value = nullptr;
+    QPushButton *m_write = nullptr;
+    QPushButton *m_activate = nullptr;
+    QLabel *m_status = nullptr;
+};
+
+} // namespace vt::ui
