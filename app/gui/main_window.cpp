@@ -64,7 +64,7 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     applyDocumentLanguage();
     connectWorkspace();
 
-    resize(1280, 820);
+    resize(1440, 900);
     restoreGeometry(m_settings.windowGeometry());
     restoreState(m_settings.windowState());
     retranslate();
@@ -192,7 +192,7 @@ void MainWindow::createDocks()
     m_nodeDock = dock("dockNode", m_nodeView, Qt::LeftDockWidgetArea);
     // The live plot of desired / actual value and solenoid currents, with the tuning journal.
     m_monitor = new ui::MonitorView(this);
-    m_monitorDock = dock("dockMonitor", m_monitor, Qt::RightDockWidgetArea);
+    m_monitorDock = dock("dockMonitor", m_monitor, Qt::BottomDockWidgetArea);
     connect(m_monitor, &ui::MonitorView::statusMessage, this, &MainWindow::showStatus);
     connect(m_device, &DeviceController::written, m_monitor, &ui::MonitorView::journalWrites);
     // Every frame in and out of the connection (Workspace's TelegramRecorder fills the log).
@@ -217,9 +217,13 @@ void MainWindow::createDocks()
     m_curveBinding = new model::CurveBinding(m_workspace->document(), *m_curves, this);
     m_curveEditor = new ui::LCurveEditor(this);
     m_curveEditor->setModel(m_curves);
-    m_curveDock = dock("dockCurve", m_curveEditor, Qt::RightDockWidgetArea);
+    m_curveDock = dock("dockCurve", m_curveEditor, Qt::BottomDockWidgetArea);
+    // The editor keeps the full width; monitor, telegrams and curves share the bottom as tabs.
+    tabifyDockWidget(m_monitorDock, m_telegramsDock);
     tabifyDockWidget(m_monitorDock, m_curveDock);
     m_monitorDock->raise();
+    resizeDocks({m_nodeDock}, {230}, Qt::Horizontal);
+    resizeDocks({m_monitorDock}, {360}, Qt::Vertical);
     connect(m_nodeView, &ui::NodeView::moduleActivated, this, [this](int module) {
         const auto &m = m_workspace->document().module(module);
         if (!m.dictionary->params.empty())

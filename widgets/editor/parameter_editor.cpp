@@ -89,6 +89,7 @@ ParameterEditor::ParameterEditor(model::ParameterDocument &document, QWidget *pa
     splitter->addWidget(m_help);
     splitter->setStretchFactor(0, 4);
     splitter->setStretchFactor(1, 1);
+    splitter->setSizes({900, 260});
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(splitter);
