@@ -1024,7 +1024,7 @@
     </message>
     <message>
         <source>no valid frame (checksum error, corrupted or incomplete)</source>
-        <translation>kein gültiger Rahmen (Prüfsummenfehler, verfälscht oder unvollständig)</translation>
+        <translation>kein gültiges Telegramm (Prüfsummenfehler, verfälscht oder unvollständig)</translation>
     </message>
     <message numerus="yes">
         <source>No answer after %n attempt(s)</source>
