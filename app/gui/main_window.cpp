@@ -71,7 +71,11 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     updateActions();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // Close the connection while every window that holds it (monitor, inspector, wizard) still exists.
+    m_workspace->disconnectFromDevice();
+}
 
 void MainWindow::createActions()
 {
