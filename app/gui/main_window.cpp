@@ -262,6 +262,8 @@ void MainWindow::connectWorkspace()
     // The wizard holds the connection: it lets go before the connection is destroyed.
     connect(m_workspace, &Workspace::aboutToDisconnect, this, [this] {
         m_monitor->clearConnection();
+        m_inspector->clearConnection();
+        m_linkStatus->clearConnection();
         if (m_wizard)
             m_wizard->setConnection(nullptr);
     });

@@ -10,13 +10,15 @@ Workspace::Workspace(const dev::DictionarySet &dictionaries, QObject *parent)
 {
 }
 
-Workspace::~Workspace() { teardown(); }
+// Silent: whoever listens may already be half destroyed (the main window closes the connection
+// itself before that).
+Workspace::~Workspace() { teardown(false); }
 
-void Workspace::teardown()
+void Workspace::teardown(bool notify)
 {
     ++m_generation;
     m_ready = false;
-    if (m_connection)
+    if (m_connection && notify)
         emit aboutToDisconnect();
     m_live.reset();
     m_recorder.reset();

@@ -59,7 +59,7 @@ signals:
 private:
     void identifyNext(std::vector<int> addresses, std::vector<model::ModuleInfo> found, int total, bool scanning);
     void finishIdentify(std::vector<model::ModuleInfo> found, bool scanning);
-    void teardown();
+    void teardown(bool notify = true);
     void updateLivePoll();
 
     const dev::DictionarySet &m_dictionaries;
