@@ -75,6 +75,11 @@ MainWindow::~MainWindow()
 {
     // Close the connection while every window that holds it (monitor, inspector, wizard) still exists.
     m_workspace->disconnectFromDevice();
+    // The workspace outlives this part of the window (it is a child): its document's undo stack
+    // still signals while it is destroyed, so nothing of it may reach this window any more.
+    QObject::disconnect(m_workspace->document().undoStack(), nullptr, this, nullptr);
+    QObject::disconnect(&m_workspace->document(), nullptr, this, nullptr);
+    QObject::disconnect(m_workspace, nullptr, this, nullptr);
 }
 
 void MainWindow::createActions()
