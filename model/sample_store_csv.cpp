@@ -1,5 +1,6 @@
 // SampleStore's CSV export and its bounded reader (round trips, loading a saved recording).
 #include "sample_store.h"
+#include "model/text_language.h"
 
 #include <QIODevice>
 #include <QLocale>
@@ -33,7 +34,7 @@ constexpr qsizetype kWriteChunk = 64 * 1024;
 
 CsvFormat writeFormat()
 {
-    return QLocale().language() == QLocale::German ? kGermanCsv : kEnglishCsv;
+    return textLanguage() == dev::Language::German ? kGermanCsv : kEnglishCsv;
 }
 
 QByteArray formatStatement(const CsvFormat &format)

@@ -1,4 +1,5 @@
 #include "lcurve_table_model.h"
+#include "model/text_language.h"
 
 #include <QLocale>
 #include <cmath>
@@ -21,11 +22,6 @@ double orNaN(const std::optional<double> &v)
 
 LCurveTableModel::LCurveTableModel(QObject *parent) : QAbstractTableModel(parent)
 {
-}
-
-dev::Language LCurveTableModel::uiLanguage()
-{
-    return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
 }
 
 void LCurveTableModel::retranslate()
@@ -125,7 +121,7 @@ LCurveTableModel::editPoint(int curve, int index, std::optional<double> x, std::
 {
     if (!indexOf(curve, index, LAxis::X).isValid()) {
         dev::LocalText why{"no such point", "kein solcher Punkt"};
-        emit editRefused(curve, index, fromStd(why.in(uiLanguage())));
+        emit editRefused(curve, index, fromStd(why.in(textLanguage())));
         return why;
     }
     const LCurve &c = m_curves[static_cast<std::size_t>(curve)];
@@ -140,7 +136,7 @@ LCurveTableModel::editPoint(int curve, int index, std::optional<double> x, std::
         const LCoordinate &coord = coordinate(point, axis);
         const double snapped = snapToStep(coord, *typed);
         if (auto why = checkCoordinate(c, next, index, axis, snapped)) {
-            emit editRefused(curve, index, fromStd(why->in(uiLanguage())));
+            emit editRefused(curve, index, fromStd(why->in(textLanguage())));
             return why;
         }
         LPointValue &p = next[static_cast<std::size_t>(index)];
@@ -216,7 +212,7 @@ QVariant LCurveTableModel::data(const QModelIndex &index, int role) const
     case Qt::EditRole: return v ? QVariant(*v) : QVariant();
     case Qt::TextAlignmentRole: return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     case Qt::ToolTipRole: {
-        const dev::Language lang = uiLanguage();
+        const dev::Language lang = textLanguage();
         QString tip =
             fromStd(coord->row->name) + QStringLiteral(": ") + fromStd(coord->row->label.in(lang));
         if (coord->fixed())

@@ -76,9 +76,6 @@ public:
     // The UI language changed: headers, numbers and tooltips are asked for again.
     void retranslate();
 
-    // The language reasons are shown in: the default QLocale's (app/gui/language.h sets it).
-    static dev::Language uiLanguage();
-
 signals:
     // One per accepted user edit, with the one or two rows it changed.
     void rowsEdited(const QList<vt::model::LCurveRowEdit> &edits);

@@ -1,9 +1,9 @@
 #include "model/fold/plc_test_bench.h"
+#include "model/text_language.h"
 
 #include "access/node_image_adapter.h"
 #include "hcs/exceptions.h"
 
-#include <QLocale>
 #include <QPointer>
 #include <algorithm>
 
@@ -20,7 +20,7 @@ const dev::access::NodeImageAdapter *nodeImageOf(const Session &session)
 
 QString local(const dev::LocalText &text)
 {
-    const bool german = QLocale().language() == QLocale::German;
+    const bool german = textLanguage() == dev::Language::German;
     return QString::fromStdString(text.in(german ? dev::Language::German : dev::Language::English));
 }
 

@@ -1,26 +1,17 @@
 #include "language_text.h"
 
 #include "dict/dictionary.h"
+#include "model/text_language.h"
 
 #include <QCoreApplication>
 #include <QLocale>
 
 namespace vt::ui {
 
-dev::Language uiLanguage()
-{
-    return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
-}
-
-QString localText(const dev::LocalText &text)
-{
-    return QString::fromStdString(text.in(uiLanguage()));
-}
-
 QString familyText(const dev::Dictionary &dictionary)
 {
     return QCoreApplication::translate("vt::ui::DictionaryTexts", "%1 (%2)")
-        .arg(localText(dictionary.title), QString::fromStdString(dictionary.family));
+        .arg(model::localText(dictionary.title), QString::fromStdString(dictionary.family));
 }
 
 QString modeText(const dev::Dictionary &dictionary, const std::string &mode)
@@ -34,7 +25,7 @@ QString modeText(const dev::Dictionary &dictionary, const std::string &mode)
     if (!label)
         return number;
     return QCoreApplication::translate("vt::ui::DictionaryTexts", "%1 — %2")
-        .arg(QLocale().toString(raw), localText(label->text));
+        .arg(QLocale().toString(raw), model::localText(label->text));
 }
 
 } // namespace vt::ui

@@ -1,6 +1,5 @@
-// The product language as the widgets see it (the default QLocale, which app/gui/language.cpp
-// sets on every switch), for picking one side of the core's {en, de} texts, and the dictionary
-// texts the connect and new-file dialogs share.
+// The dictionary texts the connect and new-file dialogs share, in the UI language
+// (model/text_language.h).
 #pragma once
 
 #include "core/local_text.h"
@@ -13,9 +12,6 @@ struct Dictionary;
 }
 
 namespace vt::ui {
-
-dev::Language uiLanguage();
-QString localText(const dev::LocalText &text);
 
 // "Title (family-id)" for family lists.
 QString familyText(const dev::Dictionary &dictionary);

@@ -1,4 +1,5 @@
 #include "link_status_widget.h"
+#include "model/text_language.h"
 
 #include "model/session/connection.h"
 #include "transports/link.h"
@@ -114,7 +115,7 @@ QString LinkStatusWidget::moduleText(const model::ModuleInfo &module) const
     const QLocale locale;
     QString what = module.identityText;
     if (what.isEmpty()) {
-        what = module.dictionary ? localText(module.dictionary->title)
+        what = module.dictionary ? model::localText(module.dictionary->title)
                                  : QString::fromStdString(module.identification.family);
         if (!module.identification.version.empty())
             what = tr("%1, V%2").arg(what, QString::fromStdString(module.identification.version));
@@ -152,7 +153,7 @@ void LinkStatusWidget::refresh()
     for (const model::ModuleInfo &module : m_modules) {
         modules << moduleText(module);
         if (!module.identification.warning.en.empty())
-            warnings << localText(module.identification.warning);
+            warnings << model::localText(module.identification.warning);
     }
     m_identity->setText(modules.join(QStringLiteral("; ")));
     m_identity->setToolTip(warnings.join(QLatin1Char('\n')));

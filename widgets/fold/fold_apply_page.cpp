@@ -3,7 +3,7 @@
 #include "model/fold/fold_apply.h"
 #include "model/fold/module_guide.h"
 #include "model/session/connection.h"
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QCheckBox>
@@ -165,7 +165,7 @@ void FoldApplyPage::showModules()
     m_table->setRowCount(static_cast<int>(plan.modules.size()));
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const auto index = static_cast<std::size_t>(row);
-        QString address = foldText(model::foldAddressText(plan.node, plan.modules[index]));
+        QString address = model::localText(model::foldAddressText(plan.node, plan.modules[index]));
         QString state = tr("not applied");
         QString notes;
         if (m_job && index < m_job->modules().size()) {
@@ -218,7 +218,7 @@ void FoldApplyPage::updateState()
                          .arg(wizard->connection()->describe()));
     if (pointToPoint()) {
         m_guide->setText(
-            foldText(model::cableGuide(wizard->plan(), static_cast<std::size_t>(m_guided))));
+            model::localText(model::cableGuide(wizard->plan(), static_cast<std::size_t>(m_guided))));
         m_apply->setText(tr("Apply to module %1").arg(m_guided + 1));
     } else {
         m_apply->setText(tr("Apply to the node"));

@@ -7,7 +7,7 @@
 
 #include "model/fold/plc_test_bench.h"
 #include "model/session/connection.h"
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QHBoxLayout>
@@ -234,7 +234,7 @@ void FoldBenchPage::showAnswer(int index)
     if (status.error) {
         const auto text = dev::hcs::errorNumberText(m_bench->family(), status.errorNumber);
         statusText += QStringLiteral(" — ") +
-                      (text ? foldText(*text) : tr("error %1").arg(status.errorNumber));
+                      (text ? model::localText(*text) : tr("error %1").arg(status.errorNumber));
     } else {
         const QString low = bitsText(static_cast<std::uint8_t>(answer.status & 0xFF),
                                      dev::hcs::statusLowBits(profile));

@@ -2,7 +2,7 @@
 
 #include "dict/dictionary.h"
 #include "model/session/connection.h"
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QComboBox>
@@ -157,7 +157,7 @@ void FoldModulesPage::fillModes(int row)
             QString text = tr("Mode %1").arg(value);
             if (e00)
                 if (const dev::EnumLabel *label = e00->findEnum(value))
-                    text += QStringLiteral(" — ") + foldText(label->text);
+                    text += QStringLiteral(" — ") + model::localText(label->text);
             mode->addItem(text, value);
         }
     }

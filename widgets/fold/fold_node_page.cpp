@@ -1,6 +1,6 @@
 #include "widgets/fold/fold_node_page.h"
 
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QButtonGroup>
@@ -116,7 +116,7 @@ void FoldNodePage::retranslate()
     setTitle(tr("Node type"));
     setSubTitle(tr("Which kind of node are you setting up?"));
     for (int i = 0; i < 3; ++i)
-        m_buttons[i]->setText(foldText(model::foldNodeTitle(kNodes[i])));
+        m_buttons[i]->setText(model::localText(model::foldNodeTitle(kNodes[i])));
     m_productLabel->setText(tr("Product number of the node:"));
     m_product->setPlaceholderText(tr("e.g. 5 005 123 45"));
     updateDetails();

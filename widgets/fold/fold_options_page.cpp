@@ -2,7 +2,7 @@
 
 #include "dict/cooking.h"
 #include "dict/dictionary.h"
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QCheckBox>
@@ -48,7 +48,7 @@ void FoldOptionsPage::rebuild()
         box->setObjectName(QStringLiteral("module%1").arg(index + 1));
         box->setTitle(tr("Module %1 — %2, V%3, mode %4")
                           .arg(index + 1)
-                          .arg(foldText(model::foldAddressText(plan.node, module)))
+                          .arg(model::localText(model::foldAddressText(plan.node, module)))
                           .arg(module.version)
                           .arg(module.mode));
         auto *grid = new QGridLayout(box);
@@ -70,7 +70,7 @@ void FoldOptionsPage::rebuild()
                 continue;
             const QString key = QString::fromStdString(name);
             auto *set =
-                new QCheckBox(QStringLiteral("%1 — %2").arg(key, foldText(row->label)), box);
+                new QCheckBox(QStringLiteral("%1 — %2").arg(key, model::localText(row->label)), box);
             set->setObjectName(QStringLiteral("set%1").arg(key));
             grid->addWidget(set, line, 0, 1, 3);
             ++line;
@@ -92,7 +92,7 @@ void FoldOptionsPage::rebuild()
                 combo->setMinimumContentsLength(24);
                 for (const dev::EnumLabel &label : row->enums)
                     combo->addItem(
-                        QStringLiteral("%1 = %2").arg(label.value).arg(foldText(label.text)),
+                        QStringLiteral("%1 = %2").arg(label.value).arg(model::localText(label.text)),
                         static_cast<int>(label.value));
                 combo->setCurrentIndex(std::max(0, combo->findData(value.value_or(fallback))));
                 connect(combo, &QComboBox::currentIndexChanged, this,
@@ -111,7 +111,7 @@ void FoldOptionsPage::rebuild()
                 spin->setValue(value.value_or(fallback));
                 const auto showCooked = [spin, cooked, row] {
                     cooked->setText(QStringLiteral("= %1").arg(QString::fromStdString(
-                        dev::formatValue(*row, spin->value(), foldLanguage()))));
+                        dev::formatValue(*row, spin->value(), model::textLanguage()))));
                 };
                 showCooked();
                 connect(spin, &QSpinBox::valueChanged, this, [spin, store, showCooked] {
@@ -130,7 +130,7 @@ void FoldOptionsPage::rebuild()
             grid->addWidget(cooked, line, 1);
             ++line;
             // The manual's consequence of the option, from the dictionary (both languages).
-            auto *why = new QLabel(foldText(row->description), box);
+            auto *why = new QLabel(model::localText(row->description), box);
             why->setWordWrap(true);
             why->setObjectName(QStringLiteral("why%1").arg(key));
             grid->addWidget(why, line, 0, 1, 3);

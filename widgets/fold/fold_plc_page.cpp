@@ -6,7 +6,7 @@
 #include "widgets/fold/fold_plc_page.h"
 
 #include "model/fold/fold_plan_file.h"
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QCoreApplication>
@@ -87,10 +87,10 @@ void FoldPlcPage::refresh()
         b->setEnabled(ok);
     if (!ok) {
         m_html.clear();
-        m_view->setPlainText(foldText(why));
+        m_view->setPlainText(model::localText(why));
         return;
     }
-    m_html = model::foldSheetHtml(*sheet, foldLanguage());
+    m_html = model::foldSheetHtml(*sheet, model::textLanguage());
     m_view->setHtml(m_html);
 }
 
@@ -116,8 +116,8 @@ QString FoldPlcPage::exportPdf(const QString &path)
     dev::LocalText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     if (!sheet)
-        return foldText(why);
-    if (!model::writeFoldSheetPdf(*sheet, foldLanguage(), path))
+        return model::localText(why);
+    if (!model::writeFoldSheetPdf(*sheet, model::textLanguage(), path))
         return tr("Cannot write %1.").arg(path);
     return {};
 }
@@ -127,8 +127,8 @@ QString FoldPlcPage::exportHtml(const QString &path)
     dev::LocalText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     if (!sheet)
-        return foldText(why);
-    return writeText(path, model::foldSheetHtml(*sheet, foldLanguage()).toUtf8());
+        return model::localText(why);
+    return writeText(path, model::foldSheetHtml(*sheet, model::textLanguage()).toUtf8());
 }
 
 QString FoldPlcPage::exportCsv(const QString &path)
@@ -136,14 +136,14 @@ QString FoldPlcPage::exportCsv(const QString &path)
     dev::LocalText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     if (!sheet)
-        return foldText(why);
-    return writeText(path, model::foldSheetCsv(*sheet, foldLanguage()).toUtf8());
+        return model::localText(why);
+    return writeText(path, model::foldSheetCsv(*sheet, model::textLanguage()).toUtf8());
 }
 
 QString FoldPlcPage::savePlan(const QString &path)
 {
     if (const auto error = model::saveFoldPlanFile(fold()->plan(), path.toStdString()))
-        return foldText(error->message);
+        return model::localText(error->message);
     fold()->setPlanPath(path);
     return {};
 }

@@ -10,7 +10,7 @@
 #include "widgets/fold/fold_node_page.h"
 #include "widgets/fold/fold_options_page.h"
 #include "widgets/fold/fold_plc_page.h"
-#include "widgets/fold/fold_text.h"
+#include "model/text_language.h"
 
 #include <QEvent>
 
@@ -79,7 +79,7 @@ bool FoldWizard::openPlan(const QString &path, QString *error)
     auto loaded = model::loadFoldPlanFile(path.toStdString());
     if (!loaded.ok()) {
         if (error)
-            *error = foldText(loaded.error().message);
+            *error = model::localText(loaded.error().message);
         return false;
     }
     setPlan(loaded.value());

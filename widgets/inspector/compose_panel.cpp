@@ -2,7 +2,7 @@
 
 #include "access/node_image_adapter.h"
 #include "core/hex.h"
-#include "core_language.h"
+#include "model/text_language.h"
 #include "frame_detail.h"
 #include "inspect/logged_frame.h"
 #include "model/session/connection.h"

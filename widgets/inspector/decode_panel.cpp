@@ -1,7 +1,7 @@
 #include "decode_panel.h"
 
 #include "canopen/can_frame.h"
-#include "core_language.h"
+#include "model/text_language.h"
 #include "frame_detail.h"
 #include "inspect/auto_detect.h"
 #include "inspect/hex_input.h"

@@ -1,6 +1,6 @@
 #include "frame_detail.h"
 
-#include "core_language.h"
+#include "model/text_language.h"
 #include "hex_view.h"
 #include "model/inspect/field_tree_model.h"
 
@@ -42,13 +42,13 @@ FrameDetail::FrameDetail(QWidget *parent)
     connect(m_tree->selectionModel(), &QItemSelectionModel::currentChanged, this,
             &FrameDetail::onCurrentChanged);
     connect(m_hex, &HexView::byteClicked, this, &FrameDetail::onByteClicked);
-    m_model->setLanguage(coreLanguage());
+    m_model->setLanguage(model::textLanguage());
 }
 
 void FrameDetail::setFrame(const QByteArray &bytes, const vt::dev::Description &description)
 {
     m_note.clear();
-    m_model->setLanguage(coreLanguage());
+    m_model->setLanguage(model::textLanguage());
     m_model->setDescription(description);
     m_tree->expandAll();
     for (int c = 0; c < vt::model::FieldTreeModel::MeaningColumn; ++c)
@@ -102,11 +102,11 @@ void FrameDetail::updateHeadline()
         m_headline->setStyleSheet(QStringLiteral("color: #c81e1e;"));
         m_headline->setText(tr("Error at byte %1: %2")
                                 .arg(QLocale().toString(static_cast<qulonglong>(d.error->offset)),
-                                     localText(vt::dev::describeError(*d.error))));
+                                     model::localText(vt::dev::describeError(*d.error))));
         return;
     }
     m_headline->setStyleSheet({});
-    m_headline->setText(localText(d.summary));
+    m_headline->setText(model::localText(d.summary));
 }
 
 void FrameDetail::onCurrentChanged()
@@ -132,7 +132,7 @@ void FrameDetail::onByteClicked(int offset)
 void FrameDetail::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange) {
-        m_model->setLanguage(coreLanguage());
+        m_model->setLanguage(model::textLanguage());
         updateHeadline();
     }
     QWidget::changeEvent(event);

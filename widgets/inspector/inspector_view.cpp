@@ -1,7 +1,7 @@
 #include "inspector_view.h"
 
 #include "compose_panel.h"
-#include "core_language.h"
+#include "model/text_language.h"
 #include "decode_panel.h"
 #include "dict/dictionary.h"
 #include "frame_detail.h"
@@ -198,7 +198,7 @@ vt::dev::hcs::Family InspectorView::familyFor(int module) const
 vt::model::SummaryOptions InspectorView::summaryOptions() const
 {
     vt::model::SummaryOptions o;
-    o.language = coreLanguage();
+    o.language = model::textLanguage();
     o.dictionary = dictionaryFor(-1);
     o.family = familyFor(-1);
     return o;

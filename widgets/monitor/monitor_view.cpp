@@ -1,4 +1,5 @@
 #include "monitor_view.h"
+#include "model/text_language.h"
 
 #include "channel_chooser.h"
 #include "model/monitor/monitor_export.h"
@@ -129,7 +130,7 @@ MonitorView::MonitorView(QWidget *parent)
     connect(m_step, &StepControl::written, this, &MonitorView::journalWrites);
 
     m_session->setRate(kDefaultRateHz);
-    m_session->setLanguage(language());
+    m_session->setLanguage(model::textLanguage());
     retranslate();
     updateControls();
 }
@@ -141,15 +142,10 @@ MonitorView::~MonitorView()
     m_session->clearConnection();
 }
 
-dev::Language MonitorView::language() const
-{
-    return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
-}
-
 void MonitorView::setConnection(model::Connection *c, std::vector<model::ModuleInfo> modules)
 {
     m_step->clearConnection();
-    m_session->setLanguage(language());
+    m_session->setLanguage(model::textLanguage());
     m_session->setRate(m_rate->value());
     m_session->setConnection(c, modules);
     m_step->setConnection(c ? &c->access() : nullptr, modules);
@@ -281,7 +277,7 @@ void MonitorView::rebuildPlotChannels()
 {
     const std::vector<int> modules = m_session->monitoredModules();
     const bool prefix = modules.size() > 1;
-    const dev::Language lang = language();
+    const dev::Language lang = model::textLanguage();
     std::vector<PlotChannel> channels;
     for (int module : modules) {
         const model::SampleStore *store = m_session->store(module);
@@ -309,7 +305,7 @@ void MonitorView::chooseChannels()
         offered[module.address] = model::monitorableRows(module);
     for (int module : m_session->monitoredModules())
         selected[module] = m_session->channels(module);
-    ChannelChooser chooser(m_session->modules(), offered, selected, language(), this);
+    ChannelChooser chooser(m_session->modules(), offered, selected, model::textLanguage(), this);
     if (chooser.exec() == QDialog::Accepted)
         setChannels(chooser.selection());
 }
@@ -422,7 +418,7 @@ void MonitorView::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange) {
         retranslate();
-        m_session->setLanguage(language());
+        m_session->setLanguage(model::textLanguage());
         rebuildPlotChannels(); // legend names come from the dictionary in the new language
     }
     QWidget::changeEvent(event);

@@ -90,7 +90,6 @@ private:
     void showReadout(double t);
     void onRangeChanged();
     void exportWithDialog(int kind);
-    dev::Language language() const;
 
     model::MonitorSession *m_session = nullptr;
     MonitorPlot *m_plot = nullptr;

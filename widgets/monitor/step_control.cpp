@@ -1,4 +1,5 @@
 #include "step_control.h"
+#include "model/text_language.h"
 
 #include "dict/cooking.h"
 
@@ -7,7 +8,6 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLocale>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <cmath>
@@ -51,11 +51,6 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
 }
 
 StepControl::~StepControl() = default;
-
-dev::Language StepControl::language() const
-{
-    return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
-}
 
 void StepControl::setConnection(model::DeviceAccess *access,
                                 const std::vector<model::ModuleInfo> &modules)
@@ -116,10 +111,10 @@ void StepControl::moduleChosen()
             const QString name = QString::fromStdString(row->name);
             m_row->addItem(name, name);
             m_row->setItemData(m_row->count() - 1,
-                               QString::fromStdString(row->label.in(language())), Qt::ToolTipRole);
+                               QString::fromStdString(row->label.in(model::textLanguage())), Qt::ToolTipRole);
         }
         m_step = std::make_unique<model::SetValueStep>(*m_access, *module);
-        m_step->setLanguage(language());
+        m_step->setLanguage(model::textLanguage());
         connect(m_step.get(), &model::SetValueStep::refused, this,
                 [this](const QString &reason, bool needsActivation) {
                     m_status->setText(reason);
@@ -179,7 +174,7 @@ void StepControl::writeStep()
     const double raw = std::round(m_value->value() / factor);
     m_activate->setVisible(false);
     m_status->setText(tr("Checking E17, then writing %1 …").arg(QString::fromStdString(row->name)));
-    m_step->setLanguage(language());
+    m_step->setLanguage(model::textLanguage());
     m_step->step(*row, raw);
     updateEnabled();
 }

@@ -55,7 +55,6 @@ private:
     const dev::ParamMeta *currentRow() const;
     const model::ModuleInfo *currentModule() const;
     void onWritten(int module, const std::vector<model::WriteItem> &items, bool complete);
-    dev::Language language() const;
 
     model::DeviceAccess *m_access = nullptr;
     std::vector<model::ModuleInfo> m_modules; // those with a bus set value
