@@ -3,7 +3,6 @@
 #include "model/params/param_file_io.h"
 #include "model/recent_files.h"
 #include "widgets/editor/compare_dialog.h"
-#include "widgets/files/new_file.h"
 #include "widgets/files/new_file_dialog.h"
 #include "widgets/editor/map_report_dialog.h"
 #include "workspace.h"
@@ -67,14 +66,12 @@ void FileController::newFile()
     dialog->open();
 }
 
-void FileController::newFrom(const ui::NewFileChoice &choice)
+void FileController::newFrom(const model::NewFileChoice &choice)
 {
     if (!choice.valid())
         return;
-    const std::string tool = "ValveTune " + QCoreApplication::applicationVersion().toStdString();
-    const dev::files::ParamFile file = ui::newParamFile(choice, tool, std::chrono::system_clock::now());
     model::ParameterDocument &doc = m_workspace.document();
-    doc.loadFile(file, m_workspace.dictionaries(), QString());
+    doc.createNew(choice, m_workspace.dictionaries());
     if (m_workspace.isConnected())
         doc.attachDevice(m_workspace.modules());
     emit statusMessage(tr("New parameter set for %1 with the dictionary's defaults.")

@@ -14,9 +14,6 @@ class QWidget;
 
 namespace vt::model {
 class RecentFiles;
-}
-
-namespace vt::ui {
 struct NewFileChoice;
 }
 
@@ -31,7 +28,7 @@ public:
     FileController(Workspace &workspace, model::RecentFiles &recent, QWidget *window);
 
     void newFile();            // asks family, version, mode, modules (NewFileDialog)
-    void newFrom(const ui::NewFileChoice &choice);
+    void newFrom(const model::NewFileChoice &choice);
     void open();               // asks for a file
     bool openPath(const QString &path);
     bool save();               // Save As when the document has no file yet

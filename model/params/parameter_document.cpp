@@ -68,29 +68,9 @@ void ParameterDocument::clear()
     emit filePathChanged(m_filePath);
 }
 
-void ParameterDocument::createNew(const dev::Dictionary &dictionary, const std::string &version,
-                                  const std::string &mode, const std::vector<int> &addresses)
+void ParameterDocument::createNew(const NewFileChoice &choice, const dev::DictionarySet &dictionaries)
 {
-    std::vector<ParamModule> modules;
-    for (int address : addresses) {
-        ParamModule m;
-        m.address = address;
-        m.dictionary = &dictionary;
-        m.version = version;
-        m.mode = mode;
-        m.identity = moduleIdentity(dictionary, version, mode);
-        for (const dev::ParamMeta &row : dictionary.params) {
-            if (row.defaultValue && !row.isString() && m.active(row))
-                m.working[&row] = *row.defaultValue;
-        }
-        modules.push_back(std::move(m));
-    }
-    m_undo.clear();
-    m_unmapped.clear();
-    m_fileHeader = {};
-    m_filePath.clear();
-    resetModules(std::move(modules));
-    emit filePathChanged(m_filePath);
+    loadFile(newParamFile(choice, {}, std::chrono::system_clock::now()), dictionaries, QString());
 }
 
 void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/local_text.h"
+#include "model/params/new_file.h"
 #include "model/params/param_module.h"
 #include "model/session/device_access.h"
 #include "model/session/write_record.h"
@@ -36,9 +37,9 @@ public:
     // --- structure ----------------------------------------------------------------------------
     // Empties the document (no file, no modules, undo history cleared).
     void clear();
-    // File ▸ New: modules with the dictionary's defaults as working values, no file yet.
-    void createNew(const dev::Dictionary &dictionary, const std::string &version, const std::string &mode,
-                   const std::vector<int> &addresses);
+    // File ▸ New: the modules of the choice with the dictionary's defaults (newParamFile), no file
+    // path yet (Save asks for one).
+    void createNew(const NewFileChoice &choice, const dev::DictionarySet &dictionaries);
     // The identified modules of a connection: a module of the open file with the same address and
     // family becomes online; other device modules are added; file modules stay (offline).
     void attachDevice(const std::vector<ModuleInfo> &modules);

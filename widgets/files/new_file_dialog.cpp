@@ -83,9 +83,9 @@ bool NewFileDialog::setFamily(const std::string &family)
     return true;
 }
 
-NewFileChoice NewFileDialog::choice() const
+model::NewFileChoice NewFileDialog::choice() const
 {
-    NewFileChoice c;
+    model::NewFileChoice c;
     c.dictionary = dictionary();
     c.version = m_version->currentData().toString().toStdString();
     c.mode = m_mode->currentData().toString().toStdString();
@@ -118,7 +118,7 @@ void NewFileDialog::fillForFamily()
             for (const std::string &mode : dict->modes)
                 m_mode->addItem(QString(), QString::fromStdString(mode));
         }
-        m_modules->setRange(1, dict ? maxModules(*dict) : 1);
+        m_modules->setRange(1, dict ? model::maxModules(*dict) : 1);
         m_modules->setValue(1);
     }
     m_version->setEnabled(m_version->count() > 1);
@@ -145,7 +145,7 @@ void NewFileDialog::updateVersionLock()
 
 void NewFileDialog::updateSummary()
 {
-    const NewFileChoice c = choice();
+    const model::NewFileChoice c = choice();
     const bool ok = c.valid();
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(ok);
     if (!ok) {
@@ -154,7 +154,7 @@ void NewFileDialog::updateSummary()
     }
     const QLocale locale;
     QStringList places;
-    for (const ModulePlace &place : modulePlaces(c)) {
+    for (const model::ModulePlace &place : model::modulePlaces(c)) {
         places << (place.version.empty() ? tr("address %1").arg(locale.toString(place.address))
                                          : tr("address %1 (V%2)")
                                                .arg(locale.toString(place.address),

@@ -3,7 +3,7 @@
 // (new_file.h) turns into a file of dictionary defaults.
 #pragma once
 
-#include "widgets/files/new_file.h"
+#include "model/params/new_file.h"
 
 #include <QDialog>
 
@@ -25,7 +25,7 @@ public:
     // `dictionaries` must outlive the dialog and the choices it returns.
     explicit NewFileDialog(const dev::DictionarySet &dictionaries, QWidget *parent = nullptr);
 
-    NewFileChoice choice() const;
+    model::NewFileChoice choice() const;
     // Preselects a family (the one of the connected device, say); false when it is not offered.
     bool setFamily(const std::string &family);
 

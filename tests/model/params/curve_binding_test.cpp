@@ -15,7 +15,7 @@ TEST(CurveBinding, CurveEditsAreUndoableDocumentEdits)
 {
     const dev::Dictionary &dma = *dev::builtinDictionaries()->find("dma-pn-v51");
     model::ParameterDocument doc;
-    doc.createNew(dma, "51", "3", {1});
+    doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries());
     model::LCurveTableModel curves;
     model::CurveBinding binding(doc, curves);
     binding.setModule(0);

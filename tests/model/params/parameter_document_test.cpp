@@ -20,7 +20,7 @@ const dev::ParamMeta *row(const char *name) { return dma().find(name); }
 TEST(ParameterDocument, NewFileHoldsTheDictionaryDefaults)
 {
     ParameterDocument doc;
-    doc.createNew(dma(), "51", "3", {1, 2});
+    doc.createNew({&dma(), "51", "3", 3, 2}, dictionaries());
     ASSERT_EQ(doc.moduleCount(), 2);
     EXPECT_EQ(doc.module(1).address, 2);
     const auto c107 = doc.value(0, row("C1.07"));
@@ -33,7 +33,7 @@ TEST(ParameterDocument, NewFileHoldsTheDictionaryDefaults)
 TEST(ParameterDocument, EditIsUndoableAndRefusedOutOfRangeWithTheLimits)
 {
     ParameterDocument doc;
-    doc.createNew(dma(), "51", "3", {1});
+    doc.createNew({&dma(), "51", "3", 3, 1}, dictionaries());
     EXPECT_FALSE(doc.edit(0, row("C1.07"), 1000.0));
     EXPECT_EQ(doc.value(0, row("C1.07")), dev::RawValue{1000.0});
     EXPECT_TRUE(doc.isModified());

@@ -53,7 +53,7 @@ TEST(ParameterTreeModel, PassesTheModelTesterThroughEditsResetsAndFilters)
     filter.setSourceModel(&tree);
     QAbstractItemModelTester filterTester(&filter, QAbstractItemModelTester::FailureReportingMode::Fatal);
 
-    doc.createNew(dma(), "51", "3", {1, 2});
+    doc.createNew({&dma(), "51", "3", 3, 2}, dictionaries());
     ASSERT_EQ(tree.rowCount(), 2);
     // module → block (d C E A L r S B system) → branch → parameter
     const QModelIndex c107 = tree.indexOf(0, dma().find("C1.07"));
@@ -93,7 +93,7 @@ TEST(ParameterTreeModel, RolesCarryTheMetadataForTheDelegates)
 {
     model::ParameterDocument doc;
     ParameterTreeModel tree(doc);
-    doc.createNew(dma(), "51", "3", {1});
+    doc.createNew({&dma(), "51", "3", 3, 1}, dictionaries());
     const QModelIndex c107 = tree.indexOf(0, dma().find("C1.07"), ParameterTreeModel::ColValue);
     EXPECT_EQ(c107.data(model::UnitRole).toString(), "V");
     EXPECT_DOUBLE_EQ(c107.data(model::DisplayMaxRole).toDouble(), 9.999);
@@ -111,7 +111,7 @@ TEST(ParameterTreeModel, GermanInputUsesTheDecimalComma)
 {
     model::ParameterDocument doc;
     ParameterTreeModel tree(doc);
-    doc.createNew(dma(), "51", "3", {1});
+    doc.createNew({&dma(), "51", "3", 3, 1}, dictionaries());
     doc.setLanguage(dev::Language::German);
     const QModelIndex value = tree.indexOf(0, dma().find("C1.07"), ParameterTreeModel::ColValue);
     EXPECT_TRUE(tree.setData(value, QStringLiteral("1,5")));
@@ -129,7 +129,7 @@ TEST(ParameterTreeModel, GermanInputUsesTheDecimalComma)
 TEST(CompareModel, ListsDifferencesAndTakesTheChosenOnes)
 {
     model::ParameterDocument doc;
-    doc.createNew(dma(), "51", "3", {1});
+    doc.createNew({&dma(), "51", "3", 3, 1}, dictionaries());
     model::CompareModel compare(doc);
     QAbstractItemModelTester tester(&compare, QAbstractItemModelTester::FailureReportingMode::Fatal);
 

@@ -31,7 +31,7 @@ struct DelegateFixture : ::testing::Test
     ui::ParamDelegate delegate;
     QWidget parent;
 
-    void SetUp() override { doc.createNew(dma, "51", "3", {1}); }
+    void SetUp() override { doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries()); }
     QModelIndex value(const char *name) { return tree.indexOf(0, dma.find(name), ParameterTreeModel::ColValue); }
     QWidget *editorFor(const char *name) { return delegate.createEditor(&parent, QStyleOptionViewItem(), value(name)); }
 };
@@ -87,8 +87,10 @@ TEST_F(DelegateFixture, BitFieldsAreAChecklist)
         GTEST_SKIP() << "no writable bit-field row in the built-in dictionaries";
     model::ParameterDocument other;
     ParameterTreeModel otherTree(other);
-    other.createNew(*dict, dict->versions.empty() ? std::string() : dict->versions.front(),
-                    bits->modes.empty() ? std::string() : bits->modes.front(), {1});
+    const std::string mode = !bits->modes.empty() ? bits->modes.front()
+                             : dict->modes.empty() ? std::string() : dict->modes.front();
+    other.createNew({dict, dict->versions.empty() ? std::string() : dict->versions.front(), mode, -1, 1},
+                    *dev::builtinDictionaries());
     const QModelIndex index = otherTree.indexOf(0, bits, ParameterTreeModel::ColValue);
     auto *list = qobject_cast<QListWidget *>(delegate.createEditor(&parent, QStyleOptionViewItem(), index));
     ASSERT_NE(list, nullptr) << bits->name;
@@ -105,7 +107,7 @@ TEST(ParameterEditorWidget, RefusalIsShownUnderTheTreeAndFiltersHideRows)
     model::ParameterDocument doc;
     ui::ParameterEditor editor(doc);
     editor.show();
-    doc.createNew(dma, "51", "3", {1});
+    doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries());
     ASSERT_TRUE(editor.selectParameter(0, dma.find("C1.07")));
     const QModelIndex source = editor.treeModel()->indexOf(0, dma.find("C1.07"), ParameterTreeModel::ColValue);
     EXPECT_FALSE(editor.treeModel()->setData(source, QStringLiteral("99")));

@@ -76,7 +76,7 @@ TEST(NewFileDialog, EveryChoiceIsConsistent)
                 version->setCurrentIndex(v);
             for (int m = 0; m < mode->count(); ++m) {
                 mode->setCurrentIndex(m);
-                const ui::NewFileChoice c = dialog.choice();
+                const model::NewFileChoice c = dialog.choice();
                 EXPECT_EQ(c.dictionary, dict);
                 EXPECT_TRUE(dict->versions.empty() ? c.version.empty()
                                                    : contains(dict->versions, c.version))
@@ -110,7 +110,7 @@ TEST(NewFileDialog, ModuleCountFollowsTheFamily)
     // A node is led by the V34 master.
     EXPECT_EQ(dialog.choice().version, "34");
     EXPECT_FALSE(version->isEnabled());
-    const auto places = ui::modulePlaces(dialog.choice());
+    const auto places = model::modulePlaces(dialog.choice());
     ASSERT_EQ(places.size(), 3u);
     EXPECT_EQ(places[0].address, 0);
     EXPECT_EQ(places[0].version, "34");
@@ -122,7 +122,7 @@ TEST(NewFileDialog, ModuleCountFollowsTheFamily)
     EXPECT_EQ(modules->value(), 1);
     EXPECT_EQ(modules->maximum(), 5);
     modules->setValue(5);
-    EXPECT_EQ(ui::modulePlaces(dialog.choice()).back().address, 5); // E22 = 1..5
+    EXPECT_EQ(model::modulePlaces(dialog.choice()).back().address, 5); // E22 = 1..5
 
     ASSERT_TRUE(dialog.setFamily("wandfluh-sd7"));
     EXPECT_FALSE(modules->isEnabled());

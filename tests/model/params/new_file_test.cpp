@@ -2,7 +2,7 @@
 // modules with the dictionary's factory defaults, only for rows of that version and mode, and
 // survives the .vtpar codec unchanged.
 #include "dict/dictionary_loader.h"
-#include "widgets/files/new_file.h"
+#include "model/params/new_file.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ const dev::Dictionary &dict(const std::string &family)
 
 TEST(NewFile, HoldsTheDictionaryDefaultsOfVersionAndMode)
 {
-    ui::NewFileChoice choice;
+    model::NewFileChoice choice;
     choice.dictionary = &dict("dma-pn-v51");
     choice.version = "51";
     choice.mode = "3";
@@ -26,7 +26,7 @@ TEST(NewFile, HoldsTheDictionaryDefaultsOfVersionAndMode)
 
     const auto created =
         std::chrono::system_clock::time_point{} + std::chrono::hours(24 * 365 * 55);
-    const dev::files::ParamFile file = ui::newParamFile(choice, "ValveTune test", created);
+    const dev::files::ParamFile file = model::newParamFile(choice, "ValveTune test", created);
     EXPECT_EQ(file.tool, "ValveTune test");
     EXPECT_EQ(file.created, dev::files::isoUtc(created));
     ASSERT_EQ(file.modules.size(), 2u);
@@ -66,10 +66,10 @@ TEST(NewFile, ModeDecidesTheRows)
         differing += meta.writable() && meta.defaultValue && !meta.modes.empty() ? 1u : 0u;
     ASSERT_GT(differing, 0u) << "no mode-specific rows with defaults to tell modes apart";
 
-    ui::NewFileChoice three{&opat, "34", "3", 3, 1};
-    ui::NewFileChoice eight{&opat, "34", "8", 8, 1};
-    const auto a = ui::newParamFile(three, "t", {});
-    const auto b = ui::newParamFile(eight, "t", {});
+    model::NewFileChoice three{&opat, "34", "3", 3, 1};
+    model::NewFileChoice eight{&opat, "34", "8", 8, 1};
+    const auto a = model::newParamFile(three, "t", {});
+    const auto b = model::newParamFile(eight, "t", {});
     ASSERT_EQ(a.modules.size(), 1u);
     ASSERT_EQ(b.modules.size(), 1u);
     EXPECT_NE(a.modules[0].values, b.modules[0].values);
@@ -77,15 +77,15 @@ TEST(NewFile, ModeDecidesTheRows)
 
 TEST(NewFile, InvalidChoicesMakeNoModules)
 {
-    ui::NewFileChoice none;
+    model::NewFileChoice none;
     EXPECT_FALSE(none.valid());
-    EXPECT_TRUE(ui::newParamFile(none, "t", {}).modules.empty());
+    EXPECT_TRUE(model::newParamFile(none, "t", {}).modules.empty());
 
-    ui::NewFileChoice badMode{&dict("dma-pn-v51"), "51", "8", 8, 1};
+    model::NewFileChoice badMode{&dict("dma-pn-v51"), "51", "8", 8, 1};
     EXPECT_FALSE(badMode.valid());
-    ui::NewFileChoice tooMany{&dict("dma-pn-v51"), "51", "3", 3, 6};
+    model::NewFileChoice tooMany{&dict("dma-pn-v51"), "51", "3", 3, 6};
     EXPECT_FALSE(tooMany.valid());
-    ui::NewFileChoice slaveNode{&dict("opat"), "31", "3", 3, 2};
+    model::NewFileChoice slaveNode{&dict("opat"), "31", "3", 3, 2};
     EXPECT_FALSE(slaveNode.valid());
 }
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace vt::ui {
+namespace vt::model {
 
 namespace {
 
@@ -95,4 +95,4 @@ dev::files::ParamFile newParamFile(const NewFileChoice &choice, const std::strin
     return file;
 }
 
-} // namespace vt::ui
+} // namespace vt::model

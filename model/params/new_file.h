@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace vt::ui {
+namespace vt::model {
 
 struct NewFileChoice
 {
@@ -42,4 +42,4 @@ std::vector<ModulePlace> modulePlaces(const NewFileChoice &choice);
 dev::files::ParamFile newParamFile(const NewFileChoice &choice, const std::string &tool,
                                    std::chrono::system_clock::time_point created);
 
-} // namespace vt::ui
+} // namespace vt::model
