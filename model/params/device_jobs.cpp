@@ -25,7 +25,6 @@ void ReadAllJob::start()
     m_running = true;
     m_cancelled = false;
     m_doneBefore = 0;
-    m_estimate = 0;
     next();
 }
 

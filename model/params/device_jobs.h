@@ -42,7 +42,6 @@ private:
     std::shared_ptr<DeviceAccess::ReadHandle> m_handle;
     QStringList m_problems;
     int m_doneBefore = 0; // exchanges of finished modules
-    int m_estimate = 0;   // exchanges planned so far (grows as modules start)
     bool m_running = false;
     bool m_cancelled = false;
 };

@@ -25,7 +25,7 @@ QString formatRaw(const dev::ParamMeta &row, const dev::RawValue &value, dev::La
     const double raw = dev::rawNumber(value);
     if (isBitField(row)) {
         const auto bits = static_cast<std::uint32_t>(static_cast<std::int64_t>(raw));
-        const QString hex = QStringLiteral("0x%1").arg(bits, 4, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
+        const QString hex = QStringLiteral("0x") + QStringLiteral("%1").arg(bits, 4, 16, QLatin1Char('0')).toUpper();
         const std::string labels = dev::formatBits(row, bits, lang);
         return labels.empty() ? hex : hex + QStringLiteral(" (") + qs(labels) + QLatin1Char(')');
     }
