@@ -14,6 +14,9 @@
 #include "model/params/parameter_tree_model.h"
 #include "session_fixture.h"
 #include "widgets/editor/compare_dialog.h"
+#include "widgets/editor/map_report_dialog.h"
+#include "model/params/device_jobs.h"
+#include "model/params/param_file_io.h"
 #include "widgets/editor/parameter_editor.h"
 #include "widgets/connect/connect_dialog.h"
 #include "widgets/connect/link_status_widget.h"
@@ -206,6 +209,68 @@ TEST_F(EditorE2E, NewFileFromTheDictionaryDefaultsAndConnectThroughTheDialog)
     // The new document's module 1 paired with the device's: its values now differ where the
     // simulator's stored values are not the defaults, and nothing was written.
     EXPECT_EQ(window->workspace().document().moduleCount(), modules);
+}
+
+} // namespace
+} // namespace vt::test
+
+namespace vt::test {
+namespace {
+
+TEST_F(EditorE2E, UnsavedChangesPromptAndReadAllCancel)
+{
+    connectSimulator();
+    const QString path = dir.filePath("kept.vtpar");
+    ASSERT_TRUE(window->files().saveTo(path));
+    typeValue("C1.07", QStringLiteral("1.234"));
+    ASSERT_TRUE(window->workspace().document().isModified());
+
+    // Cancel keeps the edit and refuses to go on; Save writes it first; Discard goes on.
+    window->files().setPromptHook([] { return QMessageBox::Cancel; });
+    EXPECT_FALSE(window->files().maybeSave());
+    EXPECT_TRUE(window->workspace().document().isModified());
+    window->files().setPromptHook([] { return QMessageBox::Save; });
+    EXPECT_TRUE(window->files().maybeSave());
+    EXPECT_FALSE(window->workspace().document().isModified());
+    auto saved = model::readParamFile(path, dev::Language::English);
+    ASSERT_TRUE(saved.ok());
+    EXPECT_EQ(saved->modules[0].find("C1.07")->raw, dev::RawValue{1234.0});
+
+    // Read All can be cancelled: the job ends incomplete and says so.
+    QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
+    window->device().readAll();
+    ASSERT_NE(window->device().readJob(), nullptr);
+    window->device().readJob()->cancel();
+    ASSERT_TRUE(read.wait(kWaitMs));
+    EXPECT_FALSE(read.at(0).at(0).toBool());
+}
+
+TEST_F(EditorE2E, FileOfAnotherVersionReportsWhatDidNotMap)
+{
+    dev::files::ParamFile file;
+    dev::files::ModuleRecord record;
+    record.address = 1;
+    record.family = "dma-pn-v51";
+    record.version = "51";
+    record.mode = "3";
+    record.values.push_back(dev::files::makeValueRow(*dev::builtinDictionaries()->find("dma-pn-v51")->find("C1.07"), 700.0));
+    dev::files::ValueRow future;
+    future.name = "C1.99";
+    future.raw = 5.0;
+    record.values.push_back(future);
+    file.modules.push_back(record);
+    const QString path = dir.filePath("newer.vtpar");
+    ASSERT_FALSE(model::saveParamFile(path, file, *dev::builtinDictionaries(), dev::Language::English));
+    ASSERT_TRUE(window->files().openPath(path));
+    ASSERT_TRUE(ui::MapReportDialog::needed(window->workspace().document()));
+    ui::MapReportDialog report(window->workspace().document());
+    EXPECT_TRUE(report.text().contains("C1.99")) << report.text().toStdString();
+    // Kept and written back on save.
+    const QString again = dir.filePath("again.vtpar");
+    ASSERT_TRUE(window->files().saveTo(again));
+    auto reread = model::readParamFile(again, dev::Language::English);
+    ASSERT_TRUE(reread.ok());
+    ASSERT_NE(reread->modules[0].find("C1.99"), nullptr);
 }
 
 } // namespace
