@@ -3,7 +3,6 @@
 #include "core/byte_reader.h"
 
 #include <benchmark/benchmark.h>
-
 #include <cstdint>
 #include <vector>
 

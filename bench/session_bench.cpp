@@ -7,6 +7,9 @@
 //     the wire, zero device turnaround).
 // Not a test: it prints figures (docs/PERFORMANCE.md says how to run it). The pty needs the
 // test-only ioctl shim (tests/transports/ioctl_shim.cpp) for libserialport, as the tests do.
+#include "access/hcs_rows.h"
+#include "access/modbus_adapter.h"
+#include "dict/dictionary_loader.h"
 #include "model/session/device_access.h"
 #include "model/session/monitor_scheduler.h"
 #include "model/session/session.h"
@@ -15,10 +18,6 @@
 #include "transports/serial_settings.h"
 #include "transports/sim_link.h"
 
-#include "access/hcs_rows.h"
-#include "access/modbus_adapter.h"
-#include "dict/dictionary_loader.h"
-
 #include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QElapsedTimer>
@@ -26,10 +25,8 @@
 #include <QFile>
 #include <QProcess>
 #include <QTimer>
-
-#include <modbus/modbus.h>
-
 #include <cstdio>
+#include <modbus/modbus.h>
 #include <optional>
 
 namespace {
@@ -57,7 +54,8 @@ struct SimProcess
     bool start()
     {
         process.setProgram(QStringLiteral(VT_SIM_PATH));
-        process.setArguments({QStringLiteral("--device"), QStringLiteral("dma-pn-v51"), QStringLiteral("--pty")});
+        process.setArguments(
+            {QStringLiteral("--device"), QStringLiteral("dma-pn-v51"), QStringLiteral("--pty")});
         process.start();
         QDeadlineTimer deadline(10'000);
         while (!process.canReadLine()) {
@@ -93,7 +91,8 @@ double libmodbusReadAll(const QString &pty, const std::vector<dev::access::HcsBl
         for (const auto &block : blocks) {
             const int count = static_cast<int>(block.rows.size());
             if (modbus_read_registers(ctx, block.firstId, count, dest) != count)
-                std::fprintf(stderr, "libmodbus: block %u failed: %s\n", block.firstId, modbus_strerror(errno));
+                std::fprintf(stderr, "libmodbus: block %u failed: %s\n", block.firstId,
+                             modbus_strerror(errno));
         }
     }
     const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9 / kRounds;
@@ -102,22 +101,32 @@ double libmodbusReadAll(const QString &pty, const std::vector<dev::access::HcsBl
     return seconds;
 }
 
-double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict, const std::vector<const dev::ParamMeta *> &rows)
+double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict,
+                        const std::vector<const dev::ParamMeta *> &rows)
 {
     // libserialport looks a port up in sysfs; a pty has no entry. The tests' symlink trick:
     // "/dev/../../..<symlink>" (tests/transports/pty_pair.h).
-    const QString link = QStringLiteral("/tmp/vt-bench-pty-%1").arg(QCoreApplication::applicationPid());
+    const QString link =
+        QStringLiteral("/tmp/vt-bench-pty-%1").arg(QCoreApplication::applicationPid());
     QFile::remove(link);
     QFile::link(pty, link);
-    link::SerialLink serial(link::SerialSettings::hcsDefault(QStringLiteral("/dev/../../..") + link));
+    link::SerialLink serial(
+        link::SerialSettings::hcsDefault(QStringLiteral("/dev/../../..") + link));
     model::SessionOptions options;
     options.baudRate = 19200;
     options.turnaround = std::chrono::milliseconds(1000);
-    model::Session session(&serial, std::make_unique<dev::access::ModbusRtuAdapter>(dev::access::hcsFamilyOf(dict.family)),
-                           options);
+    model::Session session(
+        &serial,
+        std::make_unique<dev::access::ModbusRtuAdapter>(dev::access::hcsFamilyOf(dict.family)),
+        options);
     model::DeviceAccess access(session, *dev::builtinDictionaries());
     serial.open();
-    if (!spin([&] { return serial.state() == link::LinkState::Open || serial.state() == link::LinkState::Failed; }, 5000) ||
+    if (!spin(
+            [&] {
+                return serial.state() == link::LinkState::Open ||
+                       serial.state() == link::LinkState::Failed;
+            },
+            5000) ||
         serial.state() != link::LinkState::Open) {
         std::fprintf(stderr, "SerialLink cannot open %s\n", qPrintable(pty));
         return -1;
@@ -126,7 +135,8 @@ double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict, const s
     timer.start();
     for (int round = 0; round < kRounds; ++round) {
         std::optional<model::ReadResult> result;
-        access.read(1, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
+        access.read(1, rows, model::Priority::User,
+                    [&](const model::ReadResult &r) { result = r; });
         if (!spin([&] { return result.has_value(); }, 60'000) || !result->complete())
             std::fprintf(stderr, "ValveTune: read all incomplete\n");
     }
@@ -152,8 +162,9 @@ void benchReadAll()
         lib += libmodbusReadAll(sim.pty, blocks);
         vt += valvetuneReadAll(sim.pty, dict, rows);
     }
-    std::printf("read-all dma-pn-v51 over a pty (%zu rows in %zu requests), mean of %d rounds x 3 passes\n",
-                rows.size(), blocks.size(), kRounds);
+    std::printf(
+        "read-all dma-pn-v51 over a pty (%zu rows in %zu requests), mean of %d rounds x 3 passes\n",
+        rows.size(), blocks.size(), kRounds);
     std::printf("  libmodbus master (baseline): %8.2f ms\n", lib / 3 * 1e3);
     std::printf("  ValveTune session:           %8.2f ms\n", vt / 3 * 1e3);
     std::printf("  ratio ValveTune / libmodbus: %8.2f\n", vt / lib);
@@ -173,7 +184,9 @@ void benchMonitor()
     auto link = std::move(made).value();
     model::SessionOptions options;
     options.baudRate = 115200;
-    model::Session session(link.get(), std::make_unique<dev::access::ModbusRtuAdapter>(dev::hcs::Family::Dma), options);
+    model::Session session(link.get(),
+                           std::make_unique<dev::access::ModbusRtuAdapter>(dev::hcs::Family::Dma),
+                           options);
     model::DeviceAccess access(session, *dev::builtinDictionaries());
     link->open();
     spin([&] { return link->state() == link::LinkState::Open; }, 5000);
@@ -191,7 +204,8 @@ void benchMonitor()
     // FC 3 request: 8 bytes; answer: unit + FC + count + 2 × 7 + CRC = 19 bytes.
     const std::size_t wireBytes = 8 + 5 + 2 * rows.size();
     const double limit = 115200.0 / (11.0 * static_cast<double>(wireBytes));
-    std::printf("monitor d1.07..d1.13 (%zu values/request) at 115200 8E1, %.1f s back to back\n", rows.size(), seconds);
+    std::printf("monitor d1.07..d1.13 (%zu values/request) at 115200 8E1, %.1f s back to back\n",
+                rows.size(), seconds);
     std::printf("  wire limit:  %8.1f samples/s (%zu bytes per exchange)\n", limit, wireBytes);
     std::printf("  achieved:    %8.1f samples/s\n", achieved);
     std::printf("  achieved / limit: %.3f\n", achieved / limit);

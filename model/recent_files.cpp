@@ -4,7 +4,9 @@
 
 namespace vt::model {
 
-RecentFiles::RecentFiles(int limit, QObject *parent) : QObject(parent), m_limit(qMax(1, limit)) {}
+RecentFiles::RecentFiles(int limit, QObject *parent) : QObject(parent), m_limit(qMax(1, limit))
+{
+}
 
 void RecentFiles::add(const QString &path)
 {

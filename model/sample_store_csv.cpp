@@ -1,6 +1,6 @@
 // SampleStore's CSV export and its bounded reader (round trips, loading a saved recording).
-#include "sample_store.h"
 #include "model/text_language.h"
+#include "sample_store.h"
 
 #include <QIODevice>
 #include <QLocale>

@@ -1,9 +1,8 @@
 #include "telegram_log.h"
 
-#include "inspect/logged_frame.h"
-
 #include "core/hex.h"
 #include "inspect/describe_any.h"
+#include "inspect/logged_frame.h"
 
 #include <QIODevice>
 #include <QTextStream>
@@ -221,7 +220,8 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
     any.family = options.family;
     any.direction = r.direction;
     any.dictionary = options.dictionary;
-    const auto described = vt::dev::inspect::describeLogged(r.protocol.toStdString(), asSpan(r.bytes), any);
+    const auto described =
+        vt::dev::inspect::describeLogged(r.protocol.toStdString(), asSpan(r.bytes), any);
     if (!described)
         return fromStd(described.error());
     if (!described->summary.en.empty())

@@ -9,6 +9,9 @@ dev::Language textLanguage()
     return QLocale().language() == QLocale::German ? dev::Language::German : dev::Language::English;
 }
 
-QString localText(const dev::LocalText &text) { return QString::fromStdString(text.in(textLanguage())); }
+QString localText(const dev::LocalText &text)
+{
+    return QString::fromStdString(text.in(textLanguage()));
+}
 
 } // namespace vt::model

@@ -18,7 +18,8 @@ QString linkStateText(LinkState state)
     case LinkState::Closed: return QCoreApplication::translate("vt::link::Link", "Not connected");
     case LinkState::Opening: return QCoreApplication::translate("vt::link::Link", "Connecting…");
     case LinkState::Open: return QCoreApplication::translate("vt::link::Link", "Connected");
-    case LinkState::Failed: return QCoreApplication::translate("vt::link::Link", "Connection failed");
+    case LinkState::Failed:
+        return QCoreApplication::translate("vt::link::Link", "Connection failed");
     }
     return {};
 }

@@ -31,12 +31,13 @@ void AboutDialog::changeEvent(QEvent *event)
 void AboutDialog::retranslate()
 {
     setWindowTitle(tr("About ValveTune"));
-    m_text->setText(tr("ValveTune %1\n\n"
-                       "Parameterisation, tuning and commissioning of hydraulic proportional-valve "
-                       "electronics: HCS OPAT and DMA-2, Wandfluh ED1/SD1 (DSP-408) and SD7 (HART-7).\n\n"
-                       "Licensed under the GNU General Public License, version 3 or later. "
-                       "Plots use QCustomPlot (GPL-3.0).")
-                        .arg(QCoreApplication::applicationVersion()));
+    m_text->setText(
+        tr("ValveTune %1\n\n"
+           "Parameterisation, tuning and commissioning of hydraulic proportional-valve "
+           "electronics: HCS OPAT and DMA-2, Wandfluh ED1/SD1 (DSP-408) and SD7 (HART-7).\n\n"
+           "Licensed under the GNU General Public License, version 3 or later. "
+           "Plots use QCustomPlot (GPL-3.0).")
+            .arg(QCoreApplication::applicationVersion()));
 }
 
 } // namespace vt::ui

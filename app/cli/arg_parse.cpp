@@ -18,7 +18,10 @@ std::optional<QString> takeOption(QStringList &args, const QString &name, bool *
     return value;
 }
 
-bool takeFlag(QStringList &args, const QString &name) { return args.removeAll(name) > 0; }
+bool takeFlag(QStringList &args, const QString &name)
+{
+    return args.removeAll(name) > 0;
+}
 
 std::optional<long long> parseInteger(const QString &text, long long min, long long max)
 {

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <QStringList>
-
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -2,9 +2,8 @@
 
 #include "commands.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 namespace vt::cli {
 namespace {
@@ -26,7 +25,8 @@ void printHelp(std::ostream &out)
     } else {
         out << "Commands:\n";
         for (const Command &c : commands())
-            out << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ') << c.summary << '\n';
+            out << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ')
+                << c.summary << '\n';
     }
     out << "\nExit codes: 0 ok, 1 device or protocol error, 2 usage error, 3 connection error,\n"
         << "4 verification failed.\n";
@@ -51,7 +51,8 @@ const std::vector<Command> &commands()
         {"read", "read every parameter; print it or save a .vtpar file (--out)", runRead},
         {"get", "read parameters by name", runGet},
         {"set", "write parameters in display units, checked and verified", runSet},
-        {"write", "write a .vtpar file's changed values, verified (--dry-run: list them)", runWrite},
+        {"write", "write a .vtpar file's changed values, verified (--dry-run: list them)",
+         runWrite},
         {"diff", "compare a .vtpar file with the device", runDiff},
         {"monitor", "poll display values at a rate for a time (--csv)", runMonitor},
         {"fold", "plan a multi-module node's PLC configuration (GSD, byte map)", runFold},
@@ -72,7 +73,8 @@ int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err)
         }
         if (opt == QLatin1String("--version")) {
             if (ctx.json)
-                out << nlohmann::ordered_json{{"name", kProgram}, {"version", VT_VERSION}}.dump() << '\n';
+                out << nlohmann::ordered_json{{"name", kProgram}, {"version", VT_VERSION}}.dump()
+                    << '\n';
             else
                 out << kProgram << ' ' << VT_VERSION << '\n';
             return kExitOk;
@@ -88,7 +90,8 @@ int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err)
 
     const std::string name = rest.takeFirst().toStdString();
     const auto &list = commands();
-    const auto it = std::find_if(list.begin(), list.end(), [&](const Command &c) { return c.name == name; });
+    const auto it =
+        std::find_if(list.begin(), list.end(), [&](const Command &c) { return c.name == name; });
     if (it == list.end())
         return ctx.fail(kExitUsage, "unknown command '" + name + "' (see --help)");
     if (rest.removeAll(QStringLiteral("--json")) > 0)

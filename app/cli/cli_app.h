@@ -7,7 +7,6 @@
 #include "exit_codes.h"
 
 #include <QStringList>
-
 #include <functional>
 #include <ostream>
 #include <string>

@@ -2,7 +2,6 @@
 //                      [--profile KEY] [--dictionary FAMILY] [--cob-id ID] HEX…
 #include "arg_parse.h"
 #include "commands.h"
-
 #include "core/hex.h"
 #include "dict/dictionary_loader.h"
 #include "hcs/profiles.h"
@@ -15,12 +14,16 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-const char kUsage[] =
-    "usage: valvetune-cli decode --protocol gateway|modbus-rtu|modbus-tcp|profidrive|pkw|pzd|hart|canopen\n"
-    "       [--family opat|dma] [--direction request|response] [--profile KEY] [--dictionary FAMILY]\n"
-    "       [--cob-id ID] [--lang en|de] HEX...";
+const char kUsage[] = "usage: valvetune-cli decode --protocol "
+                      "gateway|modbus-rtu|modbus-tcp|profidrive|pkw|pzd|hart|canopen\n"
+                      "       [--family opat|dma] [--direction request|response] [--profile KEY] "
+                      "[--dictionary FAMILY]\n"
+                      "       [--cob-id ID] [--lang en|de] HEX...";
 
-std::string fieldText(const dev::FieldSpan &f, dev::Language lang) { return f.text.in(lang); }
+std::string fieldText(const dev::FieldSpan &f, dev::Language lang)
+{
+    return f.text.in(lang);
+}
 
 } // namespace
 
@@ -81,8 +84,9 @@ int runDecode(const QStringList &argsIn, Context &ctx)
         lang = *langArg == "de" ? dev::Language::German : dev::Language::English;
     }
     // Parameter names: the dictionary asked for, or the OPAT one (its IDs are unambiguous).
-    std::string dictionary = dictionaryArg ? dictionaryArg->toStdString()
-                                           : (options.family == dev::hcs::Family::Opat ? "opat" : "");
+    std::string dictionary = dictionaryArg
+                                 ? dictionaryArg->toStdString()
+                                 : (options.family == dev::hcs::Family::Opat ? "opat" : "");
     if (!dictionary.empty()) {
         const auto &set = dev::builtinDictionaries();
         options.dictionary = set.ok() ? set->find(dictionary) : nullptr;
@@ -95,7 +99,8 @@ int runDecode(const QStringList &argsIn, Context &ctx)
     const std::string hexText = args.join(' ').toStdString();
     const auto bytes = dev::parseHex(hexText);
     if (!bytes.ok())
-        return ctx.fail(kExitUsage, "not hex at character " + std::to_string(bytes.error().position) + ": " +
+        return ctx.fail(kExitUsage, "not hex at character " +
+                                        std::to_string(bytes.error().position) + ": " +
                                         bytes.error().reason);
 
     const auto described = dev::describeAny(*bytes, options);
@@ -106,13 +111,21 @@ int runDecode(const QStringList &argsIn, Context &ctx)
     if (ctx.json) {
         Json fields = Json::array();
         for (const dev::FieldSpan &f : d.fields)
-            fields.push_back(Json{{"key", f.key}, {"offset", f.offset}, {"length", f.length}, {"depth", f.depth},
-                                  {"value", f.value}, {"text", fieldText(f, lang)}});
+            fields.push_back(Json{{"key", f.key},
+                                  {"offset", f.offset},
+                                  {"length", f.length},
+                                  {"depth", f.depth},
+                                  {"value", f.value},
+                                  {"text", fieldText(f, lang)}});
         Json error = nullptr;
         if (d.error)
-            error = Json{{"offset", d.error->offset}, {"reason", dev::describeError(*d.error).in(lang)}};
-        ctx.out << Json{{"protocol", dev::protocolName(*protocol)}, {"ok", d.ok()}, {"error", error},
-                        {"summary", d.summary.in(lang)}, {"fields", fields}}
+            error = Json{{"offset", d.error->offset},
+                         {"reason", dev::describeError(*d.error).in(lang)}};
+        ctx.out << Json{{"protocol", dev::protocolName(*protocol)},
+                        {"ok", d.ok()},
+                        {"error", error},
+                        {"summary", d.summary.in(lang)},
+                        {"fields", fields}}
                        .dump(2)
                 << '\n';
     } else {
@@ -120,7 +133,8 @@ int runDecode(const QStringList &argsIn, Context &ctx)
             ctx.out << d.summary.in(lang) << '\n';
         for (const dev::FieldSpan &f : d.fields) {
             std::string line(static_cast<std::size_t>(2 * f.depth), ' ');
-            line += "[" + std::to_string(f.offset) + (f.length > 1 ? "+" + std::to_string(f.length) : "") + "] ";
+            line += "[" + std::to_string(f.offset) +
+                    (f.length > 1 ? "+" + std::to_string(f.length) : "") + "] ";
             line += f.key;
             if (!f.value.empty())
                 line += " = " + f.value;

@@ -1,13 +1,11 @@
 // valvetune-cli dictionary list | show FAMILY [--lang en|de] [--json]
 #include "commands.h"
-
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 
 namespace vt::cli {
 namespace {
@@ -67,9 +65,12 @@ Json rowJson(const dev::ParamMeta &p)
     if (p.scale.name.empty())
         j["scale"] = nullptr;
     else
-        j["scale"] = Json{{"name", p.scale.name}, {"factor", p.scale.factor}, {"decimals", p.scale.decimals},
-                          {"rounding", p.scale.rounding == dev::Rounding::Truncate ? "truncate" : "nearest"},
-                          {"assumed", p.scale.assumed}};
+        j["scale"] =
+            Json{{"name", p.scale.name},
+                 {"factor", p.scale.factor},
+                 {"decimals", p.scale.decimals},
+                 {"rounding", p.scale.rounding == dev::Rounding::Truncate ? "truncate" : "nearest"},
+                 {"assumed", p.scale.assumed}};
     Json enums = Json::array();
     for (const auto &e : p.enums)
         enums.push_back(Json{{"value", e.value}, {"en", e.text.en}, {"de", e.text.de}});
@@ -135,15 +136,21 @@ int runDictionary(const QStringList &argsIn, Context &ctx)
             Json list = Json::array();
             for (const auto &f : set.families()) {
                 const dev::Dictionary *d = set.find(f);
-                list.push_back(Json{{"family", f}, {"title_en", d->title.en}, {"title_de", d->title.de},
-                                    {"vendor", d->vendor}, {"protocol", protocolKey(d->protocol)},
-                                    {"versions", d->versions}, {"modes", d->modes}, {"rows", d->params.size()}});
+                list.push_back(Json{{"family", f},
+                                    {"title_en", d->title.en},
+                                    {"title_de", d->title.de},
+                                    {"vendor", d->vendor},
+                                    {"protocol", protocolKey(d->protocol)},
+                                    {"versions", d->versions},
+                                    {"modes", d->modes},
+                                    {"rows", d->params.size()}});
             }
             ctx.out << Json{{"families", list}}.dump(2) << '\n';
         } else {
             for (const auto &f : set.families()) {
                 const dev::Dictionary *d = set.find(f);
-                ctx.out << std::left << std::setw(14) << f << std::setw(5) << d->params.size() << d->title.in(lang) << '\n';
+                ctx.out << std::left << std::setw(14) << f << std::setw(5) << d->params.size()
+                        << d->title.in(lang) << '\n';
             }
         }
         return kExitOk;
@@ -152,22 +159,30 @@ int runDictionary(const QStringList &argsIn, Context &ctx)
         const std::string family = args.first().toStdString();
         const dev::Dictionary *d = set.find(family);
         if (!d || d->abstract)
-            return ctx.fail(kExitUsage, "unknown family '" + family + "' (see: valvetune-cli dictionary list)");
+            return ctx.fail(kExitUsage,
+                            "unknown family '" + family + "' (see: valvetune-cli dictionary list)");
         if (ctx.json) {
             Json rows = Json::array();
             for (const auto &p : d->params)
                 rows.push_back(rowJson(p));
-            ctx.out << Json{{"family", d->family}, {"title_en", d->title.en}, {"title_de", d->title.de},
-                            {"vendor", d->vendor}, {"protocol", protocolKey(d->protocol)}, {"source", d->source},
-                            {"versions", d->versions}, {"modes", d->modes}, {"parameters", rows}}
+            ctx.out << Json{{"family", d->family},
+                            {"title_en", d->title.en},
+                            {"title_de", d->title.de},
+                            {"vendor", d->vendor},
+                            {"protocol", protocolKey(d->protocol)},
+                            {"source", d->source},
+                            {"versions", d->versions},
+                            {"modes", d->modes},
+                            {"parameters", rows}}
                            .dump(2)
                     << '\n';
         } else {
             ctx.out << d->title.in(lang) << " — " << d->source << '\n';
             for (const auto &p : d->params)
-                ctx.out << std::left << std::setw(28) << p.name << std::setw(18) << p.addressText() << std::setw(4)
-                        << dev::accessKey(p.access) << std::setw(8) << dev::rawTypeKey(p.type) << p.label.in(lang)
-                        << "  [" << rangeText(p, lang) << "]\n";
+                ctx.out << std::left << std::setw(28) << p.name << std::setw(18) << p.addressText()
+                        << std::setw(4) << dev::accessKey(p.access) << std::setw(8)
+                        << dev::rawTypeKey(p.type) << p.label.in(lang) << "  ["
+                        << rangeText(p, lang) << "]\n";
         }
         return kExitOk;
     }

@@ -99,22 +99,23 @@ const dev::ParamMeta *findRow(const model::ModuleInfo &module, const std::string
     return module.dictionary ? module.dictionary->find(name) : nullptr;
 }
 
-std::optional<std::vector<const dev::ParamMeta *>> readableRowsNamed(const QStringList &names,
-                                                                     const model::ModuleInfo &module,
-                                                                     Context &ctx, const char *command,
-                                                                     int *code)
+std::optional<std::vector<const dev::ParamMeta *>>
+readableRowsNamed(const QStringList &names, const model::ModuleInfo &module, Context &ctx,
+                  const char *command, int *code)
 {
     std::vector<const dev::ParamMeta *> rows;
     for (const QString &name : names) {
         const dev::ParamMeta *row = findRow(module, str(name));
         if (!row) {
             *code = failUsage(ctx, command,
-                              "unknown parameter '" + str(name) + "' for " + module.identification.family);
+                              "unknown parameter '" + str(name) + "' for " +
+                                  module.identification.family);
             return std::nullopt;
         }
         if (!row->readable()) {
-            *code = failUsage(ctx, command,
-                              row->name + " cannot be read (" + dev::accessText(row->access).en + ")");
+            *code =
+                failUsage(ctx, command,
+                          row->name + " cannot be read (" + dev::accessText(row->access).en + ")");
             return std::nullopt;
         }
         rows.push_back(row);

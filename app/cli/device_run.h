@@ -104,9 +104,8 @@ bool appliesToModule(const dev::ParamMeta &row, const model::ModuleInfo &module)
 const dev::ParamMeta *findRow(const model::ModuleInfo &module, const std::string &name);
 // The rows `names` of the module, each readable. nullopt after printing a usage error of command
 // `command` (unknown or unreadable name; *code = 2).
-std::optional<std::vector<const dev::ParamMeta *>> readableRowsNamed(const QStringList &names,
-                                                                     const model::ModuleInfo &module,
-                                                                     Context &ctx, const char *command,
-                                                                     int *code);
+std::optional<std::vector<const dev::ParamMeta *>>
+readableRowsNamed(const QStringList &names, const model::ModuleInfo &module, Context &ctx,
+                  const char *command, int *code);
 
 } // namespace vt::cli

@@ -2,7 +2,6 @@
 #include "app/cli/cli_app.h"
 
 #include <QCoreApplication>
-
 #include <iostream>
 
 int main(int argc, char *argv[])

@@ -27,9 +27,15 @@ void DeviceController::connectDialog()
     dialog->open();
 }
 
-void DeviceController::connectTo(const model::ConnectionSpec &spec) { m_workspace.connectTo(spec); }
+void DeviceController::connectTo(const model::ConnectionSpec &spec)
+{
+    m_workspace.connectTo(spec);
+}
 
-void DeviceController::disconnectFromDevice() { m_workspace.disconnectFromDevice(); }
+void DeviceController::disconnectFromDevice()
+{
+    m_workspace.disconnectFromDevice();
+}
 
 void DeviceController::scan()
 {
@@ -47,7 +53,8 @@ void DeviceController::scan()
         progress->close();
         emit statusMessage(tr("Scan found %n module(s).", nullptr, found));
     });
-    connect(progress, &QProgressDialog::canceled, this, [this] { m_workspace.disconnectFromDevice(); });
+    connect(progress, &QProgressDialog::canceled, this,
+            [this] { m_workspace.disconnectFromDevice(); });
     m_workspace.scan();
 }
 
@@ -55,7 +62,8 @@ void DeviceController::readAll()
 {
     if (!m_workspace.isConnected() || m_read)
         return;
-    m_read = new model::ReadAllJob(m_workspace.connection()->access(), m_workspace.document(), this);
+    m_read =
+        new model::ReadAllJob(m_workspace.connection()->access(), m_workspace.document(), this);
     m_progress = new QProgressDialog(tr("Reading all parameters…"), tr("Cancel"), 0, 1, m_window);
     m_progress->setObjectName(QStringLiteral("readAllProgress"));
     m_progress->setAttribute(Qt::WA_DeleteOnClose);
@@ -75,8 +83,10 @@ void DeviceController::readAll()
         m_read->deleteLater();
         m_read = nullptr;
         emit statusMessage(complete ? tr("All parameters read.")
-                                    : tr("Read incomplete: %1").arg(problems.isEmpty() ? tr("cancelled")
-                                                                                        : problems.join(QStringLiteral("; "))));
+                                    : tr("Read incomplete: %1")
+                                          .arg(problems.isEmpty()
+                                                   ? tr("cancelled")
+                                                   : problems.join(QStringLiteral("; "))));
         emit readFinished(complete);
     });
     m_read->start();
@@ -98,13 +108,15 @@ ui::WriteDialog *DeviceController::writeChanges()
         emit statusMessage(tr("Nothing to write: the editor and the device agree."));
         return nullptr;
     }
-    auto *dialog = new ui::WriteDialog(m_workspace.connection()->access(), doc, std::move(plan), m_window);
+    auto *dialog =
+        new ui::WriteDialog(m_workspace.connection()->access(), doc, std::move(plan), m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &ui::WriteDialog::writeFinished, this, [this, dialog](bool complete) {
         for (const model::ModuleWriteResult &r : dialog->job().results())
             emit written(m_workspace.document().module(r.module).address, r.items);
-        emit statusMessage(complete ? tr("Every change written and verified.")
-                                    : tr("Not every change reached the device; see the write results."));
+        emit statusMessage(complete
+                               ? tr("Every change written and verified.")
+                               : tr("Not every change reached the device; see the write results."));
     });
     dialog->open();
     return dialog;

@@ -3,8 +3,8 @@
 #include "model/params/param_file_io.h"
 #include "model/recent_files.h"
 #include "widgets/editor/compare_dialog.h"
-#include "widgets/files/new_file_dialog.h"
 #include "widgets/editor/map_report_dialog.h"
+#include "widgets/files/new_file_dialog.h"
 #include "workspace.h"
 
 #include <QCoreApplication>
@@ -18,7 +18,8 @@ namespace {
 
 QString fileFilter()
 {
-    return FileController::tr("ValveTune parameter files (*.vtpar);;Fold plans (*.vtfold);;All files (*)");
+    return FileController::tr(
+        "ValveTune parameter files (*.vtpar);;Fold plans (*.vtfold);;All files (*)");
 }
 
 } // namespace
@@ -28,7 +29,10 @@ FileController::FileController(Workspace &workspace, model::RecentFiles &recent,
 {
 }
 
-dev::Language FileController::language() const { return m_workspace.document().language(); }
+dev::Language FileController::language() const
+{
+    return m_workspace.document().language();
+}
 
 void FileController::fail(const QString &message)
 {
@@ -43,11 +47,12 @@ bool FileController::maybeSave()
     if (!m_workspace.document().isModified())
         return true;
     const QMessageBox::StandardButton answer =
-        m_promptHook ? m_promptHook()
-                     : QMessageBox::question(m_window, tr("Unsaved Changes"),
-                                             tr("The parameters have unsaved changes. Save them first?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
-                                             QMessageBox::Save);
+        m_promptHook
+            ? m_promptHook()
+            : QMessageBox::question(m_window, tr("Unsaved Changes"),
+                                    tr("The parameters have unsaved changes. Save them first?"),
+                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                    QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();
     return answer == QMessageBox::Discard;
@@ -82,7 +87,8 @@ void FileController::open()
 {
     if (!maybeSave())
         return;
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open Parameter File"), QString(), fileFilter());
+    const QString path =
+        QFileDialog::getOpenFileName(m_window, tr("Open Parameter File"), QString(), fileFilter());
     if (!path.isEmpty())
         openPath(path);
 }
@@ -127,8 +133,10 @@ bool FileController::saveAs()
     const model::ParameterDocument &doc = m_workspace.document();
     QString suggestion = doc.filePath();
     if (suggestion.isEmpty())
-        suggestion = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) + QStringLiteral("/parameters.vtpar");
-    QString path = QFileDialog::getSaveFileName(m_window, tr("Save Parameter File"), suggestion, fileFilter());
+        suggestion = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) +
+                     QStringLiteral("/parameters.vtpar");
+    QString path =
+        QFileDialog::getSaveFileName(m_window, tr("Save Parameter File"), suggestion, fileFilter());
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
@@ -144,7 +152,8 @@ bool FileController::saveTo(const QString &path)
         return false;
     }
     const std::string tool = "ValveTune " + QCoreApplication::applicationVersion().toStdString();
-    if (auto error = model::saveParamFile(path, doc.toParamFile(tool), m_workspace.dictionaries(), language())) {
+    if (auto error = model::saveParamFile(path, doc.toParamFile(tool), m_workspace.dictionaries(),
+                                          language())) {
         fail(*error);
         return false;
     }
@@ -168,19 +177,22 @@ void FileController::exportCsv()
 bool FileController::exportCsvTo(const QString &path)
 {
     const model::ParameterDocument &doc = m_workspace.document();
-    if (auto error = model::exportParamCsv(path, doc.toParamFile({}), m_workspace.dictionaries(), language())) {
+    if (auto error = model::exportParamCsv(path, doc.toParamFile({}), m_workspace.dictionaries(),
+                                           language())) {
         fail(*error);
         return false;
     }
-    emit statusMessage(language() == dev::Language::German
-                           ? tr("Exported %1 (separator ';', decimal comma)").arg(QDir::toNativeSeparators(path))
-                           : tr("Exported %1 (separator ',', decimal point)").arg(QDir::toNativeSeparators(path)));
+    emit statusMessage(
+        language() == dev::Language::German
+            ? tr("Exported %1 (separator ';', decimal comma)").arg(QDir::toNativeSeparators(path))
+            : tr("Exported %1 (separator ',', decimal point)").arg(QDir::toNativeSeparators(path)));
     return true;
 }
 
 void FileController::compareWithFile()
 {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Compare with File"), QString(), fileFilter());
+    const QString path =
+        QFileDialog::getOpenFileName(m_window, tr("Compare with File"), QString(), fileFilter());
     if (path.isEmpty())
         return;
     auto file = model::readParamFile(path, language());

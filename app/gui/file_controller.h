@@ -7,7 +7,6 @@
 
 #include <QMessageBox>
 #include <QObject>
-
 #include <functional>
 
 class QWidget;
@@ -15,7 +14,7 @@ class QWidget;
 namespace vt::model {
 class RecentFiles;
 struct NewFileChoice;
-}
+} // namespace vt::model
 
 namespace vt::app {
 
@@ -27,11 +26,11 @@ class FileController : public QObject
 public:
     FileController(Workspace &workspace, model::RecentFiles &recent, QWidget *window);
 
-    void newFile();            // asks family, version, mode, modules (NewFileDialog)
+    void newFile(); // asks family, version, mode, modules (NewFileDialog)
     void newFrom(const model::NewFileChoice &choice);
-    void open();               // asks for a file
+    void open(); // asks for a file
     bool openPath(const QString &path);
-    bool save();               // Save As when the document has no file yet
+    bool save(); // Save As when the document has no file yet
     bool saveAs();
     bool saveTo(const QString &path);
     void exportCsv();
@@ -41,7 +40,10 @@ public:
     // are unsaved edits. False: the user cancelled.
     bool maybeSave();
     // Tests answer the unsaved-changes question without a dialog.
-    void setPromptHook(std::function<QMessageBox::StandardButton()> hook) { m_promptHook = std::move(hook); }
+    void setPromptHook(std::function<QMessageBox::StandardButton()> hook)
+    {
+        m_promptHook = std::move(hook);
+    }
     // The last error shown (tests; also in the status bar).
     const QString &lastError() const { return m_lastError; }
 

@@ -1,9 +1,8 @@
 #include "gui_options.h"
 
 #include "dict/dictionary_loader.h"
-#include "model/session/sim_endpoint.h"
-
 #include "language.h"
+#include "model/session/sim_endpoint.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -14,16 +13,17 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
 {
     GuiOptions out;
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "ValveTune: parameterisation and tuning of hydraulic valve electronics."));
+    parser.setApplicationDescription(
+        QStringLiteral("ValveTune: parameterisation and tuning of hydraulic valve electronics."));
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
     const QCommandLineOption lang(QStringList{QStringLiteral("lang")},
                                   QStringLiteral("User interface language: en or de."),
                                   QStringLiteral("en|de"));
-    const QCommandLineOption simulate(QStringList{QStringLiteral("simulate")},
-                                      QStringLiteral("Connect to the built-in simulator of FAMILY at start-up."),
-                                      QStringLiteral("FAMILY[:MODULES]"));
+    const QCommandLineOption simulate(
+        QStringList{QStringLiteral("simulate")},
+        QStringLiteral("Connect to the built-in simulator of FAMILY at start-up."),
+        QStringLiteral("FAMILY[:MODULES]"));
     const QCommandLineOption open(QStringList{QStringLiteral("open")},
                                   QStringLiteral("Open a parameter file at start-up."),
                                   QStringLiteral("FILE"));
@@ -43,7 +43,8 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
         return out;
     }
     if (!parser.positionalArguments().isEmpty()) {
-        out.error = QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first());
+        out.error =
+            QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first());
         out.exitNow = true;
         out.exitCode = 2;
         return out;

@@ -9,12 +9,12 @@ namespace vt::app {
 
 struct GuiOptions
 {
-    QString language;     // "en", "de" or empty (settings / system locale decide)
-    QString simulate;     // family id, optionally ":MODULES"
+    QString language; // "en", "de" or empty (settings / system locale decide)
+    QString simulate; // family id, optionally ":MODULES"
     QString openFile;
     bool exitNow = false; // --help / --version were answered
     int exitCode = 0;
-    QString error;        // one line for stderr when the command line is wrong
+    QString error; // one line for stderr when the command line is wrong
 };
 
 // arguments include the program name, as QCoreApplication::arguments() gives them.

@@ -6,7 +6,9 @@
 
 namespace vt::app {
 
-Language::Language(QObject *parent) : QObject(parent) {}
+Language::Language(QObject *parent) : QObject(parent)
+{
+}
 
 Language::~Language()
 {
@@ -18,7 +20,8 @@ Language::~Language()
 
 QString Language::systemDefault()
 {
-    return QLocale::system().language() == QLocale::German ? QStringLiteral("de") : QStringLiteral("en");
+    return QLocale::system().language() == QLocale::German ? QStringLiteral("de")
+                                                           : QStringLiteral("en");
 }
 
 bool Language::setLanguage(const QString &code)
@@ -43,8 +46,9 @@ bool Language::setLanguage(const QString &code)
         QCoreApplication::removeTranslator(m_qt.get());
     m_app = std::move(app);
     m_qt = haveQt ? std::move(qt) : nullptr;
-    QLocale::setDefault(QLocale(code == QLatin1String("de") ? QLocale::German : QLocale::English,
-                                code == QLatin1String("de") ? QLocale::Germany : QLocale::UnitedStates));
+    QLocale::setDefault(
+        QLocale(code == QLatin1String("de") ? QLocale::German : QLocale::English,
+                code == QLatin1String("de") ? QLocale::Germany : QLocale::UnitedStates));
     if (m_qt)
         QCoreApplication::installTranslator(m_qt.get());
     QCoreApplication::installTranslator(m_app.get()); // sends LanguageChange to every widget

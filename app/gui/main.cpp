@@ -1,16 +1,15 @@
 // valvetune: the GUI. Parses the command line, picks the language (command line, then the
 // remembered choice, then the system locale) and shows the main window.
 #include "app/gui/app_settings.h"
-#include "app/gui/gui_options.h"
-#include "app/gui/language.h"
 #include "app/gui/device_controller.h"
 #include "app/gui/file_controller.h"
+#include "app/gui/gui_options.h"
+#include "app/gui/language.h"
 #include "app/gui/main_window.h"
 #include "model/session/sim_endpoint.h"
 
 #include <QApplication>
 #include <QGuiApplication>
-
 #include <cstdio>
 
 int main(int argc, char *argv[])
@@ -21,7 +20,8 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));
 
     QString help;
-    const vt::app::GuiOptions options = vt::app::parseGuiOptions(QCoreApplication::arguments(), &help);
+    const vt::app::GuiOptions options =
+        vt::app::parseGuiOptions(QCoreApplication::arguments(), &help);
     if (options.exitNow) {
         if (options.exitCode == -1) {
             std::fputs(qPrintable(help), stdout);

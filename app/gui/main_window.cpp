@@ -10,13 +10,13 @@
 #include "model/recent_files.h"
 #include "transports/link.h"
 #include "widgets/about_dialog.h"
-#include "widgets/curve/lcurve_editor.h"
 #include "widgets/connect/link_status_widget.h"
+#include "widgets/curve/lcurve_editor.h"
 #include "widgets/editor/node_view.h"
+#include "widgets/editor/parameter_editor.h"
 #include "widgets/fold/fold_wizard.h"
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/monitor/monitor_view.h"
-#include "widgets/editor/parameter_editor.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -73,7 +73,8 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
 
 MainWindow::~MainWindow()
 {
-    // Close the connection while every window that holds it (monitor, inspector, wizard) still exists.
+    // Close the connection while every window that holds it (monitor, inspector, wizard) still
+    // exists.
     m_workspace->disconnectFromDevice();
     // The workspace outlives this part of the window (it is a child): its document's undo stack
     // still signals while it is destroyed, so nothing of it may reach this window any more.
@@ -136,8 +137,10 @@ void MainWindow::createActions()
     connect(m_saveAs, &QAction::triggered, m_files, &FileController::saveAs);
     connect(m_export, &QAction::triggered, m_files, &FileController::exportCsv);
     connect(m_compareFile, &QAction::triggered, m_files, &FileController::compareWithFile);
-    connect(m_revertDevice, &QAction::triggered, this, [this] { m_workspace->document().revertToDevice(); });
-    connect(m_revertFile, &QAction::triggered, this, [this] { m_workspace->document().revertToFile(); });
+    connect(m_revertDevice, &QAction::triggered, this,
+            [this] { m_workspace->document().revertToDevice(); });
+    connect(m_revertFile, &QAction::triggered, this,
+            [this] { m_workspace->document().revertToFile(); });
     connect(m_connect, &QAction::triggered, m_device, &DeviceController::connectDialog);
     connect(m_disconnect, &QAction::triggered, m_device, &DeviceController::disconnectFromDevice);
     connect(m_readAll, &QAction::triggered, m_device, &DeviceController::readAll);
@@ -145,7 +148,8 @@ void MainWindow::createActions()
     connect(m_compareDevice, &QAction::triggered, m_device, &DeviceController::compareWithDevice);
     connect(m_scanNode, &QAction::triggered, m_device, &DeviceController::scan);
     connect(m_foldWizard, &QAction::triggered, this, [this] { openFoldWizard(); });
-    connect(m_liveValues, &QAction::toggled, this, [this](bool on) { m_workspace->setLivePollRate(on ? 2.0 : 0.0); });
+    connect(m_liveValues, &QAction::toggled, this,
+            [this](bool on) { m_workspace->setLivePollRate(on ? 2.0 : 0.0); });
 }
 
 void MainWindow::createMenus()
@@ -208,19 +212,21 @@ void MainWindow::createDocks()
     m_inspector = new ui::InspectorView(this);
     m_inspector->setLog(&m_workspace->telegramLog());
     m_telegramsDock = dock("dockTelegrams", m_inspector, Qt::BottomDockWidgetArea);
-    connect(m_editor, &ui::ParameterEditor::showFramesRequested, this, [this](int module, const QString &name) {
-        m_telegramsDock->show();
-        m_telegramsDock->raise();
-        m_inspector->showFramesFor(m_workspace->document().module(module).address, name);
-    });
-    connect(m_inspector, &ui::InspectorView::parameterActivated, this, [this](int address, const QString &name) {
-        const int module = m_workspace->document().findModule(address);
-        if (module < 0)
-            return;
-        const dev::Dictionary *dict = m_workspace->document().module(module).dictionary;
-        if (const dev::ParamMeta *row = dict->find(name.toStdString()))
-            m_editor->selectParameter(module, row);
-    });
+    connect(m_editor, &ui::ParameterEditor::showFramesRequested, this,
+            [this](int module, const QString &name) {
+                m_telegramsDock->show();
+                m_telegramsDock->raise();
+                m_inspector->showFramesFor(m_workspace->document().module(module).address, name);
+            });
+    connect(m_inspector, &ui::InspectorView::parameterActivated, this,
+            [this](int address, const QString &name) {
+                const int module = m_workspace->document().findModule(address);
+                if (module < 0)
+                    return;
+                const dev::Dictionary *dict = m_workspace->document().module(module).dictionary;
+                if (const dev::ParamMeta *row = dict->find(name.toStdString()))
+                    m_editor->selectParameter(module, row);
+            });
     // Linearisation: the L curves of the module the editor works on, dragged or typed.
     m_curves = new model::LCurveTableModel(this);
     m_curveBinding = new model::CurveBinding(m_workspace->document(), *m_curves, this);
@@ -239,19 +245,21 @@ void MainWindow::createDocks()
             m_editor->selectParameter(module, &m.dictionary->params.front());
         m_curveBinding->setModule(module);
     });
-    connect(m_editor, &ui::ParameterEditor::parameterSelected, this, [this](int module, const dev::ParamMeta *row) {
-        if (module != m_curveBinding->module())
-            m_curveBinding->setModule(module);
-        if (row && row->block == "L")
-            m_curveDock->raise();
-    });
+    connect(m_editor, &ui::ParameterEditor::parameterSelected, this,
+            [this](int module, const dev::ParamMeta *row) {
+                if (module != m_curveBinding->module())
+                    m_curveBinding->setModule(module);
+                if (row && row->block == "L")
+                    m_curveDock->raise();
+            });
 }
 
 void MainWindow::connectWorkspace()
 {
     model::ParameterDocument &doc = m_workspace->document();
     connect(m_files, &FileController::statusMessage, this, &MainWindow::showStatus);
-    connect(m_files, &FileController::foldPlanRequested, this, [this](const QString &path) { openFoldWizard(path); });
+    connect(m_files, &FileController::foldPlanRequested, this,
+            [this](const QString &path) { openFoldWizard(path); });
     connect(m_device, &DeviceController::statusMessage, this, &MainWindow::showStatus);
     connect(doc.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&doc, &model::ParameterDocument::filePathChanged, this, [this] {
@@ -279,7 +287,8 @@ void MainWindow::connectWorkspace()
         m_nodeView->setNodeText(m_workspace->connection()->describe());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
         m_monitor->setConnection(m_workspace->connection(), m_workspace->modules());
-        showStatus(tr("Connected: %n module(s).", nullptr, static_cast<int>(m_workspace->modules().size())));
+        showStatus(tr("Connected: %n module(s).", nullptr,
+                      static_cast<int>(m_workspace->modules().size())));
         updateActions();
         m_device->readAll(); // what the engineer does first anyway; the live d-values start with it
     });
@@ -305,8 +314,9 @@ void MainWindow::connectWorkspace()
 ui::FoldWizard *MainWindow::openFoldWizard(const QString &planPath)
 {
     if (!m_wizard) {
-        m_wizard = new ui::FoldWizard(m_workspace->dictionaries(),
-                                      m_workspace->isConnected() ? m_workspace->connection() : nullptr, this);
+        m_wizard = new ui::FoldWizard(
+            m_workspace->dictionaries(),
+            m_workspace->isConnected() ? m_workspace->connection() : nullptr, this);
         m_wizard->setAttribute(Qt::WA_DeleteOnClose);
     } else if (m_workspace->isConnected()) {
         m_wizard->setConnection(m_workspace->connection());
@@ -349,12 +359,16 @@ void MainWindow::updateTitle()
     setWindowModified(doc.isModified());
 }
 
-void MainWindow::showStatus(const QString &text) { statusBar()->showMessage(text, 8000); }
+void MainWindow::showStatus(const QString &text)
+{
+    statusBar()->showMessage(text, 8000);
+}
 
 void MainWindow::applyDocumentLanguage()
 {
-    m_workspace->document().setLanguage(m_language.current() == QLatin1String("de") ? dev::Language::German
-                                                                                    : dev::Language::English);
+    m_workspace->document().setLanguage(m_language.current() == QLatin1String("de")
+                                            ? dev::Language::German
+                                            : dev::Language::English);
 }
 
 void MainWindow::retranslate()
@@ -414,7 +428,8 @@ void MainWindow::rebuildRecentMenu()
         });
     }
     m_recentMenu->addSeparator();
-    connect(m_recentMenu->addAction(tr("Clear List")), &QAction::triggered, m_recent, &model::RecentFiles::clear);
+    connect(m_recentMenu->addAction(tr("Clear List")), &QAction::triggered, m_recent,
+            &model::RecentFiles::clear);
 }
 
 void MainWindow::chooseLanguage(const QString &code)

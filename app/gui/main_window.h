@@ -22,7 +22,7 @@ namespace vt::model {
 class CurveBinding;
 class LCurveTableModel;
 class RecentFiles;
-}
+} // namespace vt::model
 
 namespace vt::ui {
 class FoldWizard;
@@ -32,7 +32,7 @@ class LinkStatusWidget;
 class LCurveEditor;
 class NodeView;
 class ParameterEditor;
-}
+} // namespace vt::ui
 
 namespace vt::app {
 

@@ -12,7 +12,10 @@ Workspace::Workspace(const dev::DictionarySet &dictionaries, QObject *parent)
 
 // Silent: whoever listens may already be half destroyed (the main window closes the connection
 // itself before that).
-Workspace::~Workspace() { teardown(false); }
+Workspace::~Workspace()
+{
+    teardown(false);
+}
 
 void Workspace::teardown(bool notify)
 {
@@ -78,7 +81,8 @@ void Workspace::scan()
     identifyNext(addresses, {}, static_cast<int>(addresses.size()), true);
 }
 
-void Workspace::identifyNext(std::vector<int> addresses, std::vector<model::ModuleInfo> found, int total, bool scanning)
+void Workspace::identifyNext(std::vector<int> addresses, std::vector<model::ModuleInfo> found,
+                             int total, bool scanning)
 {
     if (scanning)
         emit scanProgress(total - static_cast<int>(addresses.size()), total);
@@ -90,8 +94,8 @@ void Workspace::identifyNext(std::vector<int> addresses, std::vector<model::Modu
     addresses.erase(addresses.begin());
     const quint64 generation = m_generation;
     m_connection->access().identify(
-        address, [this, generation, addresses = std::move(addresses), found = std::move(found), total,
-                  scanning](const model::IdentifyResult &result) mutable {
+        address, [this, generation, addresses = std::move(addresses), found = std::move(found),
+                  total, scanning](const model::IdentifyResult &result) mutable {
             if (generation != m_generation)
                 return;
             if (result.ok)
@@ -99,7 +103,8 @@ void Workspace::identifyNext(std::vector<int> addresses, std::vector<model::Modu
             // Next from the event loop: the session is still inside this completion.
             QMetaObject::invokeMethod(
                 this,
-                [this, generation, addresses = std::move(addresses), found = std::move(found), total, scanning]() mutable {
+                [this, generation, addresses = std::move(addresses), found = std::move(found),
+                 total, scanning]() mutable {
                     if (generation == m_generation)
                         identifyNext(std::move(addresses), std::move(found), total, scanning);
                 },
@@ -149,15 +154,16 @@ void Workspace::updateLivePoll()
         if (!rows.empty())
             m_live->setModule(info.address, std::move(rows), m_liveHz);
     }
-    connect(m_live.get(), &model::MonitorScheduler::sampled, this, [this](const model::MonitorSample &sample) {
-        const int index = m_document.findModule(sample.module);
-        if (index < 0)
-            return;
-        std::vector<model::RowValue> values;
-        for (std::size_t i = 0; i < sample.rows.size() && i < sample.values.size(); ++i)
-            values.push_back({sample.rows[i], sample.values[i]});
-        m_document.applyRead(index, values);
-    });
+    connect(m_live.get(), &model::MonitorScheduler::sampled, this,
+            [this](const model::MonitorSample &sample) {
+                const int index = m_document.findModule(sample.module);
+                if (index < 0)
+                    return;
+                std::vector<model::RowValue> values;
+                for (std::size_t i = 0; i < sample.rows.size() && i < sample.values.size(); ++i)
+                    values.push_back({sample.rows[i], sample.values[i]});
+                m_document.applyRead(index, values);
+            });
     m_live->start();
 }
 

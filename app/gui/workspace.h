@@ -9,14 +9,13 @@
 #include "model/telegram_log.h"
 
 #include <QObject>
-
 #include <memory>
 #include <vector>
 
 namespace vt::model {
 class MonitorScheduler;
 class TelegramRecorder;
-}
+} // namespace vt::model
 
 namespace vt::app {
 
@@ -57,7 +56,8 @@ signals:
     void scanFinished(int found);
 
 private:
-    void identifyNext(std::vector<int> addresses, std::vector<model::ModuleInfo> found, int total, bool scanning);
+    void identifyNext(std::vector<int> addresses, std::vector<model::ModuleInfo> found, int total,
+                      bool scanning);
     void finishIdentify(std::vector<model::ModuleInfo> found, bool scanning);
     void teardown(bool notify = true);
     void updateLivePoll();

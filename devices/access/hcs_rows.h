@@ -24,7 +24,8 @@ struct HcsBlock
 // Readable rows with an ID, sorted by ID, cut into runs of consecutive IDs of at most
 // `maxPerBlock` (OPAT manual §2.1 / DMA Profinet manual §3.1: "maximal 8 parameters readable at
 // once"). A gap in the IDs (an inactive or unknown row) starts a new block: it is never read.
-std::vector<HcsBlock> planHcsBlocks(std::span<const ParamMeta *const> rows, std::uint16_t maxPerBlock = hcs::kMaxReadCount);
+std::vector<HcsBlock> planHcsBlocks(std::span<const ParamMeta *const> rows,
+                                    std::uint16_t maxPerBlock = hcs::kMaxReadCount);
 
 // The register as the row's type reads it (int16 and int8 sign-extended).
 double registerToRaw(const ParamMeta &row, std::uint16_t word);

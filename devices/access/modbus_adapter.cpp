@@ -10,8 +10,8 @@ namespace vt::dev::access {
 
 namespace {
 
-constexpr std::uint16_t kVersId = 0;   // OPAT manual §4 / DMA manuals: "Vers", raw = version × 100
-constexpr std::uint16_t kModeId = 95;  // E00, the mode of the module
+constexpr std::uint16_t kVersId = 0;  // OPAT manual §4 / DMA manuals: "Vers", raw = version × 100
+constexpr std::uint16_t kModeId = 95; // E00, the mode of the module
 
 } // namespace
 
@@ -20,15 +20,18 @@ std::uint8_t ModbusPduAdapter::unitOf(const Transaction &t) const
     return m_fixedUnit ? *m_fixedUnit : static_cast<std::uint8_t>(t.module & 0xFF);
 }
 
-std::vector<Transaction> ModbusPduAdapter::planRead(int module, std::span<const ParamMeta *const> rows) const
+std::vector<Transaction> ModbusPduAdapter::planRead(int module,
+                                                    std::span<const ParamMeta *const> rows) const
 {
     std::vector<Transaction> plan;
     for (HcsBlock &block : planHcsBlocks(rows))
-        plan.push_back(Transaction{TransactionKind::Read, module, std::move(block.rows), {}, 0, {}, true});
+        plan.push_back(
+            Transaction{TransactionKind::Read, module, std::move(block.rows), {}, 0, {}, true});
     return plan;
 }
 
-Transaction ModbusPduAdapter::planWrite(int module, const ParamMeta &row, const RawValue &value) const
+Transaction ModbusPduAdapter::planWrite(int module, const ParamMeta &row,
+                                        const RawValue &value) const
 {
     return Transaction{TransactionKind::Write, module, {&row}, {value}, 0, {}, true};
 }
@@ -42,8 +45,7 @@ std::vector<Transaction> ModbusPduAdapter::planIdentify(int module) const
 std::optional<modbus::RequestPdu> ModbusPduAdapter::requestPdu(const Transaction &t) const
 {
     switch (t.kind) {
-    case TransactionKind::Identify:
-        return modbus::ReadRequest{t.step == 0 ? kVersId : kModeId, 1};
+    case TransactionKind::Identify: return modbus::ReadRequest{t.step == 0 ? kVersId : kModeId, 1};
     case TransactionKind::Read: {
         if (t.rows.empty() || !t.rows.front()->id || t.rows.size() > modbus::kMaxReadRegisters)
             return std::nullopt;
@@ -53,19 +55,20 @@ std::optional<modbus::RequestPdu> ModbusPduAdapter::requestPdu(const Transaction
     case TransactionKind::Write: {
         if (t.rows.size() != 1 || t.values.size() != 1 || !t.rows.front()->id)
             return std::nullopt;
-        // Range of the row's type, not just of a register: 65535 for an int16 row would arrive as -1.
+        // Range of the row's type, not just of a register: 65535 for an int16 row would arrive as
+        // -1.
         const auto word = hcsWordOf(*t.rows.front(), t.values.front());
         if (!word)
             return std::nullopt;
         return modbus::WriteRequest{static_cast<std::uint16_t>(*t.rows.front()->id), *word};
     }
-    case TransactionKind::Raw:
-        break;
+    case TransactionKind::Raw: break;
     }
     return std::nullopt;
 }
 
-Reply ModbusPduAdapter::replyFromPdu(const Transaction &t, std::uint8_t unit, const modbus::ResponsePdu &pdu) const
+Reply ModbusPduAdapter::replyFromPdu(const Transaction &t, std::uint8_t unit,
+                                     const modbus::ResponsePdu &pdu) const
 {
     Reply reply;
     if (t.kind != TransactionKind::Raw && unit != unitOf(t)) {
@@ -113,8 +116,7 @@ Reply ModbusPduAdapter::replyFromPdu(const Transaction &t, std::uint8_t unit, co
         reply.values.emplace_back(registerToRaw(*t.rows.front(), write->value));
         return reply;
     }
-    case TransactionKind::Raw:
-        return reply;
+    case TransactionKind::Raw: return reply;
     }
     reply.status = ReplyStatus::Mismatch;
     return reply;
@@ -123,14 +125,10 @@ Reply ModbusPduAdapter::replyFromPdu(const Transaction &t, std::uint8_t unit, co
 std::size_t ModbusPduAdapter::responsePduBytes(const Transaction &t)
 {
     switch (t.kind) {
-    case TransactionKind::Identify:
-        return 4;
-    case TransactionKind::Read:
-        return 2 + 2 * t.rows.size();
-    case TransactionKind::Write:
-        return 5;
-    case TransactionKind::Raw:
-        break;
+    case TransactionKind::Identify: return 4;
+    case TransactionKind::Read: return 2 + 2 * t.rows.size();
+    case TransactionKind::Write: return 5;
+    case TransactionKind::Raw: break;
     }
     return modbus::kMaxPduSize;
 }
@@ -153,7 +151,8 @@ std::size_t ModbusRtuAdapter::expectedReplyBytes(const Transaction &t) const
     return modbus::kRtuOverhead + responsePduBytes(t);
 }
 
-std::optional<Reply> ModbusRtuAdapter::feed(std::span<const std::uint8_t> bytes, const Transaction &t)
+std::optional<Reply> ModbusRtuAdapter::feed(std::span<const std::uint8_t> bytes,
+                                            const Transaction &t)
 {
     std::optional<Reply> result;
     for (Bytes &frame : m_deframer.feed(bytes)) {
@@ -194,7 +193,8 @@ std::size_t ModbusTcpAdapter::expectedReplyBytes(const Transaction &t) const
     return modbus::kMbapSize + responsePduBytes(t); // the MBAP header carries the unit id
 }
 
-std::optional<Reply> ModbusTcpAdapter::feed(std::span<const std::uint8_t> bytes, const Transaction &t)
+std::optional<Reply> ModbusTcpAdapter::feed(std::span<const std::uint8_t> bytes,
+                                            const Transaction &t)
 {
     std::optional<Reply> result;
     for (Bytes &frame : m_deframer.feed(bytes)) {

@@ -17,12 +17,14 @@ namespace vt::dev::access {
 class ModbusPduAdapter : public ProtocolAdapter
 {
 public:
-    explicit ModbusPduAdapter(hcs::Family family, std::optional<std::uint8_t> fixedUnit = std::nullopt)
+    explicit ModbusPduAdapter(hcs::Family family,
+                              std::optional<std::uint8_t> fixedUnit = std::nullopt)
         : m_family(family), m_fixedUnit(fixedUnit)
     {
     }
 
-    std::vector<Transaction> planRead(int module, std::span<const ParamMeta *const> rows) const override;
+    std::vector<Transaction> planRead(int module,
+                                      std::span<const ParamMeta *const> rows) const override;
     Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     std::vector<Transaction> planIdentify(int module) const override;
 
@@ -30,7 +32,8 @@ protected:
     // nullopt for a transaction this protocol cannot express (a text value, a row without ID).
     std::optional<modbus::RequestPdu> requestPdu(const Transaction &t) const;
     // The reply to `t` carried by `pdu` from unit `unit`.
-    Reply replyFromPdu(const Transaction &t, std::uint8_t unit, const modbus::ResponsePdu &pdu) const;
+    Reply replyFromPdu(const Transaction &t, std::uint8_t unit,
+                       const modbus::ResponsePdu &pdu) const;
     // FC 3 response: 1 + 1 + 2 × count; FC 6 and exceptions are shorter.
     static std::size_t responsePduBytes(const Transaction &t);
     // The unit id a request for `t` goes to.
@@ -49,7 +52,8 @@ public:
     // goes to it whatever the module (the OPAT master, SADR 0, would otherwise be unit 0).
     // Without it a request to module 0 is not encoded: unit 0 is the Modbus broadcast, which no
     // device answers (Modbus over Serial Line §2.2).
-    explicit ModbusRtuAdapter(hcs::Family family, std::optional<std::uint8_t> pointToPointUnit = std::nullopt)
+    explicit ModbusRtuAdapter(hcs::Family family,
+                              std::optional<std::uint8_t> pointToPointUnit = std::nullopt)
         : ModbusPduAdapter(family, pointToPointUnit)
     {
     }

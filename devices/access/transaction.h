@@ -25,31 +25,31 @@ enum class TransactionKind { Identify, Read, Write, Raw };
 struct Transaction
 {
     TransactionKind kind = TransactionKind::Read;
-    int module = 0;                       // module address (HCS SADR / unit id, HART poll address, CAN node)
-    std::vector<const ParamMeta *> rows;  // Read: the rows answered by this exchange, in wire order;
-                                          // Write: exactly one row
-    std::vector<RawValue> values;         // Write: the value to write (one)
-    int step = 0;                         // Identify: which of the adapter's identify exchanges
-                                          // (HCS: 0 = Vers (ID 0), 1 = E00 (ID 95))
-    Bytes raw;                            // Raw: bytes to send as they are (the inspector's composer)
-    bool expectsReply = true;             // Raw: false for a frame sent without waiting
+    int module = 0; // module address (HCS SADR / unit id, HART poll address, CAN node)
+    std::vector<const ParamMeta *> rows; // Read: the rows answered by this exchange, in wire order;
+                                         // Write: exactly one row
+    std::vector<RawValue> values;        // Write: the value to write (one)
+    int step = 0;                        // Identify: which of the adapter's identify exchanges
+                                         // (HCS: 0 = Vers (ID 0), 1 = E00 (ID 95))
+    Bytes raw;                // Raw: bytes to send as they are (the inspector's composer)
+    bool expectsReply = true; // Raw: false for a frame sent without waiting
 };
 
 enum class ReplyStatus {
-    Ok,              // values hold one entry per row (Read), the echoed value (Write), identity (Identify)
+    Ok, // values hold one entry per row (Read), the echoed value (Write), identity (Identify)
     DeviceException, // the device refused: code + text
-    Mismatch,        // a well-formed frame that does not answer this request (other unit, other ID…)
+    Mismatch, // a well-formed frame that does not answer this request (other unit, other ID…)
 };
 
 struct Identity
 {
-    int versRaw = -1;           // HCS: ID 0, raw = version × 100
-    int mode = -1;              // HCS: E00
+    int versRaw = -1;                     // HCS: ID 0, raw = version × 100
+    int mode = -1;                        // HCS: E00
     std::uint16_t manufacturer = 0;       // HART command 0
     std::uint16_t expandedDeviceType = 0; // HART command 0
     std::uint32_t deviceId = 0;           // HART command 0
     std::uint32_t capability = 0;         // DSP-408
-    std::string text;           // free text for people ("HART rev 7, device id 0x000123")
+    std::string text;                     // free text for people ("HART rev 7, device id 0x000123")
 };
 
 struct Reply
@@ -82,9 +82,11 @@ public:
     // The fewest transactions the device allows for reading `rows` of `module` (HCS: ≤ 8
     // consecutive IDs per request; gaps are not read). Rows the protocol cannot address are
     // left out; the caller compares.
-    virtual std::vector<Transaction> planRead(int module, std::span<const ParamMeta *const> rows) const = 0;
+    virtual std::vector<Transaction> planRead(int module,
+                                              std::span<const ParamMeta *const> rows) const = 0;
     // One transaction writing `value` to `row`.
-    virtual Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const = 0;
+    virtual Transaction planWrite(int module, const ParamMeta &row,
+                                  const RawValue &value) const = 0;
     // What identifies the module (HCS: Vers and E00; HART: command 0).
     virtual std::vector<Transaction> planIdentify(int module) const = 0;
 
@@ -97,7 +99,8 @@ public:
     // Feeds bytes from the link while `t` is outstanding. Returns the reply once a whole frame
     // answering `t` (or a device exception) has arrived; frames that do not answer `t` come back
     // as Mismatch and the session keeps waiting. Garbage is dropped silently.
-    virtual std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) = 0;
+    virtual std::optional<Reply> feed(std::span<const std::uint8_t> bytes,
+                                      const Transaction &t) = 0;
     // Drops buffered bytes (after a timeout, before a retry, after reconnect).
     virtual void resetFraming() = 0;
 };

@@ -14,8 +14,9 @@
 
 namespace vt::dev::access {
 
-// The value's bits, zero-extended to 32 (only the low wireBytes() count, dict/param_meta.h); nullopt for text,
-// a text row, a non-finite number, a fraction on an integer row or a value the type cannot hold.
+// The value's bits, zero-extended to 32 (only the low wireBytes() count, dict/param_meta.h);
+// nullopt for text, a text row, a non-finite number, a fraction on an integer row or a value the
+// type cannot hold.
 std::optional<std::uint32_t> rawToWireBits(const ParamMeta &row, const RawValue &value);
 // The low wireBytes() bytes of `bits` as the row's type reads them (signed rows sign-extended).
 double wireBitsToRaw(const ParamMeta &row, std::uint32_t bits);

@@ -65,7 +65,8 @@ CanFrame makeCanFrame(std::uint32_t id, std::span<const std::uint8_t> payload)
 std::array<std::uint8_t, kSocketCanFrameSize> toSocketCan(const CanFrame &frame)
 {
     // Error frames carry error-class bits in all 29 id bits.
-    std::uint32_t id = frame.id & (frame.extended || frame.errorFrame ? kMaxExtendedId : kMaxStandardId);
+    std::uint32_t id =
+        frame.id & (frame.extended || frame.errorFrame ? kMaxExtendedId : kMaxStandardId);
     if (frame.extended)
         id |= kEffFlag;
     if (frame.rtr)
@@ -110,7 +111,8 @@ Result<CanFrame, DecodeError> parseCandump(std::string_view text)
 {
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
         text.remove_prefix(1);
-    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\n' || text.back() == '\r'))
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\n' ||
+                             text.back() == '\r'))
         text.remove_suffix(1);
     const std::size_t hash = text.find('#');
     if (hash == std::string_view::npos || hash == 0 || hash > 8)
@@ -145,7 +147,8 @@ Result<CanFrame, DecodeError> parseCandump(std::string_view text)
     if (!bytes.ok())
         return bad(DecodeErrc::BadValue, hash + 1 + bytes.error().position, bytes.error().reason);
     if (bytes->size() > 8)
-        return bad(DecodeErrc::BadLength, hash + 1, std::to_string(bytes->size()) + " data bytes > 8");
+        return bad(DecodeErrc::BadLength, hash + 1,
+                   std::to_string(bytes->size()) + " data bytes > 8");
     f.dlc = static_cast<std::uint8_t>(bytes->size());
     std::copy(bytes->begin(), bytes->end(), f.data.begin());
     return f;
@@ -161,7 +164,9 @@ std::string formatCandump(const CanFrame &frame)
     if (!frame.extended)
         id = id.substr(5);
     if (frame.rtr)
-        return id + "#R" + (frame.dlc ? std::string(1, static_cast<char>('0' + std::min<int>(frame.dlc, 8))) : "");
+        return id + "#R" +
+               (frame.dlc ? std::string(1, static_cast<char>('0' + std::min<int>(frame.dlc, 8)))
+                          : "");
     return id + "#" + toHex(frame.payload(), '\0');
 }
 

@@ -20,14 +20,17 @@ inline constexpr std::size_t kSocketCanFrameSize = 16;
 
 struct CanFrame
 {
-    std::uint32_t id = 0;     // 11 bits (29 with `extended`)
+    std::uint32_t id = 0; // 11 bits (29 with `extended`)
     bool extended = false;
     bool rtr = false;
-    bool errorFrame = false;  // SocketCAN CAN_ERR_FLAG
-    std::uint8_t dlc = 0;     // 0..8
+    bool errorFrame = false; // SocketCAN CAN_ERR_FLAG
+    std::uint8_t dlc = 0;    // 0..8
     std::array<std::uint8_t, 8> data{};
 
-    std::span<const std::uint8_t> payload() const { return std::span<const std::uint8_t>(data).first(dlc <= 8 ? dlc : 8); }
+    std::span<const std::uint8_t> payload() const
+    {
+        return std::span<const std::uint8_t>(data).first(dlc <= 8 ? dlc : 8);
+    }
     bool operator==(const CanFrame &) const = default;
 };
 

@@ -135,11 +135,12 @@ Direction directionOf(SdoCommand command)
 
 bool isBlockTransfer(SdoCommand c)
 {
-    return c == SdoCommand::BlockUploadRequest || c == SdoCommand::BlockDownloadRequest
-           || c == SdoCommand::BlockDownloadResponse || c == SdoCommand::BlockUploadResponse;
+    return c == SdoCommand::BlockUploadRequest || c == SdoCommand::BlockDownloadRequest ||
+           c == SdoCommand::BlockDownloadResponse || c == SdoCommand::BlockUploadResponse;
 }
 
-Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::span<const std::uint8_t> data)
+Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex,
+                      std::span<const std::uint8_t> data)
 {
     Sdo s;
     s.command = SdoCommand::InitiateDownloadRequest;
@@ -151,7 +152,8 @@ Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::span<cons
     return s;
 }
 
-Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::uint32_t value, std::size_t bytes)
+Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::uint32_t value,
+                      std::size_t bytes)
 {
     return expeditedDownload(index, subindex, littleEndian(value, bytes));
 }
@@ -172,14 +174,16 @@ Sdo downloadResponse(std::uint16_t index, std::uint8_t subindex)
     return s;
 }
 
-Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex, std::span<const std::uint8_t> data)
+Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex,
+                            std::span<const std::uint8_t> data)
 {
     Sdo s = expeditedDownload(index, subindex, data);
     s.command = SdoCommand::InitiateUploadResponse;
     return s;
 }
 
-Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex, std::uint32_t value, std::size_t bytes)
+Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex, std::uint32_t value,
+                            std::size_t bytes)
 {
     return expeditedUploadResponse(index, subindex, littleEndian(value, bytes));
 }
@@ -210,19 +214,23 @@ Result<Bytes, DecodeError> encodeSdo(const Sdo &sdo)
         if (sdo.data.size() > 7)
             return badValue("segment carries " + std::to_string(sdo.data.size()) + " > 7 bytes");
         const auto n = static_cast<std::uint8_t>(7 - sdo.data.size());
-        w.u8(static_cast<std::uint8_t>(specifier | (sdo.toggle ? kToggleBit : 0) | n << 1 | (sdo.last ? 1 : 0)));
+        w.u8(static_cast<std::uint8_t>(specifier | (sdo.toggle ? kToggleBit : 0) | n << 1 |
+                                       (sdo.last ? 1 : 0)));
         w.bytes(sdo.data);
-    } else if (sdo.command == SdoCommand::UploadSegmentRequest || sdo.command == SdoCommand::DownloadSegmentResponse) {
+    } else if (sdo.command == SdoCommand::UploadSegmentRequest ||
+               sdo.command == SdoCommand::DownloadSegmentResponse) {
         w.u8(static_cast<std::uint8_t>(specifier | (sdo.toggle ? kToggleBit : 0)));
     } else {
         std::uint8_t byte0 = specifier;
         if (isInitiateWithData(sdo.command)) {
             if (sdo.expedited) {
                 if (sdo.data.empty() || sdo.data.size() > 4)
-                    return badValue("expedited transfer of " + std::to_string(sdo.data.size()) + " bytes (1..4)");
+                    return badValue("expedited transfer of " + std::to_string(sdo.data.size()) +
+                                    " bytes (1..4)");
                 if (!sdo.sizeIndicated && sdo.data.size() != 4)
                     return badValue("expedited transfer without size needs 4 bytes");
-                byte0 = static_cast<std::uint8_t>(byte0 | 0x02 | (sdo.sizeIndicated ? 0x01 | (4 - sdo.data.size()) << 2 : 0));
+                byte0 = static_cast<std::uint8_t>(
+                    byte0 | 0x02 | (sdo.sizeIndicated ? 0x01 | (4 - sdo.data.size()) << 2 : 0));
             } else if (sdo.sizeIndicated) {
                 byte0 = static_cast<std::uint8_t>(byte0 | 0x01);
             }
@@ -231,7 +239,8 @@ Result<Bytes, DecodeError> encodeSdo(const Sdo &sdo)
         if (sdo.command == SdoCommand::Abort)
             writeU32le(w, sdo.abortCode);
         else if (isInitiateWithData(sdo.command) && sdo.expedited)
-            for (std::uint8_t b : sdo.data) // byte by byte: w.bytes() trips GCC 12's -O3 -Wstringop-overflow
+            for (std::uint8_t b :
+                 sdo.data) // byte by byte: w.bytes() trips GCC 12's -O3 -Wstringop-overflow
                 w.u8(b);
         else if (isInitiateWithData(sdo.command) && sdo.sizeIndicated)
             writeU32le(w, sdo.size);
@@ -268,7 +277,8 @@ Result<Sdo, DecodeError> decodeSdo(std::span<const std::uint8_t> data, Direction
         s.last = (byte0 & 0x01) != 0;
         return s;
     }
-    if (s.command == SdoCommand::UploadSegmentRequest || s.command == SdoCommand::DownloadSegmentResponse)
+    if (s.command == SdoCommand::UploadSegmentRequest ||
+        s.command == SdoCommand::DownloadSegmentResponse)
         return s;
     s.toggle = false;
     s.index = r.u16le();
@@ -298,17 +308,21 @@ Result<CanFrame, DecodeError> toCanFrame(const Sdo &sdo, std::uint8_t node, Dire
     auto bytes = encodeSdo(sdo);
     if (!bytes.ok())
         return bytes.error();
-    const Direction direction = sdo.command == SdoCommand::Abort ? abortFrom : directionOf(sdo.command);
-    const std::uint16_t id = direction == Direction::Request ? sdoRequestId(node) : sdoResponseId(node);
+    const Direction direction =
+        sdo.command == SdoCommand::Abort ? abortFrom : directionOf(sdo.command);
+    const std::uint16_t id =
+        direction == Direction::Request ? sdoRequestId(node) : sdoResponseId(node);
     return makeCanFrame(id, *bytes);
 }
 
 Result<SdoMessage, DecodeError> fromCanFrame(const CanFrame &frame)
 {
-    const auto channel = frame.extended || frame.rtr || frame.errorFrame ? std::nullopt : sdoChannel(frame.id);
+    const auto channel =
+        frame.extended || frame.rtr || frame.errorFrame ? std::nullopt : sdoChannel(frame.id);
     if (!channel)
         return DecodeError{DecodeErrc::UnexpectedCommand, 0, 0,
-                           "COB-ID " + std::to_string(frame.id) + " is not an SDO channel (0x581..0x5FF, 0x601..0x67F)"};
+                           "COB-ID " + std::to_string(frame.id) +
+                               " is not an SDO channel (0x581..0x5FF, 0x601..0x67F)"};
     auto sdo = decodeSdo(frame.payload(), channel->direction);
     if (!sdo.ok())
         return sdo.error();

@@ -20,7 +20,8 @@
 
 namespace vt::dev::canopen {
 
-inline constexpr std::uint16_t kSdoRequestBase = 0x600;  // client → server (CiA 301 §7.3.3 pre-defined set)
+inline constexpr std::uint16_t kSdoRequestBase =
+    0x600; // client → server (CiA 301 §7.3.3 pre-defined set)
 inline constexpr std::uint16_t kSdoResponseBase = 0x580; // server → client
 inline constexpr std::uint8_t kMaxNodeId = 127;
 inline constexpr std::size_t kSdoSize = 8;
@@ -77,12 +78,16 @@ struct Sdo
 
 // Builders for the client (ValveTune) and the server (simulator). Values are little-endian on
 // CANopen (CiA 301 §7.1.3.1), unlike the other fieldbuses (see docs/protocol-notes).
-Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::span<const std::uint8_t> data);
-Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::uint32_t value, std::size_t bytes);
+Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex,
+                      std::span<const std::uint8_t> data);
+Sdo expeditedDownload(std::uint16_t index, std::uint8_t subindex, std::uint32_t value,
+                      std::size_t bytes);
 Sdo uploadRequest(std::uint16_t index, std::uint8_t subindex);
 Sdo downloadResponse(std::uint16_t index, std::uint8_t subindex);
-Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex, std::span<const std::uint8_t> data);
-Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex, std::uint32_t value, std::size_t bytes);
+Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex,
+                            std::span<const std::uint8_t> data);
+Sdo expeditedUploadResponse(std::uint16_t index, std::uint8_t subindex, std::uint32_t value,
+                            std::size_t bytes);
 Sdo abortTransfer(std::uint16_t index, std::uint8_t subindex, std::uint32_t abortCode);
 
 // Little-endian value of an expedited transfer's data (0..4 bytes).
@@ -107,7 +112,7 @@ Result<SdoMessage, DecodeError> fromCanFrame(const CanFrame &frame);
 
 struct DescribeOptions
 {
-    std::optional<std::uint32_t> cobId;      // decides the direction when it is an SDO COB-ID
+    std::optional<std::uint32_t> cobId;       // decides the direction when it is an SDO COB-ID
     Direction direction = Direction::Request; // used without a COB-ID
 };
 // The 8 data bytes (plus the COB-ID from the options); the id row is added when known.

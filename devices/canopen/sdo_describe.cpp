@@ -1,6 +1,5 @@
 // Field descriptions of SDO messages (CiA 301 §7.2.4.3) for the telegram inspector and the CLI.
 #include "canopen/sdo.h"
-
 #include "core/hex.h"
 
 #include <string>
@@ -10,7 +9,8 @@ namespace {
 
 std::string hex32(std::uint32_t v)
 {
-    return hexWord(static_cast<std::uint16_t>(v >> 16)) + hexWord(static_cast<std::uint16_t>(v)).substr(2);
+    return hexWord(static_cast<std::uint16_t>(v >> 16)) +
+           hexWord(static_cast<std::uint16_t>(v)).substr(2);
 }
 
 std::string objectText(const Sdo &s)
@@ -24,9 +24,14 @@ void describeBits(const Sdo &s, std::uint8_t byte0, std::vector<FieldSpan> &out)
                    directionOf(s.command) == Direction::Request && s.command != SdoCommand::Abort
                        ? LocalText{"client command specifier", "Client-Kommandospezifizierer"}
                        : LocalText{"command specifier", "Kommandospezifizierer"}});
-    if (s.command == SdoCommand::InitiateDownloadRequest || s.command == SdoCommand::InitiateUploadResponse) {
+    if (s.command == SdoCommand::InitiateDownloadRequest ||
+        s.command == SdoCommand::InitiateUploadResponse) {
         if (s.expedited && s.sizeIndicated)
-            out.push_back({"sdo.n", 0, 1, 1, std::to_string((byte0 >> 2) & 0x03),
+            out.push_back({"sdo.n",
+                           0,
+                           1,
+                           1,
+                           std::to_string((byte0 >> 2) & 0x03),
                            {"bytes without data (n)", "Bytes ohne Daten (n)"}});
         out.push_back({"sdo.e", 0, 1, 1, s.expedited ? "1" : "0",
                        s.expedited ? LocalText{"expedited transfer", "beschleunigte Übertragung"}
@@ -35,28 +40,39 @@ void describeBits(const Sdo &s, std::uint8_t byte0, std::vector<FieldSpan> &out)
                        s.sizeIndicated ? LocalText{"size indicated", "Größe angegeben"}
                                        : LocalText{"size not indicated", "Größe nicht angegeben"}});
     }
-    const bool segment = s.command == SdoCommand::DownloadSegmentRequest || s.command == SdoCommand::UploadSegmentResponse
-                         || s.command == SdoCommand::UploadSegmentRequest || s.command == SdoCommand::DownloadSegmentResponse;
+    const bool segment = s.command == SdoCommand::DownloadSegmentRequest ||
+                         s.command == SdoCommand::UploadSegmentResponse ||
+                         s.command == SdoCommand::UploadSegmentRequest ||
+                         s.command == SdoCommand::DownloadSegmentResponse;
     if (segment)
         out.push_back({"sdo.t", 0, 1, 1, s.toggle ? "1" : "0", {"toggle bit", "Toggle-Bit"}});
-    if (s.command == SdoCommand::DownloadSegmentRequest || s.command == SdoCommand::UploadSegmentResponse) {
-        out.push_back({"sdo.n", 0, 1, 1, std::to_string((byte0 >> 1) & 0x07), {"bytes without data (n)", "Bytes ohne Daten (n)"}});
+    if (s.command == SdoCommand::DownloadSegmentRequest ||
+        s.command == SdoCommand::UploadSegmentResponse) {
+        out.push_back({"sdo.n",
+                       0,
+                       1,
+                       1,
+                       std::to_string((byte0 >> 1) & 0x07),
+                       {"bytes without data (n)", "Bytes ohne Daten (n)"}});
         out.push_back({"sdo.c", 0, 1, 1, s.last ? "1" : "0",
-                       s.last ? LocalText{"last segment", "letztes Segment"} : LocalText{"more segments follow", "weitere Segmente folgen"}});
+                       s.last ? LocalText{"last segment", "letztes Segment"}
+                              : LocalText{"more segments follow", "weitere Segmente folgen"}});
     }
 }
 
 LocalText summaryOf(const Sdo &s, const std::optional<SdoChannel> &channel)
 {
     LocalText what = commandText(s);
-    if (s.command != SdoCommand::DownloadSegmentRequest && s.command != SdoCommand::UploadSegmentRequest
-        && s.command != SdoCommand::DownloadSegmentResponse && s.command != SdoCommand::UploadSegmentResponse
-        && !isBlockTransfer(s.command)) {
+    if (s.command != SdoCommand::DownloadSegmentRequest &&
+        s.command != SdoCommand::UploadSegmentRequest &&
+        s.command != SdoCommand::DownloadSegmentResponse &&
+        s.command != SdoCommand::UploadSegmentResponse && !isBlockTransfer(s.command)) {
         what.en += " " + objectText(s);
         what.de += " " + objectText(s);
     }
     if (s.expedited) {
-        const std::string v = " = " + std::to_string(expeditedValue(s)) + " (" + std::to_string(s.data.size());
+        const std::string v =
+            " = " + std::to_string(expeditedValue(s)) + " (" + std::to_string(s.data.size());
         what.en += v + (s.data.size() == 1 ? " byte)" : " bytes)");
         what.de += v + " Byte)";
     }
@@ -79,21 +95,34 @@ LocalText commandText(const Sdo &s)
 {
     switch (s.command) {
     case SdoCommand::InitiateDownloadRequest:
-        return s.expedited ? LocalText{"initiate download (expedited write)", "Download einleiten (beschleunigtes Schreiben)"}
-                           : LocalText{"initiate segmented download", "segmentierten Download einleiten"};
+        return s.expedited
+                   ? LocalText{"initiate download (expedited write)",
+                               "Download einleiten (beschleunigtes Schreiben)"}
+                   : LocalText{"initiate segmented download", "segmentierten Download einleiten"};
     case SdoCommand::DownloadSegmentRequest: return {"download segment", "Download-Segment"};
-    case SdoCommand::InitiateUploadRequest: return {"initiate upload (read)", "Upload einleiten (Lesen)"};
-    case SdoCommand::UploadSegmentRequest: return {"upload segment request", "Upload-Segment anfordern"};
-    case SdoCommand::BlockUploadRequest: return {"block upload (not supported)", "Block-Upload (nicht unterstützt)"};
-    case SdoCommand::BlockDownloadRequest: return {"block download (not supported)", "Block-Download (nicht unterstützt)"};
-    case SdoCommand::InitiateDownloadResponse: return {"download confirmed (write done)", "Download bestätigt (geschrieben)"};
-    case SdoCommand::DownloadSegmentResponse: return {"download segment confirmed", "Download-Segment bestätigt"};
+    case SdoCommand::InitiateUploadRequest:
+        return {"initiate upload (read)", "Upload einleiten (Lesen)"};
+    case SdoCommand::UploadSegmentRequest:
+        return {"upload segment request", "Upload-Segment anfordern"};
+    case SdoCommand::BlockUploadRequest:
+        return {"block upload (not supported)", "Block-Upload (nicht unterstützt)"};
+    case SdoCommand::BlockDownloadRequest:
+        return {"block download (not supported)", "Block-Download (nicht unterstützt)"};
+    case SdoCommand::InitiateDownloadResponse:
+        return {"download confirmed (write done)", "Download bestätigt (geschrieben)"};
+    case SdoCommand::DownloadSegmentResponse:
+        return {"download segment confirmed", "Download-Segment bestätigt"};
     case SdoCommand::InitiateUploadResponse:
-        return s.expedited ? LocalText{"upload response (value read)", "Upload-Antwort (gelesener Wert)"}
-                           : LocalText{"initiate segmented upload", "segmentierten Upload einleiten"};
+        return s.expedited
+                   ? LocalText{"upload response (value read)", "Upload-Antwort (gelesener Wert)"}
+                   : LocalText{"initiate segmented upload", "segmentierten Upload einleiten"};
     case SdoCommand::UploadSegmentResponse: return {"upload segment", "Upload-Segment"};
-    case SdoCommand::BlockDownloadResponse: return {"block download response (not supported)", "Block-Download-Antwort (nicht unterstützt)"};
-    case SdoCommand::BlockUploadResponse: return {"block upload response (not supported)", "Block-Upload-Antwort (nicht unterstützt)"};
+    case SdoCommand::BlockDownloadResponse:
+        return {"block download response (not supported)",
+                "Block-Download-Antwort (nicht unterstützt)"};
+    case SdoCommand::BlockUploadResponse:
+        return {"block upload response (not supported)",
+                "Block-Upload-Antwort (nicht unterstützt)"};
     case SdoCommand::Abort: return {"abort transfer", "Übertragung abbrechen"};
     }
     return {"unknown SDO command", "unbekanntes SDO-Kommando"};
@@ -111,22 +140,26 @@ Description describeSdo(std::span<const std::uint8_t> data, const DescribeOption
         if (channel) {
             const std::string n = std::to_string(channel->node);
             text = channel->direction == Direction::Request
-                       ? LocalText{"COB-ID: SDO request to node " + n + " (0x600 + node)", "COB-ID: SDO-Anfrage an Knoten " + n + " (0x600 + Knoten)"}
-                       : LocalText{"COB-ID: SDO response from node " + n + " (0x580 + node)", "COB-ID: SDO-Antwort von Knoten " + n + " (0x580 + Knoten)"};
+                       ? LocalText{"COB-ID: SDO request to node " + n + " (0x600 + node)",
+                                   "COB-ID: SDO-Anfrage an Knoten " + n + " (0x600 + Knoten)"}
+                       : LocalText{"COB-ID: SDO response from node " + n + " (0x580 + node)",
+                                   "COB-ID: SDO-Antwort von Knoten " + n + " (0x580 + Knoten)"};
         }
         d.fields.push_back({"can.id", 0, 0, 0, id, text});
     }
     auto decoded = decodeSdo(data, direction);
     if (decoded.ok() && options.cobId && !channel) {
-        d.error = DecodeError{DecodeErrc::UnexpectedCommand, 0, 0,
-                              "COB-ID " + hexWord(static_cast<std::uint16_t>(*options.cobId & 0xFFFF))
-                                  + " is not an SDO channel (0x581..0x5FF, 0x601..0x67F)"};
+        d.error =
+            DecodeError{DecodeErrc::UnexpectedCommand, 0, 0,
+                        "COB-ID " + hexWord(static_cast<std::uint16_t>(*options.cobId & 0xFFFF)) +
+                            " is not an SDO channel (0x581..0x5FF, 0x601..0x67F)"};
         decoded = *d.error;
     }
     if (!decoded.ok()) {
         d.error = decoded.error();
         if (!data.empty())
-            d.fields.push_back({"sdo.command", 0, 1, 0, hexByte(data.front()), {"command byte", "Kommandobyte"}});
+            d.fields.push_back(
+                {"sdo.command", 0, 1, 0, hexByte(data.front()), {"command byte", "Kommandobyte"}});
         d.summary = describeError(*d.error);
         return d;
     }
@@ -134,25 +167,54 @@ Description describeSdo(std::span<const std::uint8_t> data, const DescribeOption
     const std::uint8_t byte0 = data.front();
     d.fields.push_back({"sdo.command", 0, 1, 0, hexByte(byte0), commandText(s)});
     if (isBlockTransfer(s.command)) {
-        d.fields.push_back({"sdo.block", 1, 7, 0, toHex(data.subspan(1)), {"block transfer bytes (not interpreted)", "Bytes der Blockübertragung (nicht ausgewertet)"}});
+        d.fields.push_back({"sdo.block",
+                            1,
+                            7,
+                            0,
+                            toHex(data.subspan(1)),
+                            {"block transfer bytes (not interpreted)",
+                             "Bytes der Blockübertragung (nicht ausgewertet)"}});
         d.summary = summaryOf(s, channel);
         return d;
     }
     describeBits(s, byte0, d.fields);
-    const bool segmentData = s.command == SdoCommand::DownloadSegmentRequest || s.command == SdoCommand::UploadSegmentResponse;
+    const bool segmentData = s.command == SdoCommand::DownloadSegmentRequest ||
+                             s.command == SdoCommand::UploadSegmentResponse;
     if (segmentData) {
         if (!s.data.empty())
-            d.fields.push_back({"sdo.segment_data", 1, s.data.size(), 0, toHex(s.data), {"segment data", "Segmentdaten"}});
-    } else if (s.command != SdoCommand::UploadSegmentRequest && s.command != SdoCommand::DownloadSegmentResponse) {
-        d.fields.push_back({"sdo.index", 1, 2, 0, hexWord(s.index), {"object index (little-endian)", "Objektindex (Little-Endian)"}});
-        d.fields.push_back({"sdo.subindex", 3, 1, 0, std::to_string(s.subindex), {"sub-index", "Subindex"}});
+            d.fields.push_back({"sdo.segment_data",
+                                1,
+                                s.data.size(),
+                                0,
+                                toHex(s.data),
+                                {"segment data", "Segmentdaten"}});
+    } else if (s.command != SdoCommand::UploadSegmentRequest &&
+               s.command != SdoCommand::DownloadSegmentResponse) {
+        d.fields.push_back({"sdo.index",
+                            1,
+                            2,
+                            0,
+                            hexWord(s.index),
+                            {"object index (little-endian)", "Objektindex (Little-Endian)"}});
+        d.fields.push_back(
+            {"sdo.subindex", 3, 1, 0, std::to_string(s.subindex), {"sub-index", "Subindex"}});
         if (s.command == SdoCommand::Abort) {
-            d.fields.push_back({"sdo.abort_code", 4, 4, 0, hex32(s.abortCode), abortCodeText(s.abortCode)});
+            d.fields.push_back(
+                {"sdo.abort_code", 4, 4, 0, hex32(s.abortCode), abortCodeText(s.abortCode)});
         } else if (s.expedited) {
-            d.fields.push_back({"sdo.data", 4, s.data.size(), 0, toHex(s.data) + " (" + std::to_string(expeditedValue(s)) + ")",
+            d.fields.push_back({"sdo.data",
+                                4,
+                                s.data.size(),
+                                0,
+                                toHex(s.data) + " (" + std::to_string(expeditedValue(s)) + ")",
                                 {"data (little-endian)", "Daten (Little-Endian)"}});
         } else if (s.sizeIndicated) {
-            d.fields.push_back({"sdo.size", 4, 4, 0, std::to_string(s.size), {"bytes to transfer", "zu übertragende Bytes"}});
+            d.fields.push_back({"sdo.size",
+                                4,
+                                4,
+                                0,
+                                std::to_string(s.size),
+                                {"bytes to transfer", "zu übertragende Bytes"}});
         }
     }
     d.summary = summaryOf(s, channel);

@@ -11,7 +11,8 @@
 
 namespace vt::dev {
 
-// raw / 10^decimals, e.g. formatScaled(-3000, 3, "V") = {"-3.000 V", "-3,000 V"}. Empty unit: no space.
+// raw / 10^decimals, e.g. formatScaled(-3000, 3, "V") = {"-3.000 V", "-3,000 V"}. Empty unit: no
+// space.
 LocalText formatScaled(std::int64_t raw, int decimals, std::string_view unit = {});
 
 // A double rounded to `decimals` digits (half away from zero), same layout as formatScaled.
@@ -28,7 +29,8 @@ inline LocalText formatScaled(std::int64_t raw, int decimals, std::string_view u
         div *= 10;
     const bool negative = raw < 0;
     // Magnitude without overflowing on INT64_MIN.
-    const std::uint64_t mag = negative ? std::uint64_t{0} - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
+    const std::uint64_t mag = negative ? std::uint64_t{0} - static_cast<std::uint64_t>(raw)
+                                       : static_cast<std::uint64_t>(raw);
     const std::string whole = (negative ? "-" : "") + std::to_string(mag / div);
     const std::string suffix = unit.empty() ? std::string() : " " + std::string(unit);
     if (decimals == 0)

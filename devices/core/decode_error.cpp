@@ -6,7 +6,8 @@ LocalText errcText(DecodeErrc code)
 {
     switch (code) {
     case DecodeErrc::Truncated: return {"truncated", "unvollständig"};
-    case DecodeErrc::TooLong: return {"extra bytes after the frame", "überzählige Bytes nach dem Telegramm"};
+    case DecodeErrc::TooLong:
+        return {"extra bytes after the frame", "überzählige Bytes nach dem Telegramm"};
     case DecodeErrc::BadChecksum: return {"checksum error", "Prüfsummenfehler"};
     case DecodeErrc::BadLength: return {"inconsistent length", "widersprüchliche Länge"};
     case DecodeErrc::BadValue: return {"invalid value", "ungültiger Wert"};

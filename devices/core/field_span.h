@@ -15,12 +15,12 @@ namespace vt::dev {
 
 struct FieldSpan
 {
-    std::string key;         // stable machine name: "TADR", "DAT1H", "pdu.function"
-    std::size_t offset = 0;  // first byte in the frame
-    std::size_t length = 0;  // bytes covered (0 for a purely explanatory row)
-    int depth = 0;           // 0 = top level; children follow their parent with depth + 1
-    std::string value;       // the value as a person reads it: "0x23", "1000", "-3000"
-    LocalText text;          // meaning: "telegram address", "d1.11 actual value (branch 1)"
+    std::string key;        // stable machine name: "TADR", "DAT1H", "pdu.function"
+    std::size_t offset = 0; // first byte in the frame
+    std::size_t length = 0; // bytes covered (0 for a purely explanatory row)
+    int depth = 0;          // 0 = top level; children follow their parent with depth + 1
+    std::string value;      // the value as a person reads it: "0x23", "1000", "-3000"
+    LocalText text;         // meaning: "telegram address", "d1.11 actual value (branch 1)"
 };
 
 struct Description

@@ -18,7 +18,8 @@ int nibble(char c)
 
 bool isSeparator(char c)
 {
-    return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == ':' || c == '-' || c == ';';
+    return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == ':' || c == '-' ||
+           c == ';';
 }
 
 } // namespace

@@ -20,7 +20,7 @@ struct HexError
 
 Result<Bytes, HexError> parseHex(std::string_view text);
 std::string toHex(std::span<const std::uint8_t> bytes, char separator = ' ');
-std::string hexByte(std::uint8_t b);     // "0x23"
-std::string hexWord(std::uint16_t w);    // "0x03E8"
+std::string hexByte(std::uint8_t b);  // "0x23"
+std::string hexWord(std::uint16_t w); // "0x03E8"
 
 } // namespace vt::dev

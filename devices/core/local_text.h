@@ -15,12 +15,18 @@ struct LocalText
     std::string en;
     std::string de;
 
-    const std::string &in(Language lang) const { return lang == Language::German && !de.empty() ? de : en; }
+    const std::string &in(Language lang) const
+    {
+        return lang == Language::German && !de.empty() ? de : en;
+    }
     bool complete() const { return !en.empty() && !de.empty(); }
     bool operator==(const LocalText &) const = default;
 };
 
 // Same words in both languages (names, numbers, hex dumps).
-inline LocalText same(std::string text) { return LocalText{text, text}; }
+inline LocalText same(std::string text)
+{
+    return LocalText{text, text};
+}
 
 } // namespace vt::dev

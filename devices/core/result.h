@@ -8,8 +8,7 @@
 
 namespace vt::dev {
 
-template <typename T, typename E>
-class [[nodiscard]] Result
+template<typename T, typename E> class [[nodiscard]] Result
 {
 public:
     Result(T value) : m_data(std::in_place_index<0>, std::move(value)) {}
@@ -18,14 +17,30 @@ public:
     bool ok() const { return m_data.index() == 0; }
     explicit operator bool() const { return ok(); }
 
-    const T &value() const & { assert(ok()); return std::get<0>(m_data); }
-    T &value() & { assert(ok()); return std::get<0>(m_data); }
-    T &&value() && { assert(ok()); return std::get<0>(std::move(m_data)); }
+    const T &value() const &
+    {
+        assert(ok());
+        return std::get<0>(m_data);
+    }
+    T &value() &
+    {
+        assert(ok());
+        return std::get<0>(m_data);
+    }
+    T &&value() &&
+    {
+        assert(ok());
+        return std::get<0>(std::move(m_data));
+    }
     const T &operator*() const & { return value(); }
     const T *operator->() const { return &value(); }
     T *operator->() { return &value(); }
 
-    const E &error() const { assert(!ok()); return std::get<1>(m_data); }
+    const E &error() const
+    {
+        assert(!ok());
+        return std::get<1>(m_data);
+    }
 
     T valueOr(T fallback) const { return ok() ? std::get<0>(m_data) : std::move(fallback); }
 

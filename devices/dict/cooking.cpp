@@ -9,7 +9,10 @@
 namespace vt::dev {
 namespace {
 
-char decimalSign(Language lang) { return lang == Language::German ? ',' : '.'; }
+char decimalSign(Language lang)
+{
+    return lang == Language::German ? ',' : '.';
+}
 
 std::string trim(std::string_view s)
 {
@@ -24,11 +27,15 @@ std::string trim(std::string_view s)
 bool equalsIgnoreCase(std::string_view a, std::string_view b)
 {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
            });
 }
 
-int displayDecimals(const ParamMeta &meta) { return meta.scale.name.empty() && meta.isFloat() ? 3 : meta.scale.decimals; }
+int displayDecimals(const ParamMeta &meta)
+{
+    return meta.scale.name.empty() && meta.isFloat() ? 3 : meta.scale.decimals;
+}
 
 std::string formatDisplayNumber(double v, int decimals, Language lang)
 {
@@ -46,18 +53,25 @@ CookError rangeError(const ParamMeta &meta, CookError::Kind kind, double limitRa
     const std::string en = formatValue(meta, limitRaw, Language::English);
     const std::string de = formatValue(meta, limitRaw, Language::German);
     const Limits l = rowLimits(meta);
-    const std::string rangeEn = formatValue(meta, l.min, Language::English) + " … " + formatValue(meta, l.max, Language::English);
-    const std::string rangeDe = formatValue(meta, l.min, Language::German) + " … " + formatValue(meta, l.max, Language::German);
+    const std::string rangeEn = formatValue(meta, l.min, Language::English) + " … " +
+                                formatValue(meta, l.max, Language::English);
+    const std::string rangeDe = formatValue(meta, l.min, Language::German) + " … " +
+                                formatValue(meta, l.max, Language::German);
     if (kind == CookError::Kind::BelowMin)
-        return {kind, {meta.name + ": below the minimum " + en + " (range " + rangeEn + ")",
-                       meta.name + ": unter dem Minimum " + de + " (Bereich " + rangeDe + ")"}};
-    return {kind, {meta.name + ": above the maximum " + en + " (range " + rangeEn + ")",
-                   meta.name + ": über dem Maximum " + de + " (Bereich " + rangeDe + ")"}};
+        return {kind,
+                {meta.name + ": below the minimum " + en + " (range " + rangeEn + ")",
+                 meta.name + ": unter dem Minimum " + de + " (Bereich " + rangeDe + ")"}};
+    return {kind,
+            {meta.name + ": above the maximum " + en + " (range " + rangeEn + ")",
+             meta.name + ": über dem Maximum " + de + " (Bereich " + rangeDe + ")"}};
 }
 
 } // namespace
 
-Limits rowLimits(const ParamMeta &meta) { return {meta.min, meta.max}; }
+Limits rowLimits(const ParamMeta &meta)
+{
+    return {meta.min, meta.max};
+}
 
 double toDisplay(const ParamMeta &meta, double raw)
 {
@@ -75,7 +89,8 @@ std::string formatNumber(const ParamMeta &meta, double raw, Language lang)
 
 std::string formatValue(const ParamMeta &meta, double raw, Language lang)
 {
-    if (const EnumLabel *e = meta.findEnum(static_cast<std::int64_t>(raw)); e && raw == std::floor(raw))
+    if (const EnumLabel *e = meta.findEnum(static_cast<std::int64_t>(raw));
+        e && raw == std::floor(raw))
         return e->text.in(lang);
     std::string s = formatNumber(meta, raw, lang);
     if (!meta.unit.empty())
@@ -89,10 +104,13 @@ std::string formatBits(const ParamMeta &meta, std::uint32_t raw, Language lang)
     for (int bit = 0; bit < 32; ++bit) {
         if (!(raw & (1u << bit)))
             continue;
-        const auto it = std::find_if(meta.bits.begin(), meta.bits.end(), [&](const BitLabel &b) { return b.bit == bit; });
+        const auto it = std::find_if(meta.bits.begin(), meta.bits.end(),
+                                     [&](const BitLabel &b) { return b.bit == bit; });
         if (!out.empty())
             out += ", ";
-        out += it != meta.bits.end() ? it->text.in(lang) : (lang == Language::German ? "Bit " : "bit ") + std::to_string(bit);
+        out += it != meta.bits.end()
+                   ? it->text.in(lang)
+                   : (lang == Language::German ? "Bit " : "bit ") + std::to_string(bit);
     }
     return out;
 }
@@ -100,9 +118,10 @@ std::string formatBits(const ParamMeta &meta, std::uint32_t raw, Language lang)
 std::optional<CookError> checkWrite(const ParamMeta &meta, double raw, std::optional<Limits> limits)
 {
     if (!meta.writable())
-        return CookError{CookError::Kind::NotWritable,
-                         {meta.name + " cannot be written (" + accessText(meta.access).en + ")",
-                          meta.name + " ist nicht schreibbar (" + accessText(meta.access).de + ")"}};
+        return CookError{
+            CookError::Kind::NotWritable,
+            {meta.name + " cannot be written (" + accessText(meta.access).en + ")",
+             meta.name + " ist nicht schreibbar (" + accessText(meta.access).de + ")"}};
     return checkRange(meta, raw, limits);
 }
 
@@ -139,7 +158,8 @@ Result<double, CookError> parseValue(const ParamMeta &meta, std::string_view inp
     const char other = lang == Language::German ? '.' : ',';
     if (text.find(other) != std::string::npos)
         return CookError{CookError::Kind::WrongDecimalSign,
-                         {std::string("use '") + own + "' as the decimal sign", std::string("Dezimalzeichen ist '") + own + "'"}};
+                         {std::string("use '") + own + "' as the decimal sign",
+                          std::string("Dezimalzeichen ist '") + own + "'"}};
     std::replace(text.begin(), text.end(), own, '.');
     if (!text.empty() && text.front() == '+')
         text.erase(0, 1);
@@ -147,10 +167,13 @@ Result<double, CookError> parseValue(const ParamMeta &meta, std::string_view inp
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), typed);
     if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(typed)) {
         if (!meta.enums.empty())
-            return CookError{CookError::Kind::UnknownLabel,
-                             {"'" + trim(input) + "' is neither a number nor a label of " + meta.name,
-                              "'" + trim(input) + "' ist weder eine Zahl noch eine Auswahl von " + meta.name}};
-        return CookError{CookError::Kind::NotANumber, {"'" + trim(input) + "' is not a number", "'" + trim(input) + "' ist keine Zahl"}};
+            return CookError{
+                CookError::Kind::UnknownLabel,
+                {"'" + trim(input) + "' is neither a number nor a label of " + meta.name,
+                 "'" + trim(input) + "' ist weder eine Zahl noch eine Auswahl von " + meta.name}};
+        return CookError{
+            CookError::Kind::NotANumber,
+            {"'" + trim(input) + "' is not a number", "'" + trim(input) + "' ist keine Zahl"}};
     }
 
     double raw = typed;
@@ -165,7 +188,9 @@ Result<double, CookError> parseValue(const ParamMeta &meta, std::string_view inp
         }
     } else if (!meta.isFloat()) {
         if (typed != std::floor(typed))
-            return CookError{CookError::Kind::NotANumber, {meta.name + " takes whole numbers only", meta.name + " nimmt nur ganze Zahlen"}};
+            return CookError{
+                CookError::Kind::NotANumber,
+                {meta.name + " takes whole numbers only", meta.name + " nimmt nur ganze Zahlen"}};
     }
     if (raw == 0)
         raw = 0; // no -0

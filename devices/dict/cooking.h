@@ -15,7 +15,16 @@ namespace vt::dev {
 
 struct CookError
 {
-    enum class Kind { Empty, NotANumber, WrongDecimalSign, UnknownLabel, BelowMin, AboveMax, NotWritable, TooLong };
+    enum class Kind {
+        Empty,
+        NotANumber,
+        WrongDecimalSign,
+        UnknownLabel,
+        BelowMin,
+        AboveMax,
+        NotWritable,
+        TooLong
+    };
     Kind kind = Kind::NotANumber;
     LocalText message; // names the limits in display units
 };
@@ -44,11 +53,13 @@ std::string formatBits(const ParamMeta &meta, std::uint32_t raw, Language lang);
 // 60 mA / 1.78 = 33.7 -> 33); a typed value within half a display digit of a raw step (as
 // shown by formatNumber) maps back to that step, so display -> parse round-trips.
 Result<double, CookError> parseValue(const ParamMeta &meta, std::string_view text, Language lang,
-                                      std::optional<Limits> limits = std::nullopt);
+                                     std::optional<Limits> limits = std::nullopt);
 
 // Range check of a raw value (also for read-only rows, e.g. values in a file).
-std::optional<CookError> checkRange(const ParamMeta &meta, double raw, std::optional<Limits> limits = std::nullopt);
+std::optional<CookError> checkRange(const ParamMeta &meta, double raw,
+                                    std::optional<Limits> limits = std::nullopt);
 // Before anything is sent: the row must be writable and the value in range.
-std::optional<CookError> checkWrite(const ParamMeta &meta, double raw, std::optional<Limits> limits = std::nullopt);
+std::optional<CookError> checkWrite(const ParamMeta &meta, double raw,
+                                    std::optional<Limits> limits = std::nullopt);
 
 } // namespace vt::dev

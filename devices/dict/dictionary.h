@@ -16,10 +16,10 @@ enum class DeviceProtocol { Hcs, Dsp408, Hart };
 
 struct Dictionary
 {
-    std::string family;       // "dma-pn-v51"
+    std::string family; // "dma-pn-v51"
     bool abstract = false;
     LocalText title;
-    std::string vendor;       // "HCS", "Wandfluh"
+    std::string vendor; // "HCS", "Wandfluh"
     DeviceProtocol protocol = DeviceProtocol::Hcs;
     std::string source;
     std::vector<std::string> versions;
@@ -28,7 +28,8 @@ struct Dictionary
     // Least time between two single writes to one module (DMA Profinet manual §3.4.1: the EEPROM
     // needs up to 25 ms per parameter, "the cycle time of writing … should be greater than 30ms").
     int writePacingMs = 0;
-    bool writePacingAssumed = false; // carried over from a sister manual, not stated for this family
+    bool writePacingAssumed =
+        false; // carried over from a sister manual, not stated for this family
 
     const ParamMeta *find(const std::string &name) const;
     const ParamMeta *findId(int id) const;

@@ -2,10 +2,9 @@
 
 #include "dictionary_validate.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <set>
 
 namespace vt::dev {
@@ -22,7 +21,7 @@ struct RawFile
 // A family with its inheritance applied, still as JSON.
 struct Resolved
 {
-    Json header;                   // title, vendor, protocol, … (child keys over base keys)
+    Json header; // title, vendor, protocol, … (child keys over base keys)
     Json scales = Json::object();
     Json types = Json::object();
     std::vector<Json> rows;
@@ -120,7 +119,8 @@ private:
                 return nullptr;
             out = *b;
         }
-        for (const char *key : {"title", "vendor", "protocol", "source", "versions", "modes", "write_pacing"})
+        for (const char *key :
+             {"title", "vendor", "protocol", "source", "versions", "modes", "write_pacing"})
             if (raw.doc.contains(key))
                 out.header[key] = raw.doc[key];
         out.header["abstract"] = raw.doc.value("abstract", false);
@@ -149,7 +149,8 @@ private:
                 const auto before = out.rows.size();
                 std::erase_if(out.rows, [&](const Json &r) { return r["name"] == n; });
                 if (out.rows.size() == before)
-                    error(raw.name, n.is_string() ? n.get<std::string>() : "?", "\"remove\" names no inherited row");
+                    error(raw.name, n.is_string() ? n.get<std::string>() : "?",
+                          "\"remove\" names no inherited row");
             }
         }
         visiting.erase(family);
@@ -163,7 +164,8 @@ private:
         return {j.value("en", std::string()), j.value("de", std::string())};
     }
 
-    std::shared_ptr<Dictionary> build(const std::string &file, const std::string &family, const Resolved &r)
+    std::shared_ptr<Dictionary> build(const std::string &file, const std::string &family,
+                                      const Resolved &r)
     {
         auto dict = std::make_shared<Dictionary>();
         dict->family = family;
@@ -285,11 +287,13 @@ private:
             p.scale.name = s;
             p.scale.factor = sj.value("factor", 0.0);
             p.scale.decimals = sj.value("decimals", 0);
-            p.scale.rounding = sj.value("rounding", std::string("nearest")) == "truncate" ? Rounding::Truncate
-                                                                                           : Rounding::Nearest;
+            p.scale.rounding = sj.value("rounding", std::string("nearest")) == "truncate"
+                                   ? Rounding::Truncate
+                                   : Rounding::Nearest;
             p.scale.assumed = sj.value("assumed", false);
             p.scale.note = sj.value("note", std::string());
-            if (!(p.scale.factor > 0) || !std::isfinite(p.scale.factor) || p.scale.decimals < 0 || p.scale.decimals > 9) {
+            if (!(p.scale.factor > 0) || !std::isfinite(p.scale.factor) || p.scale.decimals < 0 ||
+                p.scale.decimals > 9) {
                 error(file, name, "scale '" + s + "' needs a positive factor and 0..9 decimals");
                 return std::nullopt;
             }
@@ -326,7 +330,8 @@ private:
                                                     : Persistence::Unspecified;
         if (j.contains("canopen")) {
             const Json &c = j["canopen"];
-            p.canopen = CanObject{static_cast<std::uint16_t>(c.value("index", 0)), static_cast<std::uint8_t>(c.value("sub", 0))};
+            p.canopen = CanObject{static_cast<std::uint16_t>(c.value("index", 0)),
+                                  static_cast<std::uint8_t>(c.value("sub", 0))};
         } else if (p.id) {
             // ARCHITECTURE.md "CAN": HCS parameters live at the manufacturer object 0x2000 + ID.
             p.canopen = CanObject{static_cast<std::uint16_t>(0x2000 + *p.id), 0};
@@ -351,7 +356,8 @@ Result<DictionarySet, DictionaryErrors> loadDictionaries(const std::vector<Dicti
 
 const Result<DictionarySet, DictionaryErrors> &builtinDictionaries()
 {
-    static const Result<DictionarySet, DictionaryErrors> set = loadDictionaries(embeddedDictionaryFiles());
+    static const Result<DictionarySet, DictionaryErrors> set =
+        loadDictionaries(embeddedDictionaryFiles());
     return set;
 }
 

@@ -14,8 +14,8 @@ std::string num(double v)
     return buf;
 }
 
-void checkText(std::vector<DictionaryError> &out, const std::string &row, const char *what, const LocalText &t,
-               bool required)
+void checkText(std::vector<DictionaryError> &out, const std::string &row, const char *what,
+               const LocalText &t, bool required)
 {
     if (!required && t.en.empty() && t.de.empty())
         return;
@@ -30,7 +30,9 @@ void checkText(std::vector<DictionaryError> &out, const std::string &row, const 
 std::vector<DictionaryError> validateDictionary(const Dictionary &dict)
 {
     std::vector<DictionaryError> out;
-    auto fail = [&](const std::string &row, std::string message) { out.push_back({{}, row, std::move(message)}); };
+    auto fail = [&](const std::string &row, std::string message) {
+        out.push_back({{}, row, std::move(message)});
+    };
 
     if (!dict.title.complete())
         fail({}, "\"title\" needs en and de");
@@ -65,13 +67,15 @@ std::vector<DictionaryError> validateDictionary(const Dictionary &dict)
         if (!(p.min <= p.max))
             fail(row, "min " + num(p.min) + " > max " + num(p.max));
         if (p.min < typeMin(p.type) || p.max > typeMax(p.type))
-            fail(row, "range " + num(p.min) + ".." + num(p.max) + " does not fit " + rawTypeKey(p.type));
+            fail(row,
+                 "range " + num(p.min) + ".." + num(p.max) + " does not fit " + rawTypeKey(p.type));
         if (!p.isFloat() && (p.min != std::floor(p.min) || p.max != std::floor(p.max)))
             fail(row, "integer type with a fractional limit");
         if (!(p.step > 0))
             fail(row, "step must be positive");
         if (p.defaultValue && (*p.defaultValue < p.min || *p.defaultValue > p.max))
-            fail(row, "default " + num(*p.defaultValue) + " outside " + num(p.min) + ".." + num(p.max));
+            fail(row,
+                 "default " + num(*p.defaultValue) + " outside " + num(p.min) + ".." + num(p.max));
         std::set<std::int64_t> enumValues;
         for (const EnumLabel &e : p.enums) {
             const auto v = static_cast<double>(e.value);

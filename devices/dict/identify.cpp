@@ -26,11 +26,14 @@ bool contains(const std::vector<std::string> &list, const std::string &v)
 
 } // namespace
 
-Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int versRaw, int e00, HcsProduct product)
+Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int versRaw, int e00,
+                                              HcsProduct product)
 {
     if (versRaw <= 0 || versRaw > 9999)
-        return LocalText{"the module reports no valid software version (Vers = " + std::to_string(versRaw) + ")",
-                         "das Modul meldet keine gültige Softwareversion (Vers = " + std::to_string(versRaw) + ")"};
+        return LocalText{
+            "the module reports no valid software version (Vers = " + std::to_string(versRaw) + ")",
+            "das Modul meldet keine gültige Softwareversion (Vers = " + std::to_string(versRaw) +
+                ")"};
     const int major = versRaw / 100;
     char versionText[16];
     std::snprintf(versionText, sizeof versionText, "%d.%02d", major, versRaw % 100);
@@ -60,13 +63,15 @@ Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int vers
         }
     }
     if (!best)
-        return LocalText{"no HCS dictionary fits this module", "kein HCS-Wörterbuch passt zu diesem Modul"};
+        return LocalText{"no HCS dictionary fits this module",
+                         "kein HCS-Wörterbuch passt zu diesem Modul"};
     Identification id{best->family, versionText, mode, exact, {}};
     if (!exact)
         id.warning = {"unknown software version V" + std::string(versionText) + " in mode " + mode +
                           "; using the nearest dictionary " + best->family + " — check every value",
-                      "unbekannte Softwareversion V" + std::string(versionText) + " in Modus " + mode +
-                          "; verwendet wird das nächstliegende Wörterbuch " + best->family + " — alle Werte prüfen"};
+                      "unbekannte Softwareversion V" + std::string(versionText) + " in Modus " +
+                          mode + "; verwendet wird das nächstliegende Wörterbuch " + best->family +
+                          " — alle Werte prüfen"};
     return id;
 }
 
@@ -80,8 +85,11 @@ Result<Identification, LocalText> identifyDsp408(const DictionarySet &set, std::
     id.version = std::string("capability ") + hex;
     if (capability != 0x00130000u) {
         id.exact = false;
-        id.warning = {std::string("capability ") + hex + " differs from the ED1/SD1 manual's 0x00130000; using wandfluh-ed1",
-                      std::string("Fähigkeiten ") + hex + " weichen vom ED1/SD1-Handbuch (0x00130000) ab; verwendet wird wandfluh-ed1"};
+        id.warning = {
+            std::string("capability ") + hex +
+                " differs from the ED1/SD1 manual's 0x00130000; using wandfluh-ed1",
+            std::string("Fähigkeiten ") + hex +
+                " weichen vom ED1/SD1-Handbuch (0x00130000) ab; verwendet wird wandfluh-ed1"};
     }
     return id;
 }
@@ -90,17 +98,21 @@ Result<Identification, LocalText> identifyHart(const DictionarySet &set, std::ui
                                                std::uint16_t expandedDeviceType)
 {
     if (manufacturer != kWandfluhHartManufacturer)
-        return LocalText{"HART manufacturer " + std::to_string(manufacturer) + " is not Wandfluh (24835)",
-                         "HART-Hersteller " + std::to_string(manufacturer) + " ist nicht Wandfluh (24835)"};
+        return LocalText{
+            "HART manufacturer " + std::to_string(manufacturer) + " is not Wandfluh (24835)",
+            "HART-Hersteller " + std::to_string(manufacturer) + " ist nicht Wandfluh (24835)"};
     if (!set.find("wandfluh-sd7"))
         return LocalText{"the SD7 dictionary is missing", "das SD7-Wörterbuch fehlt"};
-    Identification id{"wandfluh-sd7", "device type " + std::to_string(expandedDeviceType), {}, true, {}};
+    Identification id{
+        "wandfluh-sd7", "device type " + std::to_string(expandedDeviceType), {}, true, {}};
     if (expandedDeviceType != 58352 && expandedDeviceType != 58353) {
         id.exact = false;
-        id.warning = {"Wandfluh HART device type " + std::to_string(expandedDeviceType) +
-                          " is not in the HART manual (SD733 58352, SD736 58353); using wandfluh-sd7",
-                      "Wandfluh-HART-Gerätetyp " + std::to_string(expandedDeviceType) +
-                          " steht nicht im HART-Handbuch (SD733 58352, SD736 58353); verwendet wird wandfluh-sd7"};
+        id.warning = {
+            "Wandfluh HART device type " + std::to_string(expandedDeviceType) +
+                " is not in the HART manual (SD733 58352, SD736 58353); using wandfluh-sd7",
+            "Wandfluh-HART-Gerätetyp " + std::to_string(expandedDeviceType) +
+                " steht nicht im HART-Handbuch (SD733 58352, SD736 58353); verwendet wird "
+                "wandfluh-sd7"};
     }
     return id;
 }

@@ -26,10 +26,12 @@ struct Identification
     LocalText warning;
 };
 
-Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int versRaw, int e00, HcsProduct product);
+Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int versRaw, int e00,
+                                              HcsProduct product);
 
 // ED1/SD1 manual §4.8.7: 0x00130000 = hydraulic drive, open loop movement and position control.
-Result<Identification, LocalText> identifyDsp408(const DictionarySet &set, std::uint32_t capability);
+Result<Identification, LocalText> identifyDsp408(const DictionarySet &set,
+                                                 std::uint32_t capability);
 
 // HART manual §4.4 / §5.1 command 0: manufacturer 24835 (0x6103) = Wandfluh; SD733 = 58352,
 // SD736 = 58353 (SD730 and SD735 "tbd" in the manual).

@@ -8,7 +8,8 @@ namespace vt::dev {
 
 const EnumLabel *ParamMeta::findEnum(std::int64_t value) const
 {
-    const auto it = std::find_if(enums.begin(), enums.end(), [&](const EnumLabel &e) { return e.value == value; });
+    const auto it = std::find_if(enums.begin(), enums.end(),
+                                 [&](const EnumLabel &e) { return e.value == value; });
     return it == enums.end() ? nullptr : &*it;
 }
 
@@ -110,7 +111,8 @@ const char *rawTypeKey(RawType type)
 
 std::optional<Access> parseAccess(const std::string &key)
 {
-    for (Access a : {Access::Read, Access::ReadWrite, Access::Write, Access::Inactive, Access::NotImplemented})
+    for (Access a :
+         {Access::Read, Access::ReadWrite, Access::Write, Access::Inactive, Access::NotImplemented})
         if (key == accessKey(a))
             return a;
     return std::nullopt;
@@ -118,8 +120,8 @@ std::optional<Access> parseAccess(const std::string &key)
 
 std::optional<RawType> parseRawType(const std::string &key)
 {
-    for (RawType t : {RawType::Int8, RawType::UInt8, RawType::Int16, RawType::UInt16, RawType::Int32,
-                      RawType::UInt32, RawType::Float32, RawType::String})
+    for (RawType t : {RawType::Int8, RawType::UInt8, RawType::Int16, RawType::UInt16,
+                      RawType::Int32, RawType::UInt32, RawType::Float32, RawType::String})
         if (key == rawTypeKey(t))
             return t;
     return std::nullopt;

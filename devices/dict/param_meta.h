@@ -58,15 +58,15 @@ struct CanObject
 struct ParamMeta
 {
     std::string name;
-    std::optional<int> id;        // HCS parameter ID
-    std::optional<int> ind, pnu;  // Wandfluh index / parameter number
-    int instance = 0;             // HART instance
-    std::optional<int> pzd;       // DSP-408 process data number
-    std::string block;            // d C E A L r S B system, or the Wandfluh function block
-    int branch = 0;               // 1 or 2 for HCS branch rows, else 0
+    std::optional<int> id;       // HCS parameter ID
+    std::optional<int> ind, pnu; // Wandfluh index / parameter number
+    int instance = 0;            // HART instance
+    std::optional<int> pzd;      // DSP-408 process data number
+    std::string block;           // d C E A L r S B system, or the Wandfluh function block
+    int branch = 0;              // 1 or 2 for HCS branch rows, else 0
     Access access = Access::Read;
     RawType type = RawType::Int16;
-    int length = 0;               // strings: bytes on the wire
+    int length = 0; // strings: bytes on the wire
     double min = 0, max = 0, step = 1;
     std::string minParam, maxParam;
     std::optional<double> defaultValue;
@@ -100,8 +100,8 @@ double typeMax(RawType type);
 // HART-7 manual §4.4.1, CANopen expedited SDO): 1, 2 or 4; 0 for strings.
 std::size_t wireBytes(RawType type);
 
-const char *accessKey(Access access);   // "r", "rw", "w", "x", "n"
-const char *rawTypeKey(RawType type);   // "int16", …
+const char *accessKey(Access access); // "r", "rw", "w", "x", "n"
+const char *rawTypeKey(RawType type); // "int16", …
 std::optional<Access> parseAccess(const std::string &key);
 std::optional<RawType> parseRawType(const std::string &key);
 LocalText accessText(Access access);

@@ -10,7 +10,10 @@ namespace vt::dev {
 
 using RawValue = std::variant<double, std::string>;
 
-inline bool isText(const RawValue &value) { return std::holds_alternative<std::string>(value); }
+inline bool isText(const RawValue &value)
+{
+    return std::holds_alternative<std::string>(value);
+}
 inline double rawNumber(const RawValue &value)
 {
     const double *number = std::get_if<double>(&value);

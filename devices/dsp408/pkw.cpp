@@ -12,8 +12,8 @@ constexpr std::uint8_t kMaxAk = 0x0F;
 
 std::uint16_t pke(const Pkw &pkw)
 {
-    return static_cast<std::uint16_t>((pkw.ak & kMaxAk) << 12 | (pkw.pkeSpare ? 0x0800 : 0)
-                                      | (pkw.pnu & kMaxPnu));
+    return static_cast<std::uint16_t>((pkw.ak & kMaxAk) << 12 | (pkw.pkeSpare ? 0x0800 : 0) |
+                                      (pkw.pnu & kMaxPnu));
 }
 
 std::size_t indOffset(const Options &options)
@@ -170,7 +170,8 @@ Result<Bytes, DecodeError> encodePkw(const Pkw &pkw, const Options &options)
     if (pkw.ak > kMaxAk)
         return DecodeError{DecodeErrc::BadValue, 0, 0, "AK " + std::to_string(pkw.ak) + " > 15"};
     if (pkw.pnu > kMaxPnu)
-        return DecodeError{DecodeErrc::BadValue, 0, 0, "PNU " + std::to_string(pkw.pnu) + " > 2047"};
+        return DecodeError{DecodeErrc::BadValue, 0, 0,
+                           "PNU " + std::to_string(pkw.pnu) + " > 2047"};
     ByteWriter w;
     w.u16be(pke(pkw));
     if (options.indPosition == IndPosition::Byte2)
@@ -209,8 +210,8 @@ Result<Pkw, DecodeError> decodeLayout(std::span<const std::uint8_t> bytes, const
 
 std::optional<DecodeError> checkAk(const Pkw &pkw, Direction direction)
 {
-    const bool known = direction == Direction::Request ? isKnownRequestId(pkw.ak)
-                                                       : isKnownResponseId(pkw.ak);
+    const bool known =
+        direction == Direction::Request ? isKnownRequestId(pkw.ak) : isKnownResponseId(pkw.ak);
     if (known)
         return std::nullopt;
     return DecodeError{DecodeErrc::UnexpectedCommand, 0, pkw.ak,
@@ -233,22 +234,45 @@ void describePkwFields(const Pkw &pkw, std::size_t offset, const Options &option
                        std::vector<FieldSpan> &out)
 {
     const bool request = options.direction == Direction::Request;
-    out.push_back({"pkw.pke", offset, 2, 0, hexWord(pke(pkw)),
+    out.push_back({"pkw.pke",
+                   offset,
+                   2,
+                   0,
+                   hexWord(pke(pkw)),
                    {"parameter signature (PKE)", "Parameterkennung (PKE)"}});
     out.push_back({"pkw.ak", offset, 1, 1, std::to_string(pkw.ak),
                    request ? requestIdText(pkw.ak) : responseIdText(pkw.ak)});
     if (pkw.pkeSpare)
-        out.push_back({"pkw.pke_res", offset, 1, 1, "1",
+        out.push_back({"pkw.pke_res",
+                       offset,
+                       1,
+                       1,
+                       "1",
                        {"reserved PKE bit 11 is set", "reserviertes PKE-Bit 11 ist gesetzt"}});
-    out.push_back({"pkw.pnu", offset, 2, 1, std::to_string(pkw.pnu),
+    out.push_back({"pkw.pnu",
+                   offset,
+                   2,
+                   1,
+                   std::to_string(pkw.pnu),
                    {"parameter number (PNU)", "Parameternummer (PNU)"}});
-    out.push_back({"pkw.ind", offset + indOffset(options), 1, 0, std::to_string(pkw.ind),
+    out.push_back({"pkw.ind",
+                   offset + indOffset(options),
+                   1,
+                   0,
+                   std::to_string(pkw.ind),
                    {"block number (IND)", "Blocknummer (IND)"}});
-    out.push_back({"pkw.res", offset + resOffset(options), 1, 0, hexByte(pkw.res),
+    out.push_back({"pkw.res",
+                   offset + resOffset(options),
+                   1,
+                   0,
+                   hexByte(pkw.res),
                    {"reserved", "reserviert"}});
-    out.push_back({"pkw.pwe", offset + 4, 4, 0,
-                   hexWord(static_cast<std::uint16_t>(pkw.pwe >> 16))
-                       + hexWord(static_cast<std::uint16_t>(pkw.pwe)).substr(2),
+    out.push_back({"pkw.pwe",
+                   offset + 4,
+                   4,
+                   0,
+                   hexWord(static_cast<std::uint16_t>(pkw.pwe >> 16)) +
+                       hexWord(static_cast<std::uint16_t>(pkw.pwe)).substr(2),
                    {"parameter value (PWE)", "Parameterwert (PWE)"}});
     if (auto code = request ? std::nullopt : errorCode(pkw)) {
         out.push_back({"pkw.error", offset + 6, 2, 1, std::to_string(*code), pkwErrorText(*code)});
@@ -258,7 +282,11 @@ void describePkwFields(const Pkw &pkw, std::size_t offset, const Options &option
     if (!length)
         return;
     const auto [at, len] = valueSpan(*length);
-    out.push_back({"pkw.value", offset + at, len, 1, std::to_string(pweValue(pkw.pwe, *length)),
+    out.push_back({"pkw.value",
+                   offset + at,
+                   len,
+                   1,
+                   std::to_string(pweValue(pkw.pwe, *length)),
                    {"value (" + lengthWord(*length, false) + ")",
                     "Wert (" + lengthWord(*length, true) + ")"}});
 }

@@ -57,12 +57,12 @@ ParamLength paramLength(DataType type);
 // The PKW block as it sits on the wire; decode → encode reproduces every bit.
 struct Pkw
 {
-    std::uint8_t ak = 0;    // PKE bits 15..12: RequestId (master → slave) or ResponseId
-    bool pkeSpare = false;  // PKE bit 11 ("Res")
-    std::uint16_t pnu = 0;  // PKE bits 10..0: parameter number
-    std::uint8_t ind = 0;   // block number
-    std::uint8_t res = 0;   // reserved byte beside IND
-    std::uint32_t pwe = 0;  // bytes 4..7 big-endian: byte value = byte 7, word = bytes 6..7
+    std::uint8_t ak = 0;   // PKE bits 15..12: RequestId (master → slave) or ResponseId
+    bool pkeSpare = false; // PKE bit 11 ("Res")
+    std::uint16_t pnu = 0; // PKE bits 10..0: parameter number
+    std::uint8_t ind = 0;  // block number
+    std::uint8_t res = 0;  // reserved byte beside IND
+    std::uint32_t pwe = 0; // bytes 4..7 big-endian: byte value = byte 7, word = bytes 6..7
 
     bool operator==(const Pkw &) const = default;
 };
@@ -89,7 +89,8 @@ bool answers(const Pkw &response, const Pkw &request);
 // Encoding checks the fields fit (AK ≤ 15, PNU ≤ 0x7FF): BadValue otherwise.
 Result<Bytes, DecodeError> encodePkw(const Pkw &pkw, const Options &options = {});
 // Exactly 8 bytes; an AK the direction does not define is UnexpectedCommand.
-Result<Pkw, DecodeError> decodePkw(std::span<const std::uint8_t> bytes, const Options &options = {});
+Result<Pkw, DecodeError> decodePkw(std::span<const std::uint8_t> bytes,
+                                   const Options &options = {});
 
 // Rows for a PKW block that starts at `offset` of a larger telegram.
 void describePkwFields(const Pkw &pkw, std::size_t offset, const Options &options,

@@ -76,8 +76,9 @@ void describeWordBits(std::uint16_t word, std::size_t offset, bool control,
         if (!set && text.en == "reserved")
             continue;
         const std::size_t byte = bit < 8 ? offset + 1 : offset; // big-endian word
-        out.push_back({std::string(control ? "pzd.control.bit" : "pzd.status.bit") + std::to_string(bit),
-                       byte, 1, 1, set ? "1" : "0", text});
+        out.push_back(
+            {std::string(control ? "pzd.control.bit" : "pzd.status.bit") + std::to_string(bit),
+             byte, 1, 1, set ? "1" : "0", text});
     }
 }
 
@@ -86,21 +87,37 @@ void describePzdFields(const RawPzd &pzd, std::size_t offset, const Options &opt
 {
     const bool request = options.direction == Direction::Request;
     if (request)
-        out.push_back({"pzd.control_word", offset, 2, 0, wordValue(pzd.word),
+        out.push_back({"pzd.control_word",
+                       offset,
+                       2,
+                       0,
+                       wordValue(pzd.word),
                        {"control word (db_ControlWord)", "Steuerwort (db_ControlWord)"}});
     else
-        out.push_back({"pzd.status_word", offset, 2, 0, wordValue(pzd.word),
+        out.push_back({"pzd.status_word",
+                       offset,
+                       2,
+                       0,
+                       wordValue(pzd.word),
                        {"status word (db_StatusWord)", "Zustandswort (db_StatusWord)"}});
     describeWordBits(pzd.word, offset, request, out);
     const LocalText order = options.pzdWordOrder == WordOrder::HighWordFirst
                                 ? LocalText{"high word first", "High-Wort zuerst"}
                                 : LocalText{"low word first", "Low-Wort zuerst"};
     if (request)
-        out.push_back({"pzd.setpoint", offset + 2, 4, 0, std::to_string(pzd.value),
+        out.push_back({"pzd.setpoint",
+                       offset + 2,
+                       4,
+                       0,
+                       std::to_string(pzd.value),
                        {"set value (dpc_SetpointVal), " + order.en,
                         "Sollwert (dpc_SetpointVal), " + order.de}});
     else
-        out.push_back({"pzd.actual_value", offset + 2, 4, 0, std::to_string(pzd.value),
+        out.push_back({"pzd.actual_value",
+                       offset + 2,
+                       4,
+                       0,
+                       std::to_string(pzd.value),
                        {"actual value (dpc_ActualVal), " + order.en,
                         "Istwert (dpc_ActualVal), " + order.de}});
 }
@@ -114,7 +131,7 @@ LocalText pzdSummary(const RawPzd &pzd, Direction direction)
     return {"status word " + w + ", actual value " + v, "Zustandswort " + w + ", Istwert " + v};
 }
 
-template <typename Telegram, typename Pzd>
+template<typename Telegram, typename Pzd>
 Result<Telegram, DecodeError> decodeTelegramAs(std::span<const std::uint8_t> bytes,
                                                const Options &options, Direction direction,
                                                Pzd (*make)(const RawPzd &))
@@ -128,7 +145,8 @@ Result<Telegram, DecodeError> decodeTelegramAs(std::span<const std::uint8_t> byt
     std::size_t pzdAt = 0;
     if (*type == TelegramType::PkwAndPzd) {
         if (bytes.size() < kPkwSize)
-            return DecodeError{DecodeErrc::Truncated, bytes.size(), 0, "telegram type 1 needs 14 bytes"};
+            return DecodeError{DecodeErrc::Truncated, bytes.size(), 0,
+                               "telegram type 1 needs 14 bytes"};
         auto pkw = decodePkw(bytes.first(kPkwSize), o);
         if (!pkw.ok())
             return pkw.error();
@@ -155,8 +173,9 @@ PzdActual toActual(const RawPzd &raw)
     return {raw.word, raw.value};
 }
 
-template <typename Telegram>
-Result<Bytes, DecodeError> encodeTelegramAs(const Telegram &t, const RawPzd &raw, const Options &options)
+template<typename Telegram>
+Result<Bytes, DecodeError> encodeTelegramAs(const Telegram &t, const RawPzd &raw,
+                                            const Options &options)
 {
     Bytes out;
     if (t.pkw) {
@@ -182,7 +201,8 @@ Bytes encodePzd(const PzdActual &pzd, const Options &options)
     return encodeRaw({pzd.statusWord, pzd.actualValue}, options);
 }
 
-Result<PzdSetpoint, DecodeError> decodePzdSetpoint(std::span<const std::uint8_t> bytes, const Options &options)
+Result<PzdSetpoint, DecodeError> decodePzdSetpoint(std::span<const std::uint8_t> bytes,
+                                                   const Options &options)
 {
     auto raw = decodeRaw(bytes, options);
     if (!raw.ok())
@@ -190,7 +210,8 @@ Result<PzdSetpoint, DecodeError> decodePzdSetpoint(std::span<const std::uint8_t>
     return toSetpoint(*raw);
 }
 
-Result<PzdActual, DecodeError> decodePzdActual(std::span<const std::uint8_t> bytes, const Options &options)
+Result<PzdActual, DecodeError> decodePzdActual(std::span<const std::uint8_t> bytes,
+                                               const Options &options)
 {
     auto raw = decodeRaw(bytes, options);
     if (!raw.ok())
@@ -232,8 +253,9 @@ Description describeTelegram(std::span<const std::uint8_t> bytes, const Options 
     }
     const bool withPkw = *type == TelegramType::PkwAndPzd;
     d.fields.push_back({"telegram.type", 0, 0, 0, withPkw ? "1" : "2",
-                        withPkw ? LocalText{"telegram type 1 (PKW + PZD)", "Telegrammtyp 1 (PKW + PZD)"}
-                                : LocalText{"telegram type 2 (PZD only)", "Telegrammtyp 2 (nur PZD)"}});
+                        withPkw
+                            ? LocalText{"telegram type 1 (PKW + PZD)", "Telegrammtyp 1 (PKW + PZD)"}
+                            : LocalText{"telegram type 2 (PZD only)", "Telegrammtyp 2 (nur PZD)"}});
     LocalText summary;
     std::size_t pzdAt = 0;
     if (withPkw) {

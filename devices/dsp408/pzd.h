@@ -22,19 +22,19 @@ inline constexpr std::size_t kTelegram1Size = kPkwSize + kPzdSize;
 
 // ED1/SD1 manual §4.8.2 db_ControlWord (IND 0, PNU 37, PZD signal 001).
 namespace control {
-inline constexpr std::uint16_t kDisable = 1u << 0;           // D
-inline constexpr std::uint16_t kHoldEnable = 1u << 1;        // H
-inline constexpr std::uint16_t kDeviceModeActive = 1u << 2;  // M
-inline constexpr std::uint16_t kResetFault = 1u << 3;        // R
+inline constexpr std::uint16_t kDisable = 1u << 0;          // D
+inline constexpr std::uint16_t kHoldEnable = 1u << 1;       // H
+inline constexpr std::uint16_t kDeviceModeActive = 1u << 2; // M
+inline constexpr std::uint16_t kResetFault = 1u << 3;       // R
 inline constexpr std::uint16_t kStop = 1u << 14;
 } // namespace control
 
 // ED1/SD1 manual §4.8.3 db_StatusWord (IND 0, PNU 38, PZD signal 002).
 namespace status {
-inline constexpr std::uint16_t kDisable = 1u << 0;           // D
-inline constexpr std::uint16_t kHoldEnable = 1u << 1;        // H
-inline constexpr std::uint16_t kDeviceModeActive = 1u << 2;  // M
-inline constexpr std::uint16_t kReady = 1u << 3;             // R
+inline constexpr std::uint16_t kDisable = 1u << 0;          // D
+inline constexpr std::uint16_t kHoldEnable = 1u << 1;       // H
+inline constexpr std::uint16_t kDeviceModeActive = 1u << 2; // M
+inline constexpr std::uint16_t kReady = 1u << 3;            // R
 inline constexpr std::uint16_t kLocal = 1u << 4;
 inline constexpr std::uint16_t kWarning = 1u << 5;
 inline constexpr std::uint16_t kInTargetWindow = 1u << 12;
@@ -79,8 +79,10 @@ Result<PzdActual, DecodeError> decodePzdActual(std::span<const std::uint8_t> byt
                                                const Options &options = {});
 
 // Telegram type = 1 when `pkw` is set, else 2.
-Result<Bytes, DecodeError> encodeTelegram(const RequestTelegram &telegram, const Options &options = {});
-Result<Bytes, DecodeError> encodeTelegram(const ResponseTelegram &telegram, const Options &options = {});
+Result<Bytes, DecodeError> encodeTelegram(const RequestTelegram &telegram,
+                                          const Options &options = {});
+Result<Bytes, DecodeError> encodeTelegram(const ResponseTelegram &telegram,
+                                          const Options &options = {});
 // Telegram type from options.telegramType, else by length (14 → 1, 6 → 2).
 Result<RequestTelegram, DecodeError> decodeRequestTelegram(std::span<const std::uint8_t> bytes,
                                                            const Options &options = {});

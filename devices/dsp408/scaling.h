@@ -7,9 +7,9 @@
 namespace vt::dev::dsp408 {
 
 // ED1/SD1 manual §4.7.2–§4.7.4: fixed factors.
-inline constexpr double kFactSolCurrent = 1.78;        // mA per step
-inline constexpr double kFactPercentage = 97.65625;    // FactPercentage
-inline constexpr double kFactInterface = 0.009765625;  // V per step
+inline constexpr double kFactSolCurrent = 1.78;       // mA per step
+inline constexpr double kFactPercentage = 97.65625;   // FactPercentage
+inline constexpr double kFactInterface = 0.009765625; // V per step
 
 // ED1/SD1 manual §4.7.1: FactReference = maxReferenceValue × maxInterfaceRange /
 // (maxInterfaceValue × 4096); 0 when maxInterfaceValue is 0.

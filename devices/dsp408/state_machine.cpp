@@ -46,8 +46,7 @@ Step step(State current, std::uint16_t cw, std::uint16_t previousCw, const Input
     case State::Init:
     case State::Disabled:
     case State::Hold:
-    case State::DeviceModeActive:
-        break;
+    case State::DeviceModeActive: break;
     }
 
     // Operational states. TR_8 wins over everything the control word asks for.
@@ -77,8 +76,7 @@ Step step(State current, std::uint16_t cw, std::uint16_t previousCw, const Input
         if (!m)
             return {State::Hold, Transition::Tr5};
         break;
-    default:
-        break;
+    default: break;
     }
     return {current, Transition::None};
 }

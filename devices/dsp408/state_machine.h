@@ -88,7 +88,7 @@ Settled settle(State current, std::uint16_t controlWord, std::uint16_t previousC
 std::uint16_t statusBits(State state);
 
 // Texts (texts.cpp).
-const char *stateName(State state);            // "DEVICE_MODE_ACTIVE"
+const char *stateName(State state); // "DEVICE_MODE_ACTIVE"
 LocalText stateText(State state);
 const char *transitionName(Transition transition); // "TR_4"
 LocalText transitionText(Transition transition);

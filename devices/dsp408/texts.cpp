@@ -39,7 +39,9 @@ LocalText pkwErrorText(std::uint16_t code)
     switch (code) {
     case 0: return {"undefined PNU", "unzulässige Parameternummer (PNU)"};
     case 1: return {"parameter not changeable", "Parameterwert nicht änderbar"};
-    case 2: return {"lower or upper value range limit overflow", "untere oder obere Wertgrenze überschritten"};
+    case 2:
+        return {"lower or upper value range limit overflow",
+                "untere oder obere Wertgrenze überschritten"};
     case 5: return {"data type error", "falscher Datentyp"};
     case 18: return {"other error", "sonstiger Fehler"};
     default: {
@@ -54,11 +56,13 @@ LocalText controlBitText(int bit)
     switch (bit) {
     case 0: return {"Disable (D): state DISABLED", "Disable (D): Zustand DISABLED (gesperrt)"};
     case 1: return {"Hold enable (H): state HOLD", "Hold enable (H): Zustand HOLD (Halten)"};
-    case 2: return {"Device mode active (M): state DEVICE_MODE_ACTIVE",
-                    "Device mode active (M): Zustand DEVICE_MODE_ACTIVE (Gerätemodus aktiv)"};
+    case 2:
+        return {"Device mode active (M): state DEVICE_MODE_ACTIVE",
+                "Device mode active (M): Zustand DEVICE_MODE_ACTIVE (Gerätemodus aktiv)"};
     case 3: return {"Reset fault (R)", "Fehler quittieren (R)"};
-    case 14: return {"Stop: the axis stays controlled in its current position",
-                     "Stopp: die Achse bleibt in der aktuellen Position geregelt"};
+    case 14:
+        return {"Stop: the axis stays controlled in its current position",
+                "Stopp: die Achse bleibt in der aktuellen Position geregelt"};
     default: return {"reserved", "reserviert"};
     }
 }
@@ -96,15 +100,19 @@ LocalText stateText(State state)
 {
     switch (state) {
     case State::NotReady: return {"not ready: self test running", "nicht bereit: Selbsttest läuft"};
-    case State::Init: return {"initialisation: device functions disabled",
-                              "Initialisierung: Gerätefunktionen gesperrt"};
-    case State::Disabled: return {"disabled: device modes can be set",
-                                  "gesperrt: Gerätemodi können eingestellt werden"};
-    case State::Hold: return {"hold: last set value stays active", "Halten: letzter Sollwert bleibt aktiv"};
+    case State::Init:
+        return {"initialisation: device functions disabled",
+                "Initialisierung: Gerätefunktionen gesperrt"};
+    case State::Disabled:
+        return {"disabled: device modes can be set",
+                "gesperrt: Gerätemodi können eingestellt werden"};
+    case State::Hold:
+        return {"hold: last set value stays active", "Halten: letzter Sollwert bleibt aktiv"};
     case State::DeviceModeActive: return {"device mode active", "Gerätemodus aktiv"};
     case State::FaultReaction: return {"fault reaction running", "Fehlerreaktion läuft"};
     case State::FaultHold: return {"fault, hold set value active", "Fehler, Halte-Sollwert aktiv"};
-    case State::Fault: return {"fault: device functions disabled", "Fehler: Gerätefunktionen gesperrt"};
+    case State::Fault:
+        return {"fault: device functions disabled", "Fehler: Gerätefunktionen gesperrt"};
     }
     return {"unknown state", "unbekannter Zustand"};
 }
@@ -135,25 +143,35 @@ LocalText transitionText(Transition transition)
 {
     switch (transition) {
     case Transition::None: return {"no transition", "kein Übergang"};
-    case Transition::Tr0: return {"supply voltage switched on", "Versorgungsspannung eingeschaltet"};
-    case Transition::Tr1: return {"device initialisation completed", "Geräteinitialisierung abgeschlossen"};
+    case Transition::Tr0:
+        return {"supply voltage switched on", "Versorgungsspannung eingeschaltet"};
+    case Transition::Tr1:
+        return {"device initialisation completed", "Geräteinitialisierung abgeschlossen"};
     case Transition::Tr2: return {"bit \"Disable\" active", "Bit \"Disable\" aktiv"};
     case Transition::Tr3: return {"bit \"Hold enable\" active", "Bit \"Hold enable\" aktiv"};
-    case Transition::Tr4: return {"bit \"Device mode active enable\" active",
-                                  "Bit \"Device mode active enable\" aktiv"};
-    case Transition::Tr5: return {"bit \"Device mode active enable\" not active",
-                                  "Bit \"Device mode active enable\" nicht aktiv"};
-    case Transition::Tr6: return {"bit \"Hold enable\" not active", "Bit \"Hold enable\" nicht aktiv"};
+    case Transition::Tr4:
+        return {"bit \"Device mode active enable\" active",
+                "Bit \"Device mode active enable\" aktiv"};
+    case Transition::Tr5:
+        return {"bit \"Device mode active enable\" not active",
+                "Bit \"Device mode active enable\" nicht aktiv"};
+    case Transition::Tr6:
+        return {"bit \"Hold enable\" not active", "Bit \"Hold enable\" nicht aktiv"};
     case Transition::Tr7: return {"bit \"Disable\" not active", "Bit \"Disable\" nicht aktiv"};
     case Transition::Tr8: return {"error present", "Fehler liegt an"};
-    case Transition::Tr9: return {"error reaction completed (HOLD active)",
-                                  "Fehlerreaktion abgeschlossen (HOLD aktiv)"};
-    case Transition::Tr10: return {"error reset, back to DISABLED", "Fehler quittiert, zurück nach DISABLED"};
-    case Transition::Tr11: return {"error reset, back to HOLD", "Fehler quittiert, zurück nach HOLD"};
-    case Transition::Tr12: return {"error reaction completed (DISABLED active)",
-                                   "Fehlerreaktion abgeschlossen (DISABLED aktiv)"};
-    case Transition::Tr567: return {"forced back to INIT (enable input off or communication)",
-                                    "erzwungen zurück nach INIT (Freigabe-Eingang aus oder Kommunikation)"};
+    case Transition::Tr9:
+        return {"error reaction completed (HOLD active)",
+                "Fehlerreaktion abgeschlossen (HOLD aktiv)"};
+    case Transition::Tr10:
+        return {"error reset, back to DISABLED", "Fehler quittiert, zurück nach DISABLED"};
+    case Transition::Tr11:
+        return {"error reset, back to HOLD", "Fehler quittiert, zurück nach HOLD"};
+    case Transition::Tr12:
+        return {"error reaction completed (DISABLED active)",
+                "Fehlerreaktion abgeschlossen (DISABLED aktiv)"};
+    case Transition::Tr567:
+        return {"forced back to INIT (enable input off or communication)",
+                "erzwungen zurück nach INIT (Freigabe-Eingang aus oder Kommunikation)"};
     }
     return {"unknown transition", "unbekannter Übergang"};
 }

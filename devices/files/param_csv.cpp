@@ -33,7 +33,10 @@ std::string localNumber(double raw, Language lang)
     return s;
 }
 
-bool displayable(double v) { return std::isfinite(v) && std::fabs(v) <= kDisplayLimit; }
+bool displayable(double v)
+{
+    return std::isfinite(v) && std::fabs(v) <= kDisplayLimit;
+}
 
 struct Cells
 {
@@ -43,7 +46,8 @@ struct Cells
 Cells cellsFor(const ValueRow &row, const ParamMeta *meta, Language lang)
 {
     Cells c;
-    c.raw = isText(row.raw) ? std::get<std::string>(row.raw) : localNumber(rawNumber(row.raw), lang);
+    c.raw =
+        isText(row.raw) ? std::get<std::string>(row.raw) : localNumber(rawNumber(row.raw), lang);
     if (!meta || meta->isString() != isText(row.raw)) {
         c.value = row.display; // no dictionary row fits: what the file says, for people
         if (meta)
@@ -62,19 +66,27 @@ Cells cellsFor(const ValueRow &row, const ParamMeta *meta, Language lang)
     c.unit = meta->unit;
     const double v = rawNumber(row.raw);
     if (displayable(v)) {
-        const EnumLabel *e = v == std::floor(v) ? meta->findEnum(static_cast<std::int64_t>(v)) : nullptr;
+        const EnumLabel *e =
+            v == std::floor(v) ? meta->findEnum(static_cast<std::int64_t>(v)) : nullptr;
         c.value = e ? e->text.in(lang) : formatNumber(*meta, v, lang);
     }
     const bool typeRange = meta->min <= typeMin(meta->type) && meta->max >= typeMax(meta->type);
     if (!(meta->isFloat() && typeRange) && displayable(meta->min) && displayable(meta->max))
-        c.range = formatNumber(*meta, meta->min, lang) + " … " + formatNumber(*meta, meta->max, lang);
+        c.range =
+            formatNumber(*meta, meta->min, lang) + " … " + formatNumber(*meta, meta->max, lang);
     return c;
 }
 
 } // namespace
 
-char csvSeparator(Language lang) { return lang == Language::German ? ';' : ','; }
-char csvDecimalSign(Language lang) { return lang == Language::German ? ',' : '.'; }
+char csvSeparator(Language lang)
+{
+    return lang == Language::German ? ';' : ',';
+}
+char csvDecimalSign(Language lang)
+{
+    return lang == Language::German ? ',' : '.';
+}
 
 std::string csvField(const std::string &text, char separator)
 {
@@ -85,8 +97,9 @@ std::string csvField(const std::string &text, char separator)
         if (first == '=' || first == '+' || first == '@' || first == '\t' || dashWord)
             s.insert(0, 1, '\'');
     }
-    const bool quote = s.find_first_of(std::string{separator, '"', '\r', '\n'}) != std::string::npos ||
-                       (!s.empty() && (s.front() == ' ' || s.back() == ' ' || s.front() == '#'));
+    const bool quote =
+        s.find_first_of(std::string{separator, '"', '\r', '\n'}) != std::string::npos ||
+        (!s.empty() && (s.front() == ' ' || s.back() == ' ' || s.front() == '#'));
     if (!quote)
         return s;
     std::string out = "\"";
@@ -104,9 +117,12 @@ std::string exportCsv(const ModuleRecord &record, const Dictionary *dict, const 
     const bool de = lang == Language::German;
     const char sep = csvSeparator(lang);
     std::string out = options.byteOrderMark ? "\xEF\xBB\xBF" : "";
-    out += de ? "# ValveTune-Parameterexport. Trennzeichen: Semikolon. Dezimalzeichen: Komma. Kodierung: UTF-8.\r\n"
-              : "# ValveTune parameter export. Separator: comma. Decimal sign: point. Encoding: UTF-8.\r\n";
-    std::string module = (de ? "# Modul " : "# Module ") + std::to_string(record.address) + ": " + record.family;
+    out += de ? "# ValveTune-Parameterexport. Trennzeichen: Semikolon. Dezimalzeichen: Komma. "
+                "Kodierung: UTF-8.\r\n"
+              : "# ValveTune parameter export. Separator: comma. Decimal sign: point. Encoding: "
+                "UTF-8.\r\n";
+    std::string module =
+        (de ? "# Modul " : "# Module ") + std::to_string(record.address) + ": " + record.family;
     if (!record.version.empty())
         module += ". Version " + record.version;
     if (!record.mode.empty())
@@ -116,7 +132,8 @@ std::string exportCsv(const ModuleRecord &record, const Dictionary *dict, const 
     out += commentSafe(module, sep) + "\r\n";
 
     const std::vector<std::string> header =
-        de ? std::vector<std::string>{"Name", "Bezeichnung", "Wert", "Einheit", "Rohwert", "Bereich", "Zugriff"}
+        de ? std::vector<std::string>{"Name",    "Bezeichnung", "Wert",   "Einheit",
+                                      "Rohwert", "Bereich",     "Zugriff"}
            : std::vector<std::string>{"Name", "Label", "Value", "Unit", "Raw", "Range", "Access"};
     for (std::size_t i = 0; i < header.size(); ++i)
         out += (i ? std::string(1, sep) : std::string()) + header[i];
@@ -125,7 +142,8 @@ std::string exportCsv(const ModuleRecord &record, const Dictionary *dict, const 
     for (const ValueRow &row : record.values) {
         const ParamMeta *meta = dict ? findMeta(*dict, row) : nullptr;
         const Cells c = cellsFor(row, meta, lang);
-        for (const std::string *field : {&row.name, &c.label, &c.value, &c.unit, &c.raw, &c.range, &c.access}) {
+        for (const std::string *field :
+             {&row.name, &c.label, &c.value, &c.unit, &c.raw, &c.range, &c.access}) {
             if (field != &row.name)
                 out += sep;
             out += csvField(*field, sep);

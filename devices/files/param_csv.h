@@ -28,6 +28,7 @@ char csvDecimalSign(Language lang); // '.' / ','
 std::string csvField(const std::string &text, char separator);
 
 // `dict` may be null (no labels, units, ranges; rows as the file holds them). Lines end in CRLF.
-std::string exportCsv(const ModuleRecord &record, const Dictionary *dict, const CsvOptions &options = {});
+std::string exportCsv(const ModuleRecord &record, const Dictionary *dict,
+                      const CsvOptions &options = {});
 
 } // namespace vt::dev::files

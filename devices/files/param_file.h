@@ -10,10 +10,9 @@
 #include "dict/dictionary.h"
 #include "dict/raw_value.h"
 
-#include <nlohmann/json.hpp>
-
 #include <chrono>
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -88,8 +87,8 @@ struct FileError
 {
     FileErrc code = FileErrc::Syntax;
     LocalText message;
-    std::string location;   // JSON pointer of the offending value ("/modules/0/values/3/raw")
-    std::size_t line = 0;   // Syntax, TooDeep: where in the text (1-based); else 0
+    std::string location; // JSON pointer of the offending value ("/modules/0/values/3/raw")
+    std::size_t line = 0; // Syntax, TooDeep: where in the text (1-based); else 0
     std::size_t column = 0;
 
     // "/modules/0/values/3/raw: \"raw\" must be a number or a text, not boolean",

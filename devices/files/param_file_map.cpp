@@ -39,14 +39,16 @@ std::string addressOf(const ParamMeta &meta)
 LocalText notApplicable(const ParamMeta &meta, const std::string &major, const std::string &mode)
 {
     if (!meta.versions.empty() && !major.empty() && !contains(meta.versions, major))
-        return {meta.name + " exists only in software version " + joined(meta.versions) + ", not in V" + major,
-                meta.name + " gibt es nur in Softwareversion " + joined(meta.versions) + ", nicht in V" + major};
+        return {meta.name + " exists only in software version " + joined(meta.versions) +
+                    ", not in V" + major,
+                meta.name + " gibt es nur in Softwareversion " + joined(meta.versions) +
+                    ", nicht in V" + major};
     return {meta.name + " applies only in mode " + joined(meta.modes) + ", not in mode " + mode,
             meta.name + " gilt nur in Modus " + joined(meta.modes) + ", nicht in Modus " + mode};
 }
 
-RowMapping classify(const ValueRow &row, const ParamMeta &meta, bool byAddress, const std::string &family,
-                    const std::string &major, const std::string &mode)
+RowMapping classify(const ValueRow &row, const ParamMeta &meta, bool byAddress,
+                    const std::string &family, const std::string &major, const std::string &mode)
 {
     RowMapping out{MapStatus::Mapped, 0, row.name, &meta, {}};
     if (!meta.appliesTo(major, mode)) {
@@ -57,16 +59,20 @@ RowMapping classify(const ValueRow &row, const ParamMeta &meta, bool byAddress, 
     if (meta.isString() != isText(row.raw)) {
         out.status = MapStatus::TypeMismatch;
         out.reason = meta.isString()
-                         ? LocalText{meta.name + " holds a text; the file has a number", meta.name + " enthält einen Text; die Datei hat eine Zahl"}
-                         : LocalText{meta.name + " holds a number; the file has a text", meta.name + " enthält eine Zahl; die Datei hat einen Text"};
+                         ? LocalText{meta.name + " holds a text; the file has a number",
+                                     meta.name + " enthält einen Text; die Datei hat eine Zahl"}
+                         : LocalText{meta.name + " holds a number; the file has a text",
+                                     meta.name + " enthält eine Zahl; die Datei hat einen Text"};
         return out;
     }
     if (meta.isString()) {
         const std::size_t size = std::get<std::string>(row.raw).size();
         if (meta.length > 0 && size > static_cast<std::size_t>(meta.length)) {
             out.status = MapStatus::OutOfRange;
-            out.reason = {meta.name + ": the text has " + std::to_string(size) + " bytes, the row holds " + std::to_string(meta.length),
-                          meta.name + ": der Text hat " + std::to_string(size) + " Bytes, die Zeile fasst " + std::to_string(meta.length)};
+            out.reason = {meta.name + ": the text has " + std::to_string(size) +
+                              " bytes, the row holds " + std::to_string(meta.length),
+                          meta.name + ": der Text hat " + std::to_string(size) +
+                              " Bytes, die Zeile fasst " + std::to_string(meta.length)};
             return out;
         }
     } else {
@@ -89,31 +95,38 @@ RowMapping classify(const ValueRow &row, const ParamMeta &meta, bool byAddress, 
     }
     if (byAddress) {
         out.status = MapStatus::MappedByAddress;
-        out.reason = {row.name + " is named " + meta.name + " in " + family + " (same " + addressOf(meta) + ")",
-                      row.name + " heißt in " + family + " " + meta.name + " (gleiche " + addressOf(meta) + ")"};
+        out.reason = {row.name + " is named " + meta.name + " in " + family + " (same " +
+                          addressOf(meta) + ")",
+                      row.name + " heißt in " + family + " " + meta.name + " (gleiche " +
+                          addressOf(meta) + ")"};
     }
     return out;
 }
 
-void moduleNotes(MapReport &report, const ModuleRecord &record, const Dictionary &dict, const MapTarget &t,
-                 const std::string &major, bool explicitTarget)
+void moduleNotes(MapReport &report, const ModuleRecord &record, const Dictionary &dict,
+                 const MapTarget &t, const std::string &major, bool explicitTarget)
 {
     if (record.family != dict.family)
-        report.notes.push_back({"the file was written for " + record.family + "; its values are mapped onto " + dict.family,
-                                "die Datei wurde für " + record.family + " geschrieben; ihre Werte werden auf " + dict.family +
+        report.notes.push_back({"the file was written for " + record.family +
+                                    "; its values are mapped onto " + dict.family,
+                                "die Datei wurde für " + record.family +
+                                    " geschrieben; ihre Werte werden auf " + dict.family +
                                     " abgebildet"});
     if (explicitTarget && (versionMajor(record.version) != major || record.mode != t.mode))
         report.notes.push_back(
-            {"the file was saved from version " + record.version + " in mode " + record.mode + "; this module runs " +
-                 t.version + " in mode " + t.mode,
-             "die Datei stammt von Version " + record.version + " in Modus " + record.mode + "; dieses Modul hat " +
-                 t.version + " in Modus " + t.mode});
+            {"the file was saved from version " + record.version + " in mode " + record.mode +
+                 "; this module runs " + t.version + " in mode " + t.mode,
+             "die Datei stammt von Version " + record.version + " in Modus " + record.mode +
+                 "; dieses Modul hat " + t.version + " in Modus " + t.mode});
     if (!major.empty() && !dict.versions.empty() && !contains(dict.versions, major))
-        report.notes.push_back({dict.family + " describes software version " + joined(dict.versions) + ", not V" + major,
-                                dict.family + " beschreibt Softwareversion " + joined(dict.versions) + ", nicht V" + major});
+        report.notes.push_back({dict.family + " describes software version " +
+                                    joined(dict.versions) + ", not V" + major,
+                                dict.family + " beschreibt Softwareversion " +
+                                    joined(dict.versions) + ", nicht V" + major});
     if (!t.mode.empty() && !dict.modes.empty() && !contains(dict.modes, t.mode))
-        report.notes.push_back({dict.family + " describes mode " + joined(dict.modes) + ", not mode " + t.mode,
-                                dict.family + " beschreibt Modus " + joined(dict.modes) + ", nicht Modus " + t.mode});
+        report.notes.push_back(
+            {dict.family + " describes mode " + joined(dict.modes) + ", not mode " + t.mode,
+             dict.family + " beschreibt Modus " + joined(dict.modes) + ", nicht Modus " + t.mode});
 }
 
 } // namespace
@@ -134,7 +147,8 @@ const ParamMeta *findMeta(const Dictionary &dict, const ValueRow &row, bool *byA
     return p;
 }
 
-MapReport mapModule(const ModuleRecord &record, const Dictionary &dict, const std::optional<MapTarget> &target)
+MapReport mapModule(const ModuleRecord &record, const Dictionary &dict,
+                    const std::optional<MapTarget> &target)
 {
     MapReport report;
     report.family = dict.family;
@@ -161,13 +175,22 @@ MapReport mapModule(const ModuleRecord &record, const Dictionary &dict, const st
             if (meta && taken.insert(meta).second) {
                 m = classify(row, *meta, true, dict.family, major, t.mode);
             } else if (meta) {
-                m = {MapStatus::Unknown, 0, row.name, nullptr,
-                     {row.name + ": its " + addressOf(*meta) + " belongs to " + meta->name + ", which the file sets as well",
-                      row.name + ": die " + addressOf(*meta) + " gehört zu " + meta->name + ", das die Datei ebenfalls setzt"}};
+                m = {MapStatus::Unknown,
+                     0,
+                     row.name,
+                     nullptr,
+                     {row.name + ": its " + addressOf(*meta) + " belongs to " + meta->name +
+                          ", which the file sets as well",
+                      row.name + ": die " + addressOf(*meta) + " gehört zu " + meta->name +
+                          ", das die Datei ebenfalls setzt"}};
             } else {
-                m = {MapStatus::Unknown, 0, row.name, nullptr,
+                m = {MapStatus::Unknown,
+                     0,
+                     row.name,
+                     nullptr,
                      {row.name + " is not in " + dict.family + ": kept in the file, not applied",
-                      row.name + " ist nicht in " + dict.family + ": bleibt in der Datei, wird nicht übernommen"}};
+                      row.name + " ist nicht in " + dict.family +
+                          ": bleibt in der Datei, wird nicht übernommen"}};
             }
         }
         m.row = i;
@@ -176,7 +199,10 @@ MapReport mapModule(const ModuleRecord &record, const Dictionary &dict, const st
     for (const ParamMeta &p : dict.params) {
         if (p.access != Access::ReadWrite || !p.appliesTo(major, t.mode) || taken.count(&p))
             continue;
-        report.rows.push_back({MapStatus::Missing, RowMapping::kNoRow, p.name, &p,
+        report.rows.push_back({MapStatus::Missing,
+                               RowMapping::kNoRow,
+                               p.name,
+                               &p,
                                {p.name + " is not in the file: the module keeps its value",
                                 p.name + " fehlt in der Datei: das Modul behält seinen Wert"}});
     }
@@ -185,12 +211,15 @@ MapReport mapModule(const ModuleRecord &record, const Dictionary &dict, const st
 
 std::size_t MapReport::count(MapStatus status) const
 {
-    return static_cast<std::size_t>(std::count_if(rows.begin(), rows.end(), [&](const RowMapping &r) { return r.status == status; }));
+    return static_cast<std::size_t>(std::count_if(
+        rows.begin(), rows.end(), [&](const RowMapping &r) { return r.status == status; }));
 }
 
 bool MapReport::clean() const
 {
-    return notes.empty() && std::all_of(rows.begin(), rows.end(), [](const RowMapping &r) { return r.status == MapStatus::Mapped; });
+    return notes.empty() && std::all_of(rows.begin(), rows.end(), [](const RowMapping &r) {
+               return r.status == MapStatus::Mapped;
+           });
 }
 
 std::vector<const RowMapping *> MapReport::problems() const
@@ -219,8 +248,9 @@ LocalText statusText(MapStatus status)
 LocalText MapReport::summary() const
 {
     LocalText out;
-    for (MapStatus s : {MapStatus::Mapped, MapStatus::MappedByAddress, MapStatus::Unknown, MapStatus::OutOfRange,
-                        MapStatus::NotApplicable, MapStatus::TypeMismatch, MapStatus::Missing}) {
+    for (MapStatus s :
+         {MapStatus::Mapped, MapStatus::MappedByAddress, MapStatus::Unknown, MapStatus::OutOfRange,
+          MapStatus::NotApplicable, MapStatus::TypeMismatch, MapStatus::Missing}) {
         const std::size_t n = count(s);
         if (n == 0 && s != MapStatus::Mapped)
             continue;

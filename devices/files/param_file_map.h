@@ -2,7 +2,8 @@
 // opens with a clear report of what did not map). Every file row gets a status and, unless it
 // mapped plainly, a reason in both languages; dictionary rows the file does not set are listed
 // too. The report is what the GUI's "what did not map" dialog and the CLI print. Pure, any
-// thread; the report points into the dictionary, which must outlive it (builtinDictionaries() does).
+// thread; the report points into the dictionary, which must outlive it (builtinDictionaries()
+// does).
 #pragma once
 
 #include "core/local_text.h"
@@ -18,12 +19,14 @@ namespace vt::dev::files {
 
 enum class MapStatus {
     Mapped,          // same name: the value applies
-    MappedByAddress, // name unknown here, same ID (HCS) or IND/PNU/instance (Wandfluh): applies, reported
+    MappedByAddress, // name unknown here, same ID (HCS) or IND/PNU/instance (Wandfluh): applies,
+                     // reported
     Unknown,         // not in this dictionary: kept in the file, not applied
     OutOfRange,      // outside the row's raw range (or a string longer than the row)
     NotApplicable,   // the row exists but not for this module's version or mode
-    TypeMismatch,    // text for a number row, a number for a text row, a fraction for a whole-number row
-    Missing,         // a read/write row of the dictionary the file does not set
+    TypeMismatch, // text for a number row, a number for a text row, a fraction for a whole-number
+                  // row
+    Missing,      // a read/write row of the dictionary the file does not set
 };
 
 struct RowMapping
@@ -36,7 +39,10 @@ struct RowMapping
     const ParamMeta *meta = nullptr; // the dictionary row, when there is one
     LocalText reason;                // empty for Mapped
 
-    bool applies() const { return status == MapStatus::Mapped || status == MapStatus::MappedByAddress; }
+    bool applies() const
+    {
+        return status == MapStatus::Mapped || status == MapStatus::MappedByAddress;
+    }
 };
 
 // The module the file is opened against; defaults to what the record itself says.
@@ -48,9 +54,9 @@ struct MapTarget
 
 struct MapReport
 {
-    std::string family;            // the dictionary mapped onto
-    std::vector<LocalText> notes;  // module level: other family, version or mode than the file's
-    std::vector<RowMapping> rows;  // file rows in file order, then Missing rows in dictionary order
+    std::string family;           // the dictionary mapped onto
+    std::vector<LocalText> notes; // module level: other family, version or mode than the file's
+    std::vector<RowMapping> rows; // file rows in file order, then Missing rows in dictionary order
 
     std::size_t count(MapStatus status) const;
     // Everything applies and nothing is missing, and no module-level note.

@@ -24,7 +24,8 @@ struct Failure
     throw Failure{{code, std::move(message), std::move(location), 0, 0}};
 }
 
-[[noreturn]] void failAt(FileErrc code, std::string_view text, std::size_t offset, LocalText message)
+[[noreturn]] void failAt(FileErrc code, std::string_view text, std::size_t offset,
+                         LocalText message)
 {
     FileError e{code, std::move(message), {}, 1, 1};
     for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
@@ -58,8 +59,8 @@ void checkDepth(std::string_view text)
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxDepth)
                 failAt(FileErrc::TooDeep, text, i,
-                     {"nested deeper than " + std::to_string(kMaxDepth) + " levels",
-                      "tiefer als " + std::to_string(kMaxDepth) + " Ebenen verschachtelt"});
+                       {"nested deeper than " + std::to_string(kMaxDepth) + " levels",
+                        "tiefer als " + std::to_string(kMaxDepth) + " Ebenen verschachtelt"});
         } else if (c == ']' || c == '}') {
             --depth;
         }
@@ -78,8 +79,8 @@ std::string typeNameDe(const Json &j)
     }
 }
 
-[[noreturn]] void wrongType(const std::string &where, const std::string &key, const char *en, const char *de,
-                            const Json &found)
+[[noreturn]] void wrongType(const std::string &where, const std::string &key, const char *en,
+                            const char *de, const Json &found)
 {
     fail(FileErrc::WrongType, where + "/" + key,
          {"\"" + key + "\" must be " + en + ", not " + found.type_name(),
@@ -105,7 +106,8 @@ public:
     {
         const Json *j = get(key);
         if (!j)
-            fail(FileErrc::MissingKey, m_where, {"\"" + key + "\" is missing", "\"" + key + "\" fehlt"});
+            fail(FileErrc::MissingKey, m_where,
+                 {"\"" + key + "\" is missing", "\"" + key + "\" fehlt"});
         return *j;
     }
 
@@ -119,7 +121,8 @@ public:
         return j->get<std::string>();
     }
 
-    std::optional<std::int64_t> integer(const std::string &key, std::int64_t min, std::int64_t max, bool required = false)
+    std::optional<std::int64_t> integer(const std::string &key, std::int64_t min, std::int64_t max,
+                                        bool required = false)
     {
         const Json *j = required ? &require(key) : get(key);
         if (!j)
@@ -127,20 +130,24 @@ public:
         if (!j->is_number_integer())
             wrongType(m_where, key, "a whole number", "eine ganze Zahl", *j);
         // The JSON parser holds every non-negative integer as unsigned.
-        const bool fits = j->is_number_unsigned()
-                              ? max >= 0 && j->get<std::uint64_t>() <= static_cast<std::uint64_t>(max) &&
-                                    (min <= 0 || j->get<std::uint64_t>() >= static_cast<std::uint64_t>(min))
-                              : j->get<std::int64_t>() >= min && j->get<std::int64_t>() <= max;
+        const bool fits =
+            j->is_number_unsigned()
+                ? max >= 0 && j->get<std::uint64_t>() <= static_cast<std::uint64_t>(max) &&
+                      (min <= 0 || j->get<std::uint64_t>() >= static_cast<std::uint64_t>(min))
+                : j->get<std::int64_t>() >= min && j->get<std::int64_t>() <= max;
         if (!fits)
-            fail(FileErrc::BadValue, m_where + "/" + key,
-                 {"\"" + key + "\" must lie in " + std::to_string(min) + " … " + std::to_string(max),
-                  "\"" + key + "\" muss in " + std::to_string(min) + " … " + std::to_string(max) + " liegen"});
+            fail(
+                FileErrc::BadValue, m_where + "/" + key,
+                {"\"" + key + "\" must lie in " + std::to_string(min) + " … " + std::to_string(max),
+                 "\"" + key + "\" muss in " + std::to_string(min) + " … " + std::to_string(max) +
+                     " liegen"});
         return j->get<std::int64_t>();
     }
 
     std::optional<int> smallInt(const std::string &key)
     {
-        const auto v = integer(key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+        const auto v =
+            integer(key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
         return v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
     }
 
@@ -176,11 +183,14 @@ RawValue readRaw(const Json &j, const std::string &where)
     if (j.is_string())
         return j.get<std::string>();
     if (j.is_number_integer()) {
-        const bool exact = j.is_number_unsigned() ? j.get<std::uint64_t>() <= static_cast<std::uint64_t>(kExactInteger)
-                                                  : j.get<std::int64_t>() >= -kExactInteger && j.get<std::int64_t>() <= kExactInteger;
+        const bool exact =
+            j.is_number_unsigned()
+                ? j.get<std::uint64_t>() <= static_cast<std::uint64_t>(kExactInteger)
+                : j.get<std::int64_t>() >= -kExactInteger && j.get<std::int64_t>() <= kExactInteger;
         if (!exact)
             fail(FileErrc::BadValue, where,
-                 {"the whole number is too large to keep exactly", "die ganze Zahl ist zu groß, um sie genau zu halten"});
+                 {"the whole number is too large to keep exactly",
+                  "die ganze Zahl ist zu groß, um sie genau zu halten"});
         return j.get<double>();
     }
     if (j.is_number_float())
@@ -194,7 +204,8 @@ RawValue readRaw(const Json &j, const std::string &where)
         if (s == "-Infinity")
             return -HUGE_VAL;
         fail(FileErrc::BadValue, where + "/number",
-             {"\"number\" must be NaN, Infinity or -Infinity", "\"number\" muss NaN, Infinity oder -Infinity sein"});
+             {"\"number\" must be NaN, Infinity or -Infinity",
+              "\"number\" muss NaN, Infinity oder -Infinity sein"});
     }
     fail(FileErrc::WrongType, where,
          {std::string("\"raw\" must be a number or a text, not ") + j.type_name(),
@@ -205,7 +216,8 @@ void requireObject(const Json &j, const std::string &where, const char *en, cons
 {
     if (!j.is_object())
         fail(FileErrc::WrongType, where,
-             {std::string(en) + " must be an object, not " + j.type_name(), std::string(de) + " muss ein Objekt sein, nicht " + typeNameDe(j)});
+             {std::string(en) + " must be an object, not " + j.type_name(),
+              std::string(de) + " muss ein Objekt sein, nicht " + typeNameDe(j)});
 }
 
 ValueRow readRow(const Json &j, const std::string &where)
@@ -215,7 +227,8 @@ ValueRow readRow(const Json &j, const std::string &where)
     ValueRow row;
     row.name = f.text("name", true);
     if (row.name.empty())
-        fail(FileErrc::BadValue, where + "/name", {"the row has no name", "die Zeile hat keinen Namen"});
+        fail(FileErrc::BadValue, where + "/name",
+             {"the row has no name", "die Zeile hat keinen Namen"});
     row.id = f.smallInt("id");
     row.ind = f.smallInt("ind");
     row.pnu = f.smallInt("pnu");
@@ -234,7 +247,8 @@ ModuleRecord readModule(const Json &j, const std::string &where)
     m.address = static_cast<int>(*f.integer("address", 0, 255, true));
     m.family = f.text("family", true);
     if (m.family.empty())
-        fail(FileErrc::BadValue, where + "/family", {"the module names no family", "das Modul nennt keine Familie"});
+        fail(FileErrc::BadValue, where + "/family",
+             {"the module names no family", "das Modul nennt keine Familie"});
     m.version = f.text("version");
     m.mode = f.text("mode");
     m.label = f.text("label");
@@ -257,9 +271,10 @@ ModuleRecord readModule(const Json &j, const std::string &where)
 ParamFile readFile(std::string_view text)
 {
     if (text.size() > kMaxFileBytes)
-        fail(FileErrc::TooLarge, {},
-             {"the file is larger than " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB",
-              "die Datei ist größer als " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB"});
+        fail(
+            FileErrc::TooLarge, {},
+            {"the file is larger than " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB",
+             "die Datei ist größer als " + std::to_string(kMaxFileBytes / (1024 * 1024)) + " MiB"});
     checkDepth(text);
     Json doc;
     try {
@@ -267,24 +282,30 @@ ParamFile readFile(std::string_view text)
     } catch (const Json::parse_error &e) {
         const std::size_t at = e.byte > 0 ? static_cast<std::size_t>(e.byte - 1) : 0;
         failAt(FileErrc::Syntax, text, at,
-             {"not a valid JSON text (the file is damaged or truncated)",
-              "kein gültiger JSON-Text (die Datei ist beschädigt oder abgeschnitten)"});
+               {"not a valid JSON text (the file is damaged or truncated)",
+                "kein gültiger JSON-Text (die Datei ist beschädigt oder abgeschnitten)"});
     }
     if (!doc.is_object() || !doc.contains("format") || doc["format"] != kFormatName)
-        fail(FileErrc::NotAParamFile, {},
-             {"not a ValveTune parameter file (no \"format\": \"" + std::string(kFormatName) + "\")",
-              "keine ValveTune-Parameterdatei (kein \"format\": \"" + std::string(kFormatName) + "\")"});
+        fail(
+            FileErrc::NotAParamFile, {},
+            {"not a ValveTune parameter file (no \"format\": \"" + std::string(kFormatName) + "\")",
+             "keine ValveTune-Parameterdatei (kein \"format\": \"" + std::string(kFormatName) +
+                 "\")"});
     Fields f(doc, {});
     (void)f.get("format");
-    const std::int64_t version = *f.integer("formatVersion", 0, std::numeric_limits<std::int64_t>::max(), true);
+    const std::int64_t version =
+        *f.integer("formatVersion", 0, std::numeric_limits<std::int64_t>::max(), true);
     if (version > kFormatVersion)
         fail(FileErrc::NewerVersion, "/formatVersion",
-             {"written by a newer ValveTune (file format " + std::to_string(version) + "); this version reads format " +
-                  std::to_string(kFormatVersion) + " — please update ValveTune",
+             {"written by a newer ValveTune (file format " + std::to_string(version) +
+                  "); this version reads format " + std::to_string(kFormatVersion) +
+                  " — please update ValveTune",
               "von einem neueren ValveTune geschrieben (Dateiformat " + std::to_string(version) +
-                  "); diese Version liest Format " + std::to_string(kFormatVersion) + " — bitte ValveTune aktualisieren"});
+                  "); diese Version liest Format " + std::to_string(kFormatVersion) +
+                  " — bitte ValveTune aktualisieren"});
     if (version < 1)
-        fail(FileErrc::BadValue, "/formatVersion", {"file format 0 does not exist", "Dateiformat 0 gibt es nicht"});
+        fail(FileErrc::BadValue, "/formatVersion",
+             {"file format 0 does not exist", "Dateiformat 0 gibt es nicht"});
 
     ParamFile out;
     out.formatVersion = static_cast<int>(version);
@@ -315,16 +336,22 @@ Result<ParamFile, FileError> parseParamFile(std::string_view text)
     } catch (const Failure &f) {
         return f.error;
     } catch (const Json::exception &e) { // a JSON access the checks above missed: still typed
-        return FileError{FileErrc::WrongType, {std::string("unexpected JSON content: ") + e.what(),
-                                               std::string("unerwarteter JSON-Inhalt: ") + e.what()}, {}, 0, 0};
+        return FileError{FileErrc::WrongType,
+                         {std::string("unexpected JSON content: ") + e.what(),
+                          std::string("unerwarteter JSON-Inhalt: ") + e.what()},
+                         {},
+                         0,
+                         0};
     }
 }
 
 LocalText FileError::text() const
 {
     if (line > 0)
-        return {"line " + std::to_string(line) + ", column " + std::to_string(column) + ": " + message.en,
-                "Zeile " + std::to_string(line) + ", Spalte " + std::to_string(column) + ": " + message.de};
+        return {"line " + std::to_string(line) + ", column " + std::to_string(column) + ": " +
+                    message.en,
+                "Zeile " + std::to_string(line) + ", Spalte " + std::to_string(column) + ": " +
+                    message.de};
     if (!location.empty())
         return {location + ": " + message.en, location + ": " + message.de};
     return message;

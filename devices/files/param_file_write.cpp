@@ -1,8 +1,7 @@
 // writeParamFile and the small helpers of the document: a stable, diff-friendly text (one value
 // row per line) that parseParamFile reads back to the same document.
-#include "param_file.h"
-
 #include "dict/cooking.h"
+#include "param_file.h"
 #include "param_file_map.h"
 
 #include <algorithm>
@@ -25,7 +24,10 @@ std::string dump(const Json &j)
     return j.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-std::string quoted(const std::string &s) { return dump(Json(s)); }
+std::string quoted(const std::string &s)
+{
+    return dump(Json(s));
+}
 
 std::string rawJson(const RawValue &raw)
 {
@@ -38,23 +40,28 @@ std::string rawJson(const RawValue &raw)
 }
 
 // Unknown keys, minus any that would collide with the ones written explicitly.
-template <std::size_t N>
-std::vector<std::pair<std::string, std::string>> extraFields(const Json &extra, const std::array<const char *, N> &known)
+template<std::size_t N>
+std::vector<std::pair<std::string, std::string>>
+extraFields(const Json &extra, const std::array<const char *, N> &known)
 {
     std::vector<std::pair<std::string, std::string>> out;
     if (!extra.is_object())
         return out;
     for (auto it = extra.begin(); it != extra.end(); ++it) {
         const std::string &key = it.key(); // (clang 14 cannot capture a structured binding)
-        if (std::find_if(known.begin(), known.end(), [&](const char *k) { return key == k; }) == known.end())
+        if (std::find_if(known.begin(), known.end(), [&](const char *k) { return key == k; }) ==
+            known.end())
             out.emplace_back(quoted(key), dump(*it));
     }
     return out;
 }
 
-constexpr std::array<const char *, 6> kFileKeys{"format", "formatVersion", "tool", "created", "note", "modules"};
-constexpr std::array<const char *, 6> kModuleKeys{"address", "family", "version", "mode", "label", "values"};
-constexpr std::array<const char *, 7> kRowKeys{"name", "id", "ind", "pnu", "instance", "raw", "display"};
+constexpr std::array<const char *, 6> kFileKeys{"format",  "formatVersion", "tool",
+                                                "created", "note",          "modules"};
+constexpr std::array<const char *, 6> kModuleKeys{"address", "family", "version",
+                                                  "mode",    "label",  "values"};
+constexpr std::array<const char *, 7> kRowKeys{"name",     "id",  "ind",    "pnu",
+                                               "instance", "raw", "display"};
 
 std::string displayFor(const Dictionary *dict, const ValueRow &row, Language lang)
 {
@@ -112,7 +119,8 @@ void writeModule(std::string &out, const ModuleRecord &m, const DictionarySet *s
     } else {
         out += in + "\"values\": [\n";
         for (std::size_t i = 0; i < m.values.size(); ++i)
-            out += in + "  " + rowLine(m.values[i], dict, lang) + (i + 1 < m.values.size() ? ",\n" : "\n");
+            out += in + "  " + rowLine(m.values[i], dict, lang) +
+                   (i + 1 < m.values.size() ? ",\n" : "\n");
         out += in + "]\n";
     }
     out += "    }";
@@ -158,13 +166,15 @@ std::string writeParamFile(const ParamFile &file, const DictionarySet *forDispla
 
 const ValueRow *ModuleRecord::find(const std::string &name) const
 {
-    const auto it = std::find_if(values.begin(), values.end(), [&](const ValueRow &r) { return r.name == name; });
+    const auto it = std::find_if(values.begin(), values.end(),
+                                 [&](const ValueRow &r) { return r.name == name; });
     return it == values.end() ? nullptr : &*it;
 }
 
 const ModuleRecord *ParamFile::findModule(int address) const
 {
-    const auto it = std::find_if(modules.begin(), modules.end(), [&](const ModuleRecord &m) { return m.address == address; });
+    const auto it = std::find_if(modules.begin(), modules.end(),
+                                 [&](const ModuleRecord &m) { return m.address == address; });
     return it == modules.end() ? nullptr : &*it;
 }
 
@@ -189,8 +199,9 @@ std::string isoUtc(std::chrono::system_clock::time_point when)
     const hh_mm_ss<seconds> t{floor<seconds>(when - day)};
     char buf[32];
     std::snprintf(buf, sizeof buf, "%04d-%02u-%02uT%02d:%02d:%02dZ", static_cast<int>(ymd.year()),
-                  static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()), static_cast<int>(t.hours().count()),
-                  static_cast<int>(t.minutes().count()), static_cast<int>(t.seconds().count()));
+                  static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()),
+                  static_cast<int>(t.hours().count()), static_cast<int>(t.minutes().count()),
+                  static_cast<int>(t.seconds().count()));
     return buf;
 }
 

@@ -15,8 +15,8 @@ std::string unpackAscii(std::span<const std::uint8_t> bytes)
     std::string out;
     ByteReader r(bytes);
     while (r.remaining() >= 3) {
-        const std::uint32_t group = static_cast<std::uint32_t>(r.u8()) << 16
-                                    | static_cast<std::uint32_t>(r.u16be());
+        const std::uint32_t group =
+            static_cast<std::uint32_t>(r.u8()) << 16 | static_cast<std::uint32_t>(r.u16be());
         for (int shift = 18; shift >= 0; shift -= 6) {
             const auto v = static_cast<std::uint8_t>((group >> shift) & 0x3F);
             // 0x20..0x3F stand for themselves, 0x00..0x1F for 0x40..0x5F.
@@ -78,7 +78,10 @@ Bytes utf8ToLatin1(std::string_view text, std::size_t size)
             continue;
         }
         // Two-byte sequences C2/C3 xx are U+0080..U+00FF; everything else is outside Latin-1.
-        std::size_t len = (b & 0xE0) == 0xC0 ? 2 : (b & 0xF0) == 0xE0 ? 3 : (b & 0xF8) == 0xF0 ? 4 : 1;
+        std::size_t len = (b & 0xE0) == 0xC0   ? 2
+                          : (b & 0xF0) == 0xE0 ? 3
+                          : (b & 0xF8) == 0xF0 ? 4
+                                               : 1;
         if (len == 2 && i + 1 < text.size() && (b == 0xC2 || b == 0xC3)) {
             const auto c = static_cast<std::uint8_t>(text[i + 1]);
             out.push_back(static_cast<std::uint8_t>((b & 0x03) << 6 | (c & 0x3F)));

@@ -67,7 +67,8 @@ Bytes Deframer::rawFrame() const
     return raw;
 }
 
-void Deframer::push(std::uint8_t byte, std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay)
+void Deframer::push(std::uint8_t byte, std::vector<DeframerEvent> &events,
+                    std::vector<std::uint8_t> &replay)
 {
     if (m_frame.empty()) {
         // Hunting: count the preamble run, then judge the first other byte.
@@ -84,7 +85,8 @@ void Deframer::push(std::uint8_t byte, std::vector<DeframerEvent> &events, std::
             DeframerEvent e;
             e.kind = DeframerEvent::Kind::Error;
             e.error = DecodeError{DecodeErrc::BadValue, m_preambles, byte,
-                                  "delimiter " + hexByte(byte) + " after " + std::to_string(m_preambles) + " preambles"};
+                                  "delimiter " + hexByte(byte) + " after " +
+                                      std::to_string(m_preambles) + " preambles"};
             e.raw = Bytes(m_preambles, kPreamble);
             e.raw.push_back(byte);
             events.push_back(std::move(e));
@@ -111,7 +113,8 @@ void Deframer::push(std::uint8_t byte, std::vector<DeframerEvent> &events, std::
 void Deframer::finish(std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay)
 {
     const std::uint8_t sum = m_frame.back();
-    const std::uint8_t expected = checksum(std::span<const std::uint8_t>(m_frame).first(m_frame.size() - 1));
+    const std::uint8_t expected =
+        checksum(std::span<const std::uint8_t>(m_frame).first(m_frame.size() - 1));
     if (sum != expected) {
         fail(DecodeError{DecodeErrc::BadChecksum, m_preambles + m_frame.size() - 1, sum,
                          "checksum " + hexByte(sum) + ", computed " + hexByte(expected)},
@@ -132,7 +135,8 @@ void Deframer::finish(std::vector<DeframerEvent> &events, std::vector<std::uint8
     reset();
 }
 
-void Deframer::fail(DecodeError error, std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay)
+void Deframer::fail(DecodeError error, std::vector<DeframerEvent> &events,
+                    std::vector<std::uint8_t> &replay)
 {
     DeframerEvent e;
     e.kind = DeframerEvent::Kind::Error;

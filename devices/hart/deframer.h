@@ -51,10 +51,12 @@ public:
     std::size_t discardedBytes() const { return m_discarded; } // noise dropped while hunting
 
 private:
-    void push(std::uint8_t byte, std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay);
+    void push(std::uint8_t byte, std::vector<DeframerEvent> &events,
+              std::vector<std::uint8_t> &replay);
     void drain(std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay);
     void finish(std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay);
-    void fail(DecodeError error, std::vector<DeframerEvent> &events, std::vector<std::uint8_t> &replay);
+    void fail(DecodeError error, std::vector<DeframerEvent> &events,
+              std::vector<std::uint8_t> &replay);
     Bytes rawFrame() const;
 
     Options m_options;

@@ -27,7 +27,8 @@ std::string hexValue(std::uint32_t raw, std::size_t width)
         return hexByte(static_cast<std::uint8_t>(raw));
     if (width == 2)
         return hexWord(static_cast<std::uint16_t>(raw));
-    return hexWord(static_cast<std::uint16_t>(raw >> 16)) + hexWord(static_cast<std::uint16_t>(raw)).substr(2);
+    return hexWord(static_cast<std::uint16_t>(raw >> 16)) +
+           hexWord(static_cast<std::uint16_t>(raw)).substr(2);
 }
 
 } // namespace
@@ -122,8 +123,9 @@ Result<ParamAccess, DecodeError> decodeParamAccess(std::uint8_t command, bool re
     const std::size_t expected = kRefSize + (carriesValue(command, response) ? width : 0);
     if (data.size() < expected)
         return DecodeError{DecodeErrc::BadLength, data.size(), 0,
-                           "command " + std::to_string(command) + " needs " + std::to_string(expected)
-                               + " data bytes, got " + std::to_string(data.size())};
+                           "command " + std::to_string(command) + " needs " +
+                               std::to_string(expected) + " data bytes, got " +
+                               std::to_string(data.size())};
     if (data.size() > expected)
         return DecodeError{DecodeErrc::TooLong, expected, 0,
                            std::to_string(data.size() - expected) + " bytes after the value"};
@@ -161,8 +163,9 @@ Result<Bytes, DecodeError> encodeParamAccess(const ParamAccess &access, bool res
 }
 
 std::optional<DecodeError> describeParamAccess(std::uint8_t command, bool response,
-                                               std::span<const std::uint8_t> data, std::size_t offset,
-                                               int depth, std::vector<FieldSpan> &out)
+                                               std::span<const std::uint8_t> data,
+                                               std::size_t offset, int depth,
+                                               std::vector<FieldSpan> &out)
 {
     auto decoded = decodeParamAccess(command, response, data);
     ByteReader r(data);
@@ -185,7 +188,11 @@ std::optional<DecodeError> describeParamAccess(std::uint8_t command, bool respon
             value += ", signed " + std::to_string(asSigned(raw, width));
         if (width == 4)
             value += ", float " + formatFloat(asFloat(raw));
-        out.push_back({"hart.param.value", offset + kRefSize, width, depth, value,
+        out.push_back({"hart.param.value",
+                       offset + kRefSize,
+                       width,
+                       depth,
+                       value,
                        {"value (" + std::to_string(width) + " bytes, type from the parameter list)",
                         "Wert (" + std::to_string(width) + " Byte, Typ laut Parameterliste)"}});
     }

@@ -67,7 +67,8 @@ Result<ParamAccess, DecodeError> decodeParamAccess(std::uint8_t command, bool re
 Result<Bytes, DecodeError> encodeParamAccess(const ParamAccess &access, bool response);
 
 std::optional<DecodeError> describeParamAccess(std::uint8_t command, bool response,
-                                               std::span<const std::uint8_t> data, std::size_t offset,
-                                               int depth, std::vector<FieldSpan> &out);
+                                               std::span<const std::uint8_t> data,
+                                               std::size_t offset, int depth,
+                                               std::vector<FieldSpan> &out);
 
 } // namespace vt::dev::hart

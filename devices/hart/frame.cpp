@@ -88,10 +88,9 @@ Address decodeAddress(std::span<const std::uint8_t> bytes, bool isLong)
 std::uint8_t delimiterOf(const Frame &frame)
 {
     const auto expansion = static_cast<unsigned>(frame.expansion.size() & 0x03u);
-    return static_cast<std::uint8_t>((frame.address.isLong ? kLongFrameBit : 0u)
-                                     | expansion << 5
-                                     | (frame.physicalLayer & 0x03u) << 3
-                                     | static_cast<unsigned>(frame.type));
+    return static_cast<std::uint8_t>((frame.address.isLong ? kLongFrameBit : 0u) | expansion << 5 |
+                                     (frame.physicalLayer & 0x03u) << 3 |
+                                     static_cast<unsigned>(frame.type));
 }
 
 bool isValidDelimiter(std::uint8_t delimiter)
@@ -137,7 +136,8 @@ Result<Bytes, DecodeError> encodeFrame(const Frame &frame)
         w.u8(kPreamble);
     const std::size_t start = frame.preambles;
     w.u8(delimiterOf(frame));
-    const auto bits = static_cast<std::uint8_t>((a.primaryMaster ? kMasterBit : 0) | (a.burst ? kBurstBit : 0));
+    const auto bits =
+        static_cast<std::uint8_t>((a.primaryMaster ? kMasterBit : 0) | (a.burst ? kBurstBit : 0));
     if (a.isLong) {
         w.u8(static_cast<std::uint8_t>(bits | (a.expandedDeviceType >> 8)));
         w.u8(static_cast<std::uint8_t>(a.expandedDeviceType));
@@ -174,7 +174,8 @@ Result<Frame, DecodeError> decodeFrame(std::span<const std::uint8_t> bytes)
     const std::size_t start = r.offset();
     const std::uint8_t delimiter = r.u8();
     if (r.failed())
-        return DecodeError{DecodeErrc::Truncated, r.failOffset(), 0, "no delimiter after the preambles"};
+        return DecodeError{DecodeErrc::Truncated, r.failOffset(), 0,
+                           "no delimiter after the preambles"};
     if (!isValidDelimiter(delimiter))
         return DecodeError{DecodeErrc::BadValue, start, delimiter,
                            "delimiter " + hexByte(delimiter) + " has no frame type 1, 2 or 6"};
@@ -193,7 +194,8 @@ Result<Frame, DecodeError> decodeFrame(std::span<const std::uint8_t> bytes)
     if (f.isResponse()) {
         if (count < 2)
             return DecodeError{DecodeErrc::BadLength, countAt, 0,
-                               "response byte count " + std::to_string(count) + " < 2 status bytes"};
+                               "response byte count " + std::to_string(count) +
+                                   " < 2 status bytes"};
         f.responseCode = r.u8();
         f.deviceStatus = r.u8();
         dataBytes -= 2;

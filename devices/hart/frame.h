@@ -13,11 +13,11 @@
 namespace vt::dev::hart {
 
 inline constexpr std::uint8_t kPreamble = 0xFF;
-inline constexpr std::uint8_t kMaxPollAddress = 63;        // 6 bits in HART 7 (manual: 0..15)
+inline constexpr std::uint8_t kMaxPollAddress = 63;         // 6 bits in HART 7 (manual: 0..15)
 inline constexpr std::uint16_t kMaxLongDeviceType = 0x3FFF; // bits 37..24 of the long address
 inline constexpr std::uint32_t kMaxDeviceId = 0xFFFFFF;     // bits 23..0
 inline constexpr std::size_t kMaxExpansionBytes = 3;
-inline constexpr std::size_t kMaxPreambles = 255;          // our bound; masters send 5..20
+inline constexpr std::size_t kMaxPreambles = 255; // our bound; masters send 5..20
 inline constexpr std::size_t kMaxByteCount = 255;
 // Delimiter + long address + expansion + command + byte count + data + checksum.
 inline constexpr std::size_t kMaxFrameSize = 1 + 5 + kMaxExpansionBytes + 2 + kMaxByteCount + 1;
@@ -46,18 +46,19 @@ struct Address
 Address shortAddress(std::uint8_t pollAddress, bool primaryMaster = true);
 // The long address of a device: its expanded device type (the 2 top bits give way to the master
 // and burst bits, manual §2.3 "38 bits") and its device id.
-Address longAddress(std::uint16_t expandedDeviceType, std::uint32_t deviceId, bool primaryMaster = true);
+Address longAddress(std::uint16_t expandedDeviceType, std::uint32_t deviceId,
+                    bool primaryMaster = true);
 
 struct Frame
 {
-    std::size_t preambles = 5;     // leading 0xFF bytes (manual §2.3: "three or more")
+    std::size_t preambles = 5; // leading 0xFF bytes (manual §2.3: "three or more")
     FrameType type = FrameType::Stx;
     std::uint8_t physicalLayer = 0; // delimiter bits 4..3 (0 = asynchronous, FSK)
     Address address;
-    Bytes expansion;                // 0..3 bytes, count in delimiter bits 6..5
+    Bytes expansion; // 0..3 bytes, count in delimiter bits 6..5
     std::uint8_t command = 0;
-    std::uint8_t responseCode = 0;  // first status byte, responses (ACK, BACK) only
-    std::uint8_t deviceStatus = 0;  // second status byte, responses only
+    std::uint8_t responseCode = 0; // first status byte, responses (ACK, BACK) only
+    std::uint8_t deviceStatus = 0; // second status byte, responses only
     Bytes data;
 
     bool isResponse() const { return type != FrameType::Stx; }

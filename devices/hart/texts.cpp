@@ -9,25 +9,38 @@ LocalText commandText(std::uint8_t command)
     switch (command) {
     case 0: return {"Read Unique Identifier", "Eindeutige Kennung lesen"};
     case 1: return {"Read Primary Variable", "Primärvariable lesen"};
-    case 2: return {"Read Loop Current and Percent of Range", "Schleifenstrom und Prozent des Messbereichs lesen"};
-    case 3: return {"Read Dynamic Variables and Loop Current", "Dynamische Variablen und Schleifenstrom lesen"};
+    case 2:
+        return {"Read Loop Current and Percent of Range",
+                "Schleifenstrom und Prozent des Messbereichs lesen"};
+    case 3:
+        return {"Read Dynamic Variables and Loop Current",
+                "Dynamische Variablen und Schleifenstrom lesen"};
     case 6: return {"Write Polling Address", "Polling-Adresse schreiben"};
     case 7: return {"Read Loop Configuration", "Schleifenkonfiguration lesen"};
-    case 8: return {"Read Dynamic Variable Classifications", "Klassifizierung der dynamischen Variablen lesen"};
+    case 8:
+        return {"Read Dynamic Variable Classifications",
+                "Klassifizierung der dynamischen Variablen lesen"};
     case 9: return {"Read Device Variables with Status", "Gerätevariablen mit Status lesen"};
-    case 11: return {"Read Unique Identifier Associated with Tag", "Eindeutige Kennung zum Tag lesen"};
+    case 11:
+        return {"Read Unique Identifier Associated with Tag", "Eindeutige Kennung zum Tag lesen"};
     case 12: return {"Read Message", "Nachricht lesen"};
     case 13: return {"Read Tag, Descriptor, Date", "Tag, Beschreibung, Datum lesen"};
-    case 14: return {"Read Primary Variable Transducer Information", "Sensordaten der Primärvariable lesen"};
+    case 14:
+        return {"Read Primary Variable Transducer Information",
+                "Sensordaten der Primärvariable lesen"};
     case 15: return {"Read Device Information", "Geräteinformationen lesen"};
     case 16: return {"Read Final Assembly Number", "Endmontagenummer lesen"};
     case 17: return {"Write Message", "Nachricht schreiben"};
     case 18: return {"Write Tag, Descriptor, Date", "Tag, Beschreibung, Datum schreiben"};
     case 19: return {"Write Final Assembly Number", "Endmontagenummer schreiben"};
     case 20: return {"Read Long Tag", "Langen Tag lesen"};
-    case 21: return {"Read Unique Identifier Associated with Long Tag", "Eindeutige Kennung zum langen Tag lesen"};
+    case 21:
+        return {"Read Unique Identifier Associated with Long Tag",
+                "Eindeutige Kennung zum langen Tag lesen"};
     case 22: return {"Write Long Tag", "Langen Tag schreiben"};
-    case 38: return {"Reset Configuration Changed Flag", "Merker \"Konfiguration geändert\" zurücksetzen"};
+    case 38:
+        return {"Reset Configuration Changed Flag",
+                "Merker \"Konfiguration geändert\" zurücksetzen"};
     case 48: return {"Read Additional Device Status", "Zusätzlichen Gerätestatus lesen"};
     case 128: return {"Read parameter (1 byte)", "Parameter lesen (1 Byte)"};
     case 129: return {"Write parameter (1 byte)", "Parameter schreiben (1 Byte)"};
@@ -51,7 +64,9 @@ LocalText responseCodeText(std::uint8_t code)
     case 2: return {"invalid selection", "ungültige Auswahl"};
     case 3: return {"passed parameter too large", "übergebener Parameter zu groß"};
     case 4: return {"passed parameter too small", "übergebener Parameter zu klein"};
-    case 5: return {"wrong byte count (too few data bytes)", "falsche Byteanzahl (zu wenige Datenbytes)"};
+    case 5:
+        return {"wrong byte count (too few data bytes)",
+                "falsche Byteanzahl (zu wenige Datenbytes)"};
     case 6: return {"device-specific command error", "Fehler im gerätespezifischen Kommando"};
     case 7: return {"in write-protect mode", "im Schreibschutzmodus"};
     case 16: return {"access restricted", "Zugriff eingeschränkt"};

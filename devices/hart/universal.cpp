@@ -76,8 +76,8 @@ TagDescriptorDate readTdd(ByteReader &r)
 DecodeError tooShort(std::uint8_t command, std::size_t need, std::size_t got)
 {
     return DecodeError{DecodeErrc::BadLength, got, 0,
-                       "command " + std::to_string(command) + " needs " + std::to_string(need)
-                           + " data bytes, got " + std::to_string(got)};
+                       "command " + std::to_string(command) + " needs " + std::to_string(need) +
+                           " data bytes, got " + std::to_string(got)};
 }
 
 // Minimum data size of each universal command and direction; nullopt = not universal.
@@ -113,8 +113,7 @@ std::optional<std::size_t> minimumSize(std::uint8_t command, bool response)
 Payload decodeKnown(std::uint8_t command, bool response, ByteReader &r, std::size_t size)
 {
     switch (command) {
-    case 0:
-        return readIdentity(r, size);
+    case 0: return readIdentity(r, size);
     case 11:
     case 21:
         if (response)
@@ -122,8 +121,7 @@ Payload decodeKnown(std::uint8_t command, bool response, ByteReader &r, std::siz
         if (command == 11)
             return Tag{unpackAscii(r.bytes(kTagSize))};
         return LongTag{latin1ToUtf8(r.bytes(kLongTagSize))};
-    case 1:
-        return readUnitValue(r);
+    case 1: return readUnitValue(r);
     case 2: {
         LoopCurrent c;
         c.currentMa = f32(r);
@@ -174,11 +172,9 @@ Payload decodeKnown(std::uint8_t command, bool response, ByteReader &r, std::siz
         return d;
     }
     case 12:
-    case 17:
-        return Message{unpackAscii(r.bytes(kMessageSize))};
+    case 17: return Message{unpackAscii(r.bytes(kMessageSize))};
     case 13:
-    case 18:
-        return readTdd(r);
+    case 18: return readTdd(r);
     case 14: {
         TransducerInfo t;
         t.serialNumber = u24(r);
@@ -202,11 +198,9 @@ Payload decodeKnown(std::uint8_t command, bool response, ByteReader &r, std::siz
         return i;
     }
     case 16:
-    case 19:
-        return FinalAssemblyNumber{u24(r)};
+    case 19: return FinalAssemblyNumber{u24(r)};
     case 20:
-    case 22:
-        return LongTag{latin1ToUtf8(r.bytes(kLongTagSize))};
+    case 22: return LongTag{latin1ToUtf8(r.bytes(kLongTagSize))};
     case 38: {
         ConfigChangeCounter c;
         if (r.remaining() >= 2)
@@ -217,8 +211,7 @@ Payload decodeKnown(std::uint8_t command, bool response, ByteReader &r, std::siz
         const auto b = r.bytes(std::min(r.remaining(), kMaxStatusBytes));
         return AdditionalStatus{Bytes(b.begin(), b.end())};
     }
-    default:
-        return std::monostate{};
+    default: return std::monostate{};
     }
 }
 
@@ -227,20 +220,40 @@ struct Encoder
     ByteWriter &w;
 
     void f32(float v) { w.u32be(bitsFromFloat(v)); }
-    void u24(std::uint32_t v) { w.u8(static_cast<std::uint8_t>(v >> 16)).u16be(static_cast<std::uint16_t>(v)); }
-    void unitValue(const UnitValue &v) { w.u8(v.unit); f32(v.value); }
+    void u24(std::uint32_t v)
+    {
+        w.u8(static_cast<std::uint8_t>(v >> 16)).u16be(static_cast<std::uint16_t>(v));
+    }
+    void unitValue(const UnitValue &v)
+    {
+        w.u8(v.unit);
+        f32(v.value);
+    }
 
     void operator()(const std::monostate &) {}
     void operator()(const Identity &id)
     {
-        w.u8(id.expansionCode).u16be(id.expandedDeviceType).u8(id.minRequestPreambles).u8(id.hartRevision);
-        w.u8(id.deviceRevision).u8(id.softwareRevision).u8(id.hardwareRevisionAndSignaling).u8(id.flags);
+        w.u8(id.expansionCode)
+            .u16be(id.expandedDeviceType)
+            .u8(id.minRequestPreambles)
+            .u8(id.hartRevision);
+        w.u8(id.deviceRevision)
+            .u8(id.softwareRevision)
+            .u8(id.hardwareRevisionAndSignaling)
+            .u8(id.flags);
         u24(id.deviceId);
         w.u8(id.minResponsePreambles).u8(id.maxDeviceVariables).u16be(id.configChangeCounter);
-        w.u8(id.extendedStatus).u16be(id.manufacturerId).u16be(id.privateLabel).u8(id.deviceProfile);
+        w.u8(id.extendedStatus)
+            .u16be(id.manufacturerId)
+            .u16be(id.privateLabel)
+            .u8(id.deviceProfile);
     }
     void operator()(const UnitValue &v) { unitValue(v); }
-    void operator()(const LoopCurrent &c) { f32(c.currentMa); f32(c.percentOfRange); }
+    void operator()(const LoopCurrent &c)
+    {
+        f32(c.currentMa);
+        f32(c.percentOfRange);
+    }
     void operator()(const DynamicVariables &d)
     {
         f32(d.loopCurrentMa);
@@ -297,7 +310,8 @@ struct Encoder
     }
     void operator()(const AdditionalStatus &s)
     {
-        w.bytes(std::span<const std::uint8_t>(s.bytes).first(std::min(s.bytes.size(), kMaxStatusBytes)));
+        w.bytes(std::span<const std::uint8_t>(s.bytes).first(
+            std::min(s.bytes.size(), kMaxStatusBytes)));
     }
 };
 

@@ -45,7 +45,10 @@ struct Identity
     std::uint8_t hardwareRevision() const { return hardwareRevisionAndSignaling >> 3; }
     std::uint8_t physicalSignaling() const { return hardwareRevisionAndSignaling & 0x07; }
     // The long-frame address of this device (§2.3, §3.4 "Device Type … bits 24..37").
-    Address address(bool primaryMaster = true) const { return longAddress(expandedDeviceType, deviceId, primaryMaster); }
+    Address address(bool primaryMaster = true) const
+    {
+        return longAddress(expandedDeviceType, deviceId, primaryMaster);
+    }
     bool operator==(const Identity &) const = default;
 };
 
@@ -193,11 +196,11 @@ struct AdditionalStatus
     bool operator==(const AdditionalStatus &) const = default;
 };
 
-using Payload = std::variant<std::monostate, Identity, UnitValue, LoopCurrent, DynamicVariables,
-                             LoopConfiguration, VariableClassifications, DeviceVariableCodes,
-                             DeviceVariables, Tag, Message, TagDescriptorDate, TransducerInfo,
-                             DeviceInfo, FinalAssemblyNumber, LongTag, ConfigChangeCounter,
-                             AdditionalStatus>;
+using Payload =
+    std::variant<std::monostate, Identity, UnitValue, LoopCurrent, DynamicVariables,
+                 LoopConfiguration, VariableClassifications, DeviceVariableCodes, DeviceVariables,
+                 Tag, Message, TagDescriptorDate, TransducerInfo, DeviceInfo, FinalAssemblyNumber,
+                 LongTag, ConfigChangeCounter, AdditionalStatus>;
 
 // True for the universal commands of the HART-7 manual §5.1.
 bool isUniversal(std::uint8_t command);

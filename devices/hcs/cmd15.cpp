@@ -39,12 +39,15 @@ Result<Bytes, DecodeError> encode(const CyclicRequest &request, Family family)
     const auto snum = snumForModules(family, request.modules.size());
     if (!snum)
         return decodeError(DecodeErrc::BadValue, 1,
-                           std::to_string(request.modules.size()) + " modules; " + std::string(familyName(family)) +
-                               " allows 1.." + std::to_string(maxCyclicModules(family)));
+                           std::to_string(request.modules.size()) + " modules; " +
+                               std::string(familyName(family)) + " allows 1.." +
+                               std::to_string(maxCyclicModules(family)));
     ByteWriter w;
     w.u8(request.tadr).u8(*snum).u8(kCmdCyclic);
     for (const ModuleSetpoints &m : request.modules)
-        w.u8(m.control).u16be(static_cast<std::uint16_t>(m.value1)).u16be(static_cast<std::uint16_t>(m.value2));
+        w.u8(m.control)
+            .u16be(static_cast<std::uint16_t>(m.value1))
+            .u16be(static_cast<std::uint16_t>(m.value2));
     return w.take();
 }
 
@@ -56,7 +59,8 @@ Bytes encode(const CyclicResponse &a)
     return w.take();
 }
 
-Result<CyclicRequest, DecodeError> decodeCyclicRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<CyclicRequest, DecodeError> decodeCyclicRequest(std::span<const std::uint8_t> frame,
+                                                       const DecodeOptions &options)
 {
     ByteReader r(frame);
     CyclicRequest q;
@@ -66,12 +70,14 @@ Result<CyclicRequest, DecodeError> decodeCyclicRequest(std::span<const std::uint
     if (r.failed())
         return truncated(r, "the header TADR SNUM CMD needs 3 bytes");
     if (cmd != kCmdCyclic)
-        return decodeError(DecodeErrc::UnexpectedCommand, 2, "got " + hexByte(cmd) + ", expected 15 (0x0F)");
+        return decodeError(DecodeErrc::UnexpectedCommand, 2,
+                           "got " + hexByte(cmd) + ", expected 15 (0x0F)");
     const auto modules = modulesForSnum(options.family, snum);
     if (!modules)
         return decodeError(DecodeErrc::BadValue, 1,
                            "SNUM " + std::to_string(snum) + " is outside " +
-                               (options.family == Family::Opat ? std::string("0..7 (OPAT)") : std::string("1..5 (DMA)")));
+                               (options.family == Family::Opat ? std::string("0..7 (OPAT)")
+                                                               : std::string("1..5 (DMA)")));
     q.modules.reserve(*modules);
     for (std::size_t i = 0; i < *modules; ++i) {
         ModuleSetpoints m;
@@ -82,13 +88,15 @@ Result<CyclicRequest, DecodeError> decodeCyclicRequest(std::span<const std::uint
     }
     if (r.failed())
         return truncated(r, "SNUM " + std::to_string(snum) + " announces " +
-                                std::to_string(kCyclicHeaderSize + kCyclicModuleSize * *modules) + " bytes");
+                                std::to_string(kCyclicHeaderSize + kCyclicModuleSize * *modules) +
+                                " bytes");
     if (!r.atEnd() && !options.allowPadding)
         return tooLong(r, std::to_string(frame.size() - r.offset()) + " bytes after the telegram");
     return q;
 }
 
-Result<CyclicResponse, DecodeError> decodeCyclicResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<CyclicResponse, DecodeError> decodeCyclicResponse(std::span<const std::uint8_t> frame,
+                                                         const DecodeOptions &options)
 {
     ByteReader r(frame);
     CyclicResponse a;
@@ -104,12 +112,14 @@ Result<CyclicResponse, DecodeError> decodeCyclicResponse(std::span<const std::ui
             return truncated(r, "an error response needs EXCE at byte 3");
         if (!r.atEnd() && !options.allowPadding)
             return tooLong(r, "an error response has 4 bytes");
-        DecodeError e = decodeError(DecodeErrc::DeviceException, 3, "ERR 0x8F EXCE " + std::to_string(exce));
+        DecodeError e =
+            decodeError(DecodeErrc::DeviceException, 3, "ERR 0x8F EXCE " + std::to_string(exce));
         e.deviceCode = exce;
         return e;
     }
     if (cmd != kCmdCyclic)
-        return decodeError(DecodeErrc::UnexpectedCommand, 2, "got " + hexByte(cmd) + ", expected 15 (0x0F) or 0x8F");
+        return decodeError(DecodeErrc::UnexpectedCommand, 2,
+                           "got " + hexByte(cmd) + ", expected 15 (0x0F) or 0x8F");
     a.status = r.u16be();
     a.value1 = r.i16be();
     a.value2 = r.i16be();

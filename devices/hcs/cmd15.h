@@ -2,11 +2,10 @@
 // in one request, one module's status word and two actual values per response (multiplexed).
 #pragma once
 
-#include "types.h"
-
 #include "core/byte_writer.h"
 #include "core/decode_error.h"
 #include "core/result.h"
+#include "types.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -2,12 +2,11 @@
 // telegram inspector and the CLI (STYLE.md rule 7); codecs: telegram.h, cmd15.h.
 #pragma once
 
-#include "profiles.h"
-#include "types.h"
-
 #include "core/direction.h"
 #include "core/field_span.h"
 #include "core/local_text.h"
+#include "profiles.h"
+#include "types.h"
 
 #include <cstdint>
 #include <functional>
@@ -38,7 +37,8 @@ struct DescribeOptions
     std::optional<Profile> profile{};
     bool allowPadding = false;           // see DecodeOptions::allowPadding
     bool opatPrintedStatusOrder = false; // see statusLowBits()
-    std::optional<std::uint16_t> firstId{}; // CMD 3 response: the request's first ID, to name DAT1..n
+    std::optional<std::uint16_t>
+        firstId{}; // CMD 3 response: the request's first ID, to name DAT1..n
     ParameterHooks parameters{};
 };
 

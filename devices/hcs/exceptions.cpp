@@ -17,12 +17,16 @@ const LocalText kWrongData{"wrong data value", "Falscher Datenwert"};
 const LocalText kWriteFailed{"writing of ID failed", "Schreiben der ID fehlgeschlagen"};
 const LocalText kTimeoutOrCount{
     "timeout slave, address wrong or not installed, or invalid number of connected slaves",
-    "Timeout Slave, Adresse falsch oder nicht installiert oder falsche Anzahl angeschlossener Slaves (Module)"};
-const LocalText kChecksumModbus{"internal checksum error (Modbus)", "Interner Checksum Fehler (Modbus)"};
-const LocalText kChecksumCan{"internal checksum error (CAN connection)", "Interner Checksum Fehler (CAN-Verbindung)"};
+    "Timeout Slave, Adresse falsch oder nicht installiert oder falsche Anzahl angeschlossener "
+    "Slaves (Module)"};
+const LocalText kChecksumModbus{"internal checksum error (Modbus)",
+                                "Interner Checksum Fehler (Modbus)"};
+const LocalText kChecksumCan{"internal checksum error (CAN connection)",
+                             "Interner Checksum Fehler (CAN-Verbindung)"};
 const LocalText kTimeoutModbus{"timeout (Modbus)", "Timeout (Modbus)"};
 const LocalText kTimeoutCan{"timeout (CAN connection)", "Timeout (CAN-Verbindung)"};
-const LocalText kInvalidSlaveCount{"invalid number of connected slaves", "Ungültige Anzahl angeschlossener Slaves"};
+const LocalText kInvalidSlaveCount{"invalid number of connected slaves",
+                                   "Ungültige Anzahl angeschlossener Slaves"};
 const LocalText kTimeoutSlave{"timeout slave, address wrong or not installed",
                               "Timeout Slave, Adresse falsch oder nicht installiert"};
 const LocalText kOpatBufferSmall{"telegram too short, Profibus output buffer too small",
@@ -35,33 +39,67 @@ const LocalText kDuplicateAddress{"two or more slaves have the same slave addres
                                   "Zwei oder mehr Slaves haben dieselbe Slave-Adresse"};
 // DMA Profinet manual §4.3 / DMA Profibus Anleitung §4.3, code 9.
 const LocalText kDmaBufferSmall{
-    "Profibus node (SADR = 0) reports its receive data buffer too small: the data length of the selected GSD module is too small",
-    "Profibus-Knoten (SADR = 0) schickt „Empfangs-Datenpuffer zu klein“: die definierte Datenlänge des GSD-Moduls ist zu gering gewählt"};
+    "Profibus node (SADR = 0) reports its receive data buffer too small: the data length of the "
+    "selected GSD module is too small",
+    "Profibus-Knoten (SADR = 0) schickt „Empfangs-Datenpuffer zu klein“: die definierte Datenlänge "
+    "des GSD-Moduls ist zu gering gewählt"};
 
 using Table = std::array<const LocalText *, 12>; // index = code - 1; nullptr = not listed
 
 // OPAT manual §2.3 (CMD 3).
-const Table kOpatRead{&kCommandNotSupported, &kWrongId,       &kBadCount,     &kReadFailed,
-                      &kTimeoutOrCount,      &kChecksumCan,   &kInvalidSlaveCount, &kTimeoutSlave,
-                      &kOpatBufferSmall,     &kNoCanBuffer,   &kSlaveErrorByte, &kDuplicateAddress};
+const Table kOpatRead{&kCommandNotSupported, &kWrongId,        &kBadCount,
+                      &kReadFailed,          &kTimeoutOrCount, &kChecksumCan,
+                      &kInvalidSlaveCount,   &kTimeoutSlave,   &kOpatBufferSmall,
+                      &kNoCanBuffer,         &kSlaveErrorByte, &kDuplicateAddress};
 // OPAT manual §2.6 (CMD 6).
-const Table kOpatWrite{&kCommandNotSupported, &kWrongId,     &kWrongData,    &kWriteFailed,
-                       &kTimeoutOrCount,      &kChecksumCan, &kInvalidSlaveCount, &kTimeoutSlave,
-                       &kOpatBufferSmall,     &kNoCanBuffer, &kSlaveErrorByte, &kDuplicateAddress};
+const Table kOpatWrite{&kCommandNotSupported, &kWrongId,        &kWrongData,
+                       &kWriteFailed,         &kTimeoutOrCount, &kChecksumCan,
+                       &kInvalidSlaveCount,   &kTimeoutSlave,   &kOpatBufferSmall,
+                       &kNoCanBuffer,         &kSlaveErrorByte, &kDuplicateAddress};
 // OPAT manual §3.3 (CMD 15): 5 and 6 differ from the CMD 3/6 tables.
-const Table kOpatCyclic{&kCommandNotSupported, &kWrongId,        &kWrongData,    &kWriteFailed,
-                        &kTimeoutCan,          &kChecksumModbus, &kInvalidSlaveCount, &kTimeoutSlave,
-                        &kOpatBufferSmall,     &kNoCanBuffer,    &kSlaveErrorByte, &kDuplicateAddress};
+const Table kOpatCyclic{&kCommandNotSupported, &kWrongId,        &kWrongData,
+                        &kWriteFailed,         &kTimeoutCan,     &kChecksumModbus,
+                        &kInvalidSlaveCount,   &kTimeoutSlave,   &kOpatBufferSmall,
+                        &kNoCanBuffer,         &kSlaveErrorByte, &kDuplicateAddress};
 // DMA Profinet manual §3.3 / DMA Profibus Anleitung §3.3 (CMD 3).
-const Table kDmaRead{&kCommandNotSupported, &kWrongId, &kBadCount, &kReadFailed, &kTimeoutOrCount, &kChecksumModbus,
-                     nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+const Table kDmaRead{&kCommandNotSupported,
+                     &kWrongId,
+                     &kBadCount,
+                     &kReadFailed,
+                     &kTimeoutOrCount,
+                     &kChecksumModbus,
+                     nullptr,
+                     nullptr,
+                     nullptr,
+                     nullptr,
+                     nullptr,
+                     nullptr};
 // DMA Profinet manual §3.6 (CMD 6).
-const Table kDmaWrite{&kCommandNotSupported, &kWrongId, &kWrongData, &kWriteFailed, &kTimeoutOrCount, &kChecksumModbus,
-                      nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+const Table kDmaWrite{&kCommandNotSupported,
+                      &kWrongId,
+                      &kWrongData,
+                      &kWriteFailed,
+                      &kTimeoutOrCount,
+                      &kChecksumModbus,
+                      nullptr,
+                      nullptr,
+                      nullptr,
+                      nullptr,
+                      nullptr,
+                      nullptr};
 // DMA Profinet manual §4.3 / DMA Profibus Anleitung §4.3 (CMD 15).
-const Table kDmaCyclic{&kCommandNotSupported, &kWrongId,           &kWrongData,    &kWriteFailed,
-                       &kTimeoutModbus,       &kChecksumModbus,    &kInvalidSlaveCount, &kTimeoutSlave,
-                       &kDmaBufferSmall,      nullptr,             nullptr,        nullptr};
+const Table kDmaCyclic{&kCommandNotSupported,
+                       &kWrongId,
+                       &kWrongData,
+                       &kWriteFailed,
+                       &kTimeoutModbus,
+                       &kChecksumModbus,
+                       &kInvalidSlaveCount,
+                       &kTimeoutSlave,
+                       &kDmaBufferSmall,
+                       nullptr,
+                       nullptr,
+                       nullptr};
 
 const Table *tableFor(Family family, std::uint8_t command)
 {

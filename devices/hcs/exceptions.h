@@ -2,9 +2,8 @@
 // German; Modbus exception responses reuse these meanings (ARCHITECTURE.md "Protocol decisions").
 #pragma once
 
-#include "types.h"
-
 #include "core/local_text.h"
+#include "types.h"
 
 #include <cstdint>
 #include <optional>

@@ -2,9 +2,8 @@
 // bits the version uses (OPAT manual §3.5, DMA Profinet manual §4.5, DMA Profibus Anleitung §4.5).
 #pragma once
 
-#include "types.h"
-
 #include "core/local_text.h"
+#include "types.h"
 
 #include <cstdint>
 #include <optional>
@@ -42,13 +41,13 @@ struct ProfileInfo
 {
     Profile profile;
     Family family;
-    std::string_view key;    // "dma-v32-mode6": stable name for options and the CLI
-    LocalText title;         // "DMA V32, mode 6 (closed loop)"
-    std::string_view source; // manual and section
-    ValueMeaning request1;   // DATx.2 of the request
-    ValueMeaning request2;   // DATx.3 of the request
-    ValueMeaning response1;  // DAT.2 (VALUE1) of the response
-    ValueMeaning response2;  // DAT.3 (VALUE2) of the response
+    std::string_view key;       // "dma-v32-mode6": stable name for options and the CLI
+    LocalText title;            // "DMA V32, mode 6 (closed loop)"
+    std::string_view source;    // manual and section
+    ValueMeaning request1;      // DATx.2 of the request
+    ValueMeaning request2;      // DATx.3 of the request
+    ValueMeaning response1;     // DAT.2 (VALUE1) of the response
+    ValueMeaning response2;     // DAT.3 (VALUE2) of the response
     std::uint8_t controlBits;   // control-byte bits the version uses; the others are reserved
     std::uint8_t statusLowBits; // status low-byte signal bits the version reports
 };

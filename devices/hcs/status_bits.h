@@ -2,10 +2,9 @@
 // profile, and the error numbers a module reports in the status low byte when ERROR is set.
 #pragma once
 
+#include "core/local_text.h"
 #include "profiles.h"
 #include "types.h"
-
-#include "core/local_text.h"
 
 #include <array>
 #include <cstdint>
@@ -40,7 +39,7 @@ struct BitMeaning
     std::uint8_t mask = 0;
     std::string_view name; // manual name: "BUS_DISABLE", "Din_1", "STAT_5"
     LocalText text;
-    bool used = false;     // false: "not applicable, reserved" in this version / mode
+    bool used = false; // false: "not applicable, reserved" in this version / mode
 };
 
 std::array<BitMeaning, 8> controlBits(Profile profile);

@@ -35,7 +35,8 @@ bool isKnownCommand(std::uint8_t cmd)
 std::optional<DecodeError> checkEnd(const ByteReader &r, const DecodeOptions &options)
 {
     if (!r.atEnd() && !options.allowPadding)
-        return tooLong(r, std::to_string(r.data().size() - r.offset()) + " bytes after the telegram");
+        return tooLong(r,
+                       std::to_string(r.data().size() - r.offset()) + " bytes after the telegram");
     return std::nullopt;
 }
 
@@ -59,11 +60,13 @@ std::optional<DecodeError> readHeader(ByteReader &r, Header &h)
 
 DecodeError unexpected(std::uint8_t cmd, std::string_view expected)
 {
-    return decodeError(DecodeErrc::UnexpectedCommand, 2, "got " + hexByte(cmd) + ", expected " + std::string(expected));
+    return decodeError(DecodeErrc::UnexpectedCommand, 2,
+                       "got " + hexByte(cmd) + ", expected " + std::string(expected));
 }
 
 // The body of an error frame after its header: EXCE (OPAT manual §2.3).
-Result<ExceptionResponse, DecodeError> exceptionBody(ByteReader &r, const Header &h, const DecodeOptions &options)
+Result<ExceptionResponse, DecodeError> exceptionBody(ByteReader &r, const Header &h,
+                                                     const DecodeOptions &options)
 {
     const auto base = static_cast<std::uint8_t>(h.cmd & ~kErrorBit);
     if (!isKnownCommand(base))
@@ -78,12 +81,14 @@ Result<ExceptionResponse, DecodeError> exceptionBody(ByteReader &r, const Header
 
 DecodeError deviceException(const ExceptionResponse &e)
 {
-    DecodeError err = decodeError(DecodeErrc::DeviceException, 3, "ERR " + hexByte(e.err()) + " EXCE " + std::to_string(e.code));
+    DecodeError err = decodeError(DecodeErrc::DeviceException, 3,
+                                  "ERR " + hexByte(e.err()) + " EXCE " + std::to_string(e.code));
     err.deviceCode = e.code;
     return err;
 }
 
-Result<ReadRequest, DecodeError> readRequestBody(ByteReader &r, const Header &h, const DecodeOptions &options)
+Result<ReadRequest, DecodeError> readRequestBody(ByteReader &r, const Header &h,
+                                                 const DecodeOptions &options)
 {
     ReadRequest q{h.tadr, h.address, r.u16be(), r.u16be()};
     if (r.failed())
@@ -93,26 +98,29 @@ Result<ReadRequest, DecodeError> readRequestBody(ByteReader &r, const Header &h,
     return q;
 }
 
-Result<ReadResponse, DecodeError> readResponseBody(ByteReader &r, const Header &h, const DecodeOptions &options)
+Result<ReadResponse, DecodeError> readResponseBody(ByteReader &r, const Header &h,
+                                                   const DecodeOptions &options)
 {
     // OPAT manual §2.2: CNT = N*2, number of data bytes; the telegram has 4 + CNT bytes.
     const std::uint8_t cnt = r.u8();
     if (r.failed())
         return truncated(r, "a CMD 3 response needs CNT at byte 3");
     if (cnt % 2 != 0)
-        return decodeError(DecodeErrc::BadLength, 3, "CNT " + std::to_string(cnt) + " is odd; it counts 16-bit values");
+        return decodeError(DecodeErrc::BadLength, 3,
+                           "CNT " + std::to_string(cnt) + " is odd; it counts 16-bit values");
     ReadResponse a{h.tadr, h.address, {}};
     a.values.reserve(cnt / 2u);
     for (unsigned i = 0; i < cnt / 2u; ++i)
         a.values.push_back(r.u16be());
     if (r.failed())
-        return truncated(r, "CNT " + std::to_string(cnt) + " announces " + std::to_string(cnt) + " data bytes");
+        return truncated(r, "CNT " + std::to_string(cnt) + " announces " + std::to_string(cnt) +
+                                " data bytes");
     if (auto end = checkEnd(r, options))
         return *end;
     return a;
 }
 
-template <typename T>
+template<typename T>
 Result<T, DecodeError> writeBody(ByteReader &r, const Header &h, const DecodeOptions &options)
 {
     T w{h.tadr, h.address, r.u16be(), r.u16be()};
@@ -124,8 +132,7 @@ Result<T, DecodeError> writeBody(ByteReader &r, const Header &h, const DecodeOpt
 }
 
 // Converts Result<T> into Result<Variant>.
-template <typename V, typename T>
-Result<V, DecodeError> widen(Result<T, DecodeError> r)
+template<typename V, typename T> Result<V, DecodeError> widen(Result<T, DecodeError> r)
 {
     if (!r.ok())
         return r.error();
@@ -144,7 +151,8 @@ Bytes encode(const ReadRequest &q)
 Result<Bytes, DecodeError> encode(const ReadResponse &a)
 {
     if (a.values.size() > 127)
-        return decodeError(DecodeErrc::BadValue, 3, std::to_string(a.values.size()) + " values do not fit the one-byte CNT");
+        return decodeError(DecodeErrc::BadValue, 3,
+                           std::to_string(a.values.size()) + " values do not fit the one-byte CNT");
     ByteWriter w;
     w.u8(a.tadr).u8(a.sadr).u8(kCmdRead).u8(static_cast<std::uint8_t>(a.values.size() * 2));
     for (std::uint16_t v : a.values)
@@ -188,16 +196,18 @@ Result<Bytes, DecodeError> encode(const Request &request, Family family)
 
 Result<Bytes, DecodeError> encode(const Response &response)
 {
-    return std::visit([](const auto &a) -> Result<Bytes, DecodeError> { return encode(a); }, response);
+    return std::visit([](const auto &a) -> Result<Bytes, DecodeError> { return encode(a); },
+                      response);
 }
 
 namespace {
 
 // The typed decoders share this: header, then CMD must be `cmd`; in a response the matching
 // error frame (cmd | 0x80, OPAT manual §2.3) becomes DecodeErrc::DeviceException.
-template <typename T, typename Body>
-Result<T, DecodeError> decodeTyped(std::span<const std::uint8_t> frame, const DecodeOptions &options,
-                                   std::uint8_t cmd, bool response, Body body)
+template<typename T, typename Body>
+Result<T, DecodeError> decodeTyped(std::span<const std::uint8_t> frame,
+                                   const DecodeOptions &options, std::uint8_t cmd, bool response,
+                                   Body body)
 {
     ByteReader r(frame);
     Header h;
@@ -209,39 +219,47 @@ Result<T, DecodeError> decodeTyped(std::span<const std::uint8_t> frame, const De
         return e.ok() ? deviceException(*e) : e.error();
     }
     if (h.cmd != cmd)
-        return unexpected(h.cmd, std::to_string(cmd) + (response ? " or " + hexByte(errorCmd) : std::string()));
+        return unexpected(h.cmd, std::to_string(cmd) +
+                                     (response ? " or " + hexByte(errorCmd) : std::string()));
     return body(r, h);
 }
 
 } // namespace
 
-Result<ReadRequest, DecodeError> decodeReadRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<ReadRequest, DecodeError> decodeReadRequest(std::span<const std::uint8_t> frame,
+                                                   const DecodeOptions &options)
 {
-    return decodeTyped<ReadRequest>(frame, options, kCmdRead, false,
-                                    [&](ByteReader &r, const Header &h) { return readRequestBody(r, h, options); });
+    return decodeTyped<ReadRequest>(
+        frame, options, kCmdRead, false,
+        [&](ByteReader &r, const Header &h) { return readRequestBody(r, h, options); });
 }
 
-Result<ReadResponse, DecodeError> decodeReadResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<ReadResponse, DecodeError> decodeReadResponse(std::span<const std::uint8_t> frame,
+                                                     const DecodeOptions &options)
 {
-    return decodeTyped<ReadResponse>(frame, options, kCmdRead, true,
-                                     [&](ByteReader &r, const Header &h) { return readResponseBody(r, h, options); });
+    return decodeTyped<ReadResponse>(
+        frame, options, kCmdRead, true,
+        [&](ByteReader &r, const Header &h) { return readResponseBody(r, h, options); });
 }
 
-Result<WriteRequest, DecodeError> decodeWriteRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<WriteRequest, DecodeError> decodeWriteRequest(std::span<const std::uint8_t> frame,
+                                                     const DecodeOptions &options)
 {
-    return decodeTyped<WriteRequest>(frame, options, kCmdWrite, false, [&](ByteReader &r, const Header &h) {
-        return writeBody<WriteRequest>(r, h, options);
-    });
+    return decodeTyped<WriteRequest>(
+        frame, options, kCmdWrite, false,
+        [&](ByteReader &r, const Header &h) { return writeBody<WriteRequest>(r, h, options); });
 }
 
-Result<WriteResponse, DecodeError> decodeWriteResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<WriteResponse, DecodeError> decodeWriteResponse(std::span<const std::uint8_t> frame,
+                                                       const DecodeOptions &options)
 {
-    return decodeTyped<WriteResponse>(frame, options, kCmdWrite, true, [&](ByteReader &r, const Header &h) {
-        return writeBody<WriteResponse>(r, h, options);
-    });
+    return decodeTyped<WriteResponse>(
+        frame, options, kCmdWrite, true,
+        [&](ByteReader &r, const Header &h) { return writeBody<WriteResponse>(r, h, options); });
 }
 
-Result<ExceptionResponse, DecodeError> decodeExceptionResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<ExceptionResponse, DecodeError> decodeExceptionResponse(std::span<const std::uint8_t> frame,
+                                                               const DecodeOptions &options)
 {
     ByteReader r(frame);
     Header h;
@@ -252,7 +270,8 @@ Result<ExceptionResponse, DecodeError> decodeExceptionResponse(std::span<const s
     return exceptionBody(r, h, options);
 }
 
-Result<Request, DecodeError> decodeRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<Request, DecodeError> decodeRequest(std::span<const std::uint8_t> frame,
+                                           const DecodeOptions &options)
 {
     ByteReader r(frame);
     Header h;
@@ -266,7 +285,8 @@ Result<Request, DecodeError> decodeRequest(std::span<const std::uint8_t> frame, 
     }
 }
 
-Result<Response, DecodeError> decodeResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options)
+Result<Response, DecodeError> decodeResponse(std::span<const std::uint8_t> frame,
+                                             const DecodeOptions &options)
 {
     ByteReader r(frame);
     Header h;

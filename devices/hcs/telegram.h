@@ -3,11 +3,10 @@
 #pragma once
 
 #include "cmd15.h"
-#include "types.h"
-
 #include "core/byte_writer.h"
 #include "core/decode_error.h"
 #include "core/result.h"
+#include "types.h"
 
 #include <cstdint>
 #include <span>
@@ -27,7 +26,8 @@ struct ReadRequest
     bool operator==(const ReadRequest &) const = default;
 };
 
-// CMD 3 response, 4 + CNT bytes: TADR SADR 3 CNT DAT1H DAT1L … (OPAT manual §2.2). CNT = 2 × values.
+// CMD 3 response, 4 + CNT bytes: TADR SADR 3 CNT DAT1H DAT1L … (OPAT manual §2.2). CNT = 2 ×
+// values.
 struct ReadResponse
 {
     std::uint8_t tadr = 0;
@@ -74,8 +74,14 @@ struct ExceptionResponse
 using Request = std::variant<ReadRequest, WriteRequest, CyclicRequest>;
 using Response = std::variant<ReadResponse, WriteResponse, CyclicResponse, ExceptionResponse>;
 
-inline std::int16_t asSigned(std::uint16_t raw) { return static_cast<std::int16_t>(raw); }
-inline std::uint16_t asRaw(std::int16_t value) { return static_cast<std::uint16_t>(value); }
+inline std::int16_t asSigned(std::uint16_t raw)
+{
+    return static_cast<std::int16_t>(raw);
+}
+inline std::uint16_t asRaw(std::int16_t value)
+{
+    return static_cast<std::uint16_t>(value);
+}
 
 Bytes encode(const ReadRequest &request);
 Bytes encode(const WriteRequest &request);
@@ -88,15 +94,22 @@ Result<Bytes, DecodeError> encode(const Response &response);
 
 // Typed decoders: CMD must match (UnexpectedCommand at offset 2 otherwise). Response decoders
 // turn the matching error frame into DecodeErrc::DeviceException (offset 3, deviceCode = EXCE).
-Result<ReadRequest, DecodeError> decodeReadRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
-Result<ReadResponse, DecodeError> decodeReadResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
-Result<WriteRequest, DecodeError> decodeWriteRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
-Result<WriteResponse, DecodeError> decodeWriteResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
-Result<ExceptionResponse, DecodeError> decodeExceptionResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
+Result<ReadRequest, DecodeError> decodeReadRequest(std::span<const std::uint8_t> frame,
+                                                   const DecodeOptions &options = {});
+Result<ReadResponse, DecodeError> decodeReadResponse(std::span<const std::uint8_t> frame,
+                                                     const DecodeOptions &options = {});
+Result<WriteRequest, DecodeError> decodeWriteRequest(std::span<const std::uint8_t> frame,
+                                                     const DecodeOptions &options = {});
+Result<WriteResponse, DecodeError> decodeWriteResponse(std::span<const std::uint8_t> frame,
+                                                       const DecodeOptions &options = {});
+Result<ExceptionResponse, DecodeError> decodeExceptionResponse(std::span<const std::uint8_t> frame,
+                                                               const DecodeOptions &options = {});
 
 // Any command. A response whose CMD has bit 7 set is an error frame (OPAT manual §2.3) and
 // decodes to ExceptionResponse; options.family decides the CMD 15 request length (cmd15.h).
-Result<Request, DecodeError> decodeRequest(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
-Result<Response, DecodeError> decodeResponse(std::span<const std::uint8_t> frame, const DecodeOptions &options = {});
+Result<Request, DecodeError> decodeRequest(std::span<const std::uint8_t> frame,
+                                           const DecodeOptions &options = {});
+Result<Response, DecodeError> decodeResponse(std::span<const std::uint8_t> frame,
+                                             const DecodeOptions &options = {});
 
 } // namespace vt::dev::hcs

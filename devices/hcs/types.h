@@ -15,7 +15,7 @@ namespace vt::dev::hcs {
 // DMA: DMA-2 modules behind a Profinet / Profibus node, SADR = E22 (DMA Profinet manual §1.5).
 enum class Family : std::uint8_t { Opat, Dma };
 
-std::string_view familyName(Family family);                   // "opat" / "dma"
+std::string_view familyName(Family family);                  // "opat" / "dma"
 std::optional<Family> familyFromName(std::string_view name); // inverse, for options and the CLI
 
 // OPAT manual §1.6, DMA Profinet manual §1.5: the three node commands.

@@ -1,7 +1,5 @@
 #include "describe_any.h"
 
-#include "logged_frame.h"
-
 #include "canopen/sdo.h"
 #include "dict/cooking.h"
 #include "dsp408/pkw.h"
@@ -9,6 +7,7 @@
 #include "hart/describe.h"
 #include "hcs/describe.h"
 #include "hcs/profiles.h"
+#include "logged_frame.h"
 #include "modbus/describe.h"
 #include "profidrive/describe.h"
 
@@ -16,9 +15,9 @@ namespace vt::dev {
 
 const std::vector<Protocol> &allProtocols()
 {
-    static const std::vector<Protocol> all = {Protocol::Gateway, Protocol::ModbusRtu, Protocol::ModbusTcp,
-                                              Protocol::Profidrive, Protocol::Pkw, Protocol::Pzd,
-                                              Protocol::Hart, Protocol::Canopen};
+    static const std::vector<Protocol> all = {
+        Protocol::Gateway, Protocol::ModbusRtu, Protocol::ModbusTcp, Protocol::Profidrive,
+        Protocol::Pkw,     Protocol::Pzd,       Protocol::Hart,      Protocol::Canopen};
     return all;
 }
 
@@ -48,11 +47,15 @@ std::optional<Protocol> protocolFromName(std::string_view name)
 namespace {
 
 // HCS parameter names and cooked values: one definition, shared with the telegram log.
-hcs::ParameterHooks hooksFor(const Dictionary *dict) { return inspect::parameterHooks(dict); }
+hcs::ParameterHooks hooksFor(const Dictionary *dict)
+{
+    return inspect::parameterHooks(dict);
+}
 
 } // namespace
 
-Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes, const AnyOptions &options)
+Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes,
+                                             const AnyOptions &options)
 {
     std::optional<hcs::Profile> profile;
     if (!options.profile.empty()) {
@@ -67,15 +70,15 @@ Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes
     node.parameters = hooksFor(options.dictionary);
 
     switch (options.protocol) {
-    case Protocol::Gateway:
-        return hcs::describe(bytes, node);
+    case Protocol::Gateway: return hcs::describe(bytes, node);
     case Protocol::ModbusRtu:
     case Protocol::ModbusTcp: {
         modbus::DescribeOptions o;
         o.direction = options.direction;
         o.family = options.family;
         o.parameters = node.parameters;
-        return options.protocol == Protocol::ModbusRtu ? modbus::describeRtu(bytes, o) : modbus::describeTcp(bytes, o);
+        return options.protocol == Protocol::ModbusRtu ? modbus::describeRtu(bytes, o)
+                                                       : modbus::describeTcp(bytes, o);
     }
     case Protocol::Profidrive: {
         profidrive::DescribeOptions o;
@@ -88,10 +91,10 @@ Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes
     case Protocol::Pzd: {
         dsp408::Options o;
         o.direction = options.direction;
-        return options.protocol == Protocol::Pkw ? dsp408::describePkw(bytes, o) : dsp408::describeTelegram(bytes, o);
+        return options.protocol == Protocol::Pkw ? dsp408::describePkw(bytes, o)
+                                                 : dsp408::describeTelegram(bytes, o);
     }
-    case Protocol::Hart:
-        return hart::describeFrame(bytes);
+    case Protocol::Hart: return hart::describeFrame(bytes);
     case Protocol::Canopen: {
         canopen::DescribeOptions o;
         o.cobId = options.cobId;

@@ -29,7 +29,8 @@ std::vector<Bytes> RtuDeframer::feed(std::span<const std::uint8_t> bytes)
             break;
         }
         if (rtuCrcOk(buf.first(*length))) {
-            frames.emplace_back(m_buffer.begin(), m_buffer.begin() + static_cast<std::ptrdiff_t>(*length));
+            frames.emplace_back(m_buffer.begin(),
+                                m_buffer.begin() + static_cast<std::ptrdiff_t>(*length));
             drop(*length, false);
         } else {
             drop(1, true); // a corrupt frame or noise: resynchronise one byte further
@@ -80,7 +81,8 @@ std::vector<Bytes> TcpDeframer::feed(std::span<const std::uint8_t> bytes)
     m_buffer.insert(m_buffer.end(), bytes.begin(), bytes.end());
     std::size_t at = 0;
     while (m_buffer.size() - at >= kMbapSize) {
-        const std::span<const std::uint8_t> rest = std::span<const std::uint8_t>(m_buffer).subspan(at);
+        const std::span<const std::uint8_t> rest =
+            std::span<const std::uint8_t>(m_buffer).subspan(at);
         auto header = decodeMbap(rest);
         if (!header.ok()) {
             m_error = header.error();

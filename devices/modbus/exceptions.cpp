@@ -19,11 +19,14 @@ const std::array<Named, 9> kNames{{
     {2, {"illegal data address", "unzulässige Datenadresse"}},
     {3, {"illegal data value", "unzulässiger Datenwert"}},
     {4, {"server device failure", "Fehler im Slave-Gerät"}},
-    {5, {"acknowledge (request accepted, processing takes long)", "Bestätigung (Auftrag angenommen, Bearbeitung dauert)"}},
+    {5,
+     {"acknowledge (request accepted, processing takes long)",
+      "Bestätigung (Auftrag angenommen, Bearbeitung dauert)"}},
     {6, {"server device busy", "Slave-Gerät beschäftigt"}},
     {8, {"memory parity error", "Speicher-Paritätsfehler"}},
     {10, {"gateway path unavailable", "Gateway-Pfad nicht verfügbar"}},
-    {11, {"gateway target device failed to respond", "Zielgerät hinter dem Gateway antwortet nicht"}},
+    {11,
+     {"gateway target device failed to respond", "Zielgerät hinter dem Gateway antwortet nicht"}},
 }};
 
 } // namespace
@@ -44,7 +47,8 @@ std::optional<LocalText> hcsMeaning(std::uint8_t function, std::uint8_t code, hc
 LocalText exceptionText(std::uint8_t function, std::uint8_t code, hcs::Family family)
 {
     const std::string n = std::to_string(code);
-    LocalText out = exceptionName(code).value_or(LocalText{"exception " + n + " (not a standard code)", "Ausnahme " + n + " (kein Standardcode)"});
+    LocalText out = exceptionName(code).value_or(LocalText{
+        "exception " + n + " (not a standard code)", "Ausnahme " + n + " (kein Standardcode)"});
     if (auto hcs = hcsMeaning(function, code, family)) {
         out.en += " — HCS: " + hcs->en;
         out.de += " — HCS: " + hcs->de;

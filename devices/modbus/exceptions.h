@@ -2,9 +2,8 @@
 // code means coming from an HCS module (ARCHITECTURE.md "Protocol decisions").
 #pragma once
 
-#include "hcs/types.h"
-
 #include "core/local_text.h"
+#include "hcs/types.h"
 
 #include <cstdint>
 #include <optional>

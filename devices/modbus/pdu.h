@@ -78,8 +78,10 @@ Result<Bytes, DecodeError> encodePdu(const ResponsePdu &pdu);
 
 // Decode a whole PDU. Offsets in errors are relative to the PDU plus `base` (its offset in the
 // ADU), so RTU/TCP errors point into the frame. Unknown function codes: UnexpectedCommand.
-Result<RequestPdu, DecodeError> decodeRequestPdu(std::span<const std::uint8_t> pdu, std::size_t base = 0);
-Result<ResponsePdu, DecodeError> decodeResponsePdu(std::span<const std::uint8_t> pdu, std::size_t base = 0);
+Result<RequestPdu, DecodeError> decodeRequestPdu(std::span<const std::uint8_t> pdu,
+                                                 std::size_t base = 0);
+Result<ResponsePdu, DecodeError> decodeResponsePdu(std::span<const std::uint8_t> pdu,
+                                                   std::size_t base = 0);
 
 // Length of the PDU that starts `pdu` as far as its first bytes tell (for de-framing):
 // 0 = not enough bytes yet to know; nullopt = a function code this codec does not frame.

@@ -1,10 +1,9 @@
 #include "rtu.h"
 
-#include "crc.h"
-
 #include "core/byte_reader.h"
 #include "core/decode_helpers.h"
 #include "core/hex.h"
+#include "crc.h"
 
 #include <string>
 
@@ -26,7 +25,8 @@ Result<Bytes, DecodeError> wrap(std::uint8_t unit, Result<Bytes, DecodeError> pd
 }
 
 // Structure and CRC checks shared by both directions; on success `pdu` is the PDU span.
-std::optional<DecodeError> frameChecks(std::span<const std::uint8_t> adu, Direction direction, std::span<const std::uint8_t> &pdu)
+std::optional<DecodeError> frameChecks(std::span<const std::uint8_t> adu, Direction direction,
+                                       std::span<const std::uint8_t> &pdu)
 {
     ByteReader r(adu);
     (void)r.u8();
@@ -35,19 +35,23 @@ std::optional<DecodeError> frameChecks(std::span<const std::uint8_t> adu, Direct
         return truncated(r, "an RTU frame starts with unit id and function code");
     const auto length = rtuFrameLength(adu, direction);
     if (!length)
-        return decodeError(DecodeErrc::UnexpectedCommand, 1, "function code " + hexByte(fc) + "; this codec handles 3 and 6");
+        return decodeError(DecodeErrc::UnexpectedCommand, 1,
+                           "function code " + hexByte(fc) + "; this codec handles 3 and 6");
     if (*length == 0 || adu.size() < *length)
         return decodeError(DecodeErrc::Truncated, adu.size(),
-                           *length == 0 ? std::string("the header is incomplete")
-                                        : "the header announces " + std::to_string(*length) + " bytes");
+                           *length == 0
+                               ? std::string("the header is incomplete")
+                               : "the header announces " + std::to_string(*length) + " bytes");
     if (adu.size() > *length)
-        return decodeError(DecodeErrc::TooLong, *length, std::to_string(adu.size() - *length) + " bytes after the CRC");
+        return decodeError(DecodeErrc::TooLong, *length,
+                           std::to_string(adu.size() - *length) + " bytes after the CRC");
     ByteReader c(adu);
     c.skip(*length - 2);
     const std::uint16_t got = c.u16le();
     const std::uint16_t want = crc16(adu.first(*length - 2));
     if (got != want)
-        return decodeError(DecodeErrc::BadChecksum, *length - 2, "CRC " + hexWord(got) + ", computed " + hexWord(want));
+        return decodeError(DecodeErrc::BadChecksum, *length - 2,
+                           "CRC " + hexWord(got) + ", computed " + hexWord(want));
     pdu = adu.subspan(1, *length - kRtuOverhead);
     return std::nullopt;
 }

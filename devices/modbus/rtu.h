@@ -2,12 +2,11 @@
 // V1.02 §2.5.1) — the frame ValveTune speaks to HCS modules on RS232/RS485 (ARCHITECTURE.md).
 #pragma once
 
-#include "pdu.h"
-
 #include "core/byte_writer.h"
 #include "core/decode_error.h"
 #include "core/direction.h"
 #include "core/result.h"
+#include "pdu.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -8,7 +8,8 @@
 namespace vt::dev::modbus {
 namespace {
 
-Result<Bytes, DecodeError> wrap(std::uint16_t transaction, std::uint8_t unit, Result<Bytes, DecodeError> pdu)
+Result<Bytes, DecodeError> wrap(std::uint16_t transaction, std::uint8_t unit,
+                                Result<Bytes, DecodeError> pdu)
 {
     if (!pdu.ok()) {
         DecodeError e = pdu.error();
@@ -16,21 +17,29 @@ Result<Bytes, DecodeError> wrap(std::uint16_t transaction, std::uint8_t unit, Re
         return e;
     }
     ByteWriter w;
-    w.u16be(transaction).u16be(0).u16be(static_cast<std::uint16_t>(pdu->size() + 1)).u8(unit).bytes(*pdu);
+    w.u16be(transaction)
+        .u16be(0)
+        .u16be(static_cast<std::uint16_t>(pdu->size() + 1))
+        .u8(unit)
+        .bytes(*pdu);
     return w.take();
 }
 
 // Header and length checks; on success `pdu` is the PDU span.
-Result<Mbap, DecodeError> frame(std::span<const std::uint8_t> adu, std::span<const std::uint8_t> &pdu)
+Result<Mbap, DecodeError> frame(std::span<const std::uint8_t> adu,
+                                std::span<const std::uint8_t> &pdu)
 {
     auto m = decodeMbap(adu);
     if (!m.ok())
         return m;
     const std::size_t size = m->aduSize();
     if (adu.size() < size)
-        return decodeError(DecodeErrc::Truncated, adu.size(), "MBAP length " + std::to_string(m->length) + " announces " + std::to_string(size) + " bytes");
+        return decodeError(DecodeErrc::Truncated, adu.size(),
+                           "MBAP length " + std::to_string(m->length) + " announces " +
+                               std::to_string(size) + " bytes");
     if (adu.size() > size)
-        return decodeError(DecodeErrc::TooLong, size, std::to_string(adu.size() - size) + " bytes after the ADU");
+        return decodeError(DecodeErrc::TooLong, size,
+                           std::to_string(adu.size() - size) + " bytes after the ADU");
     pdu = adu.subspan(kMbapSize, size - kMbapSize);
     return m;
 }
@@ -48,9 +57,12 @@ Result<Mbap, DecodeError> decodeMbap(std::span<const std::uint8_t> bytes)
     if (r.failed())
         return truncated(r, "the MBAP header has 7 bytes");
     if (m.protocol != 0)
-        return decodeError(DecodeErrc::BadValue, 2, "protocol id " + std::to_string(m.protocol) + " is not 0 (Modbus)");
+        return decodeError(DecodeErrc::BadValue, 2,
+                           "protocol id " + std::to_string(m.protocol) + " is not 0 (Modbus)");
     if (m.length < kMinMbapLength || m.length > kMaxMbapLength)
-        return decodeError(DecodeErrc::BadLength, 4, "MBAP length " + std::to_string(m.length) + " outside 2..254 (ADU ≤ 260 bytes)");
+        return decodeError(DecodeErrc::BadLength, 4,
+                           "MBAP length " + std::to_string(m.length) +
+                               " outside 2..254 (ADU ≤ 260 bytes)");
     return m;
 }
 

@@ -2,11 +2,10 @@
 // §3.1.3): ValveTune's link to a gateway or the simulator over TCP (ARCHITECTURE.md).
 #pragma once
 
-#include "pdu.h"
-
 #include "core/byte_writer.h"
 #include "core/decode_error.h"
 #include "core/result.h"
+#include "pdu.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -14,8 +13,8 @@
 
 namespace vt::dev::modbus {
 
-inline constexpr std::size_t kMbapSize = 7;      // transaction(2) protocol(2) length(2) unit(1)
-inline constexpr std::size_t kMaxTcpAdu = 260;   // 7 + 253 (Implementation Guide §4.2)
+inline constexpr std::size_t kMbapSize = 7;    // transaction(2) protocol(2) length(2) unit(1)
+inline constexpr std::size_t kMaxTcpAdu = 260; // 7 + 253 (Implementation Guide §4.2)
 // The length field counts the unit id and the PDU: 2..254, so that an ADU never exceeds 260.
 inline constexpr std::uint16_t kMinMbapLength = 2;
 inline constexpr std::uint16_t kMaxMbapLength = 254;

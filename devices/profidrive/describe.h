@@ -2,10 +2,9 @@
 // behind it) field by field for the inspector and the CLI (STYLE.md rule 7).
 #pragma once
 
-#include "hcs/describe.h"
-
 #include "core/direction.h"
 #include "core/field_span.h"
+#include "hcs/describe.h"
 
 #include <cstdint>
 #include <span>

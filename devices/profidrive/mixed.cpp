@@ -31,7 +31,8 @@ Bytes encode(const MixedResponse &response)
     return w.take();
 }
 
-Result<MixedRequest, DecodeError> decodeMixedRequest(std::span<const std::uint8_t> image, const hcs::DecodeOptions &options)
+Result<MixedRequest, DecodeError> decodeMixedRequest(std::span<const std::uint8_t> image,
+                                                     const hcs::DecodeOptions &options)
 {
     auto drive = decodeSetpoint(image, true);
     if (!drive.ok())
@@ -42,7 +43,8 @@ Result<MixedRequest, DecodeError> decodeMixedRequest(std::span<const std::uint8_
     return MixedRequest{*drive, std::move(node).value()};
 }
 
-Result<MixedResponse, DecodeError> decodeMixedResponse(std::span<const std::uint8_t> image, const hcs::DecodeOptions &options)
+Result<MixedResponse, DecodeError> decodeMixedResponse(std::span<const std::uint8_t> image,
+                                                       const hcs::DecodeOptions &options)
 {
     auto drive = decodeActual(image, true);
     if (!drive.ok())
@@ -52,9 +54,11 @@ Result<MixedResponse, DecodeError> decodeMixedResponse(std::span<const std::uint
         return shifted(node.error());
     if (auto *c = std::get_if<hcs::CyclicResponse>(&*node))
         return MixedResponse{*drive, *c};
-    if (auto *e = std::get_if<hcs::ExceptionResponse>(&*node); e != nullptr && e->command == hcs::kCmdCyclic)
+    if (auto *e = std::get_if<hcs::ExceptionResponse>(&*node);
+        e != nullptr && e->command == hcs::kCmdCyclic)
         return MixedResponse{*drive, *e};
-    return decodeError(DecodeErrc::UnexpectedCommand, kTelegram1Size + 2, "the node part of a mixed image is a CMD 15 response");
+    return decodeError(DecodeErrc::UnexpectedCommand, kTelegram1Size + 2,
+                       "the node part of a mixed image is a CMD 15 response");
 }
 
 } // namespace vt::dev::profidrive

@@ -2,14 +2,12 @@
 // telegram 1, 4 bytes) followed by a CMD 15 telegram for the node (master + CAN slaves).
 #pragma once
 
-#include "telegram1.h"
-
-#include "hcs/cmd15.h"
-#include "hcs/telegram.h"
-
 #include "core/byte_writer.h"
 #include "core/decode_error.h"
 #include "core/result.h"
+#include "hcs/cmd15.h"
+#include "hcs/telegram.h"
+#include "telegram1.h"
 
 #include <cstdint>
 #include <span>
@@ -36,13 +34,16 @@ struct MixedResponse
     bool operator==(const MixedResponse &) const = default;
 };
 
-Result<Bytes, DecodeError> encode(const MixedRequest &request, hcs::Family family = hcs::Family::Opat);
+Result<Bytes, DecodeError> encode(const MixedRequest &request,
+                                  hcs::Family family = hcs::Family::Opat);
 Bytes encode(const MixedResponse &response);
 
 // Errors from the CMD 15 part carry offsets within the whole image (4 + …).
 Result<MixedRequest, DecodeError> decodeMixedRequest(std::span<const std::uint8_t> image,
-                                                     const hcs::DecodeOptions &options = {hcs::Family::Opat, false});
+                                                     const hcs::DecodeOptions &options = {
+                                                         hcs::Family::Opat, false});
 Result<MixedResponse, DecodeError> decodeMixedResponse(std::span<const std::uint8_t> image,
-                                                       const hcs::DecodeOptions &options = {hcs::Family::Opat, false});
+                                                       const hcs::DecodeOptions &options = {
+                                                           hcs::Family::Opat, false});
 
 } // namespace vt::dev::profidrive

@@ -12,14 +12,14 @@ namespace vt::dev::profidrive {
 
 // OPAT manual §5.2.1 (PROFIdrive table "Normalized STW1 Bits") and §5.2.2 (device specific).
 namespace stw1 {
-inline constexpr std::uint16_t kOn = 1u << 0;                // OPAT: "1" = enable OPAT
-inline constexpr std::uint16_t kNoCoastStop = 1u << 1;       // no OFF2
-inline constexpr std::uint16_t kNoQuickStop = 1u << 2;       // no OFF3
+inline constexpr std::uint16_t kOn = 1u << 0;          // OPAT: "1" = enable OPAT
+inline constexpr std::uint16_t kNoCoastStop = 1u << 1; // no OFF2
+inline constexpr std::uint16_t kNoQuickStop = 1u << 2; // no OFF3
 inline constexpr std::uint16_t kEnableOperation = 1u << 3;
 inline constexpr std::uint16_t kEnableRampGenerator = 1u << 4;
 inline constexpr std::uint16_t kUnfreezeRampGenerator = 1u << 5;
 inline constexpr std::uint16_t kEnableSetpoint = 1u << 6;
-inline constexpr std::uint16_t kFaultAcknowledge = 1u << 7;  // OPAT: clears a pending error
+inline constexpr std::uint16_t kFaultAcknowledge = 1u << 7; // OPAT: clears a pending error
 inline constexpr std::uint16_t kJog1 = 1u << 8;
 inline constexpr std::uint16_t kJog2 = 1u << 9;
 inline constexpr std::uint16_t kControlByPlc = 1u << 10;
@@ -56,7 +56,7 @@ struct WordBit
     LocalText whenSet;     // meaning of 1 (with the OPAT detail where the manual gives one)
     LocalText whenClear;   // meaning of 0; empty for bits whose 0 means nothing in particular
     bool deviceSpecific = false;
-    bool used = true;      // false: no meaning defined (bit 11 and 15 on the OPAT)
+    bool used = true; // false: no meaning defined (bit 11 and 15 on the OPAT)
 };
 
 std::span<const WordBit> stw1Bits(); // 16 entries, bit 0 first

@@ -9,8 +9,9 @@
 namespace vt::dev::profidrive {
 namespace {
 
-template <typename T>
-Result<T, DecodeError> decodeWords(std::span<const std::uint8_t> bytes, bool allowTrailing, const char *what)
+template<typename T>
+Result<T, DecodeError> decodeWords(std::span<const std::uint8_t> bytes, bool allowTrailing,
+                                   const char *what)
 {
     ByteReader r(bytes);
     const std::uint16_t word = r.u16be();
@@ -50,7 +51,8 @@ Bytes encode(const Actual &a)
     return w.take();
 }
 
-Result<Setpoint, DecodeError> decodeSetpoint(std::span<const std::uint8_t> bytes, bool allowTrailing)
+Result<Setpoint, DecodeError> decodeSetpoint(std::span<const std::uint8_t> bytes,
+                                             bool allowTrailing)
 {
     return decodeWords<Setpoint>(bytes, allowTrailing, "STW1 + NSOLL_A");
 }

@@ -36,8 +36,10 @@ struct Actual
 Bytes encode(const Setpoint &setpoint);
 Bytes encode(const Actual &actual);
 // Exactly 4 bytes unless allowTrailing (then the words are the first 4 bytes of a longer image).
-Result<Setpoint, DecodeError> decodeSetpoint(std::span<const std::uint8_t> bytes, bool allowTrailing = false);
-Result<Actual, DecodeError> decodeActual(std::span<const std::uint8_t> bytes, bool allowTrailing = false);
+Result<Setpoint, DecodeError> decodeSetpoint(std::span<const std::uint8_t> bytes,
+                                             bool allowTrailing = false);
+Result<Actual, DecodeError> decodeActual(std::span<const std::uint8_t> bytes,
+                                         bool allowTrailing = false);
 
 // N2 (PROFIdrive profile, coding 113, quoted in OPAT manual §5.3): 0x4000 = 100 %, range −200 % ..
 // +200 % − 2^-14. OPAT: 100 % = 10 V. The manual also says "100% = 0x2000, means internal of the

@@ -9,7 +9,7 @@
 namespace vt::dev::sim {
 namespace {
 
-constexpr std::uint8_t kUnitPercent = 57;  // HART unit code "%"
+constexpr std::uint8_t kUnitPercent = 57; // HART unit code "%"
 constexpr std::uint8_t kUnitNotUsed = 250;
 constexpr std::uint8_t kStatusGood = 0xC0; // device variable status: good, not limited
 constexpr double kFullScale = 16384.0;     // HART-7 manual §4.8 internal bus resolution

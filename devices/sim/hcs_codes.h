@@ -16,7 +16,8 @@ inline constexpr std::uint8_t kCommandNotSupported = 1; // every table
 // "Wrong ID": also the answer to a write of a read-only or "not active" row, which the manuals
 // do not list separately (the session cannot tell them apart, and does not need to).
 inline constexpr std::uint8_t kWrongId = 2;
-// CMD 6 / 15: "Wrong data value" (out of range). CMD 3: "CNT == 0 or CNT > 16", i.e. N outside 1..8.
+// CMD 6 / 15: "Wrong data value" (out of range). CMD 3: "CNT == 0 or CNT > 16", i.e. N
+// outside 1..8.
 inline constexpr std::uint8_t kWrongData = 3;
 inline constexpr std::uint8_t kBadCount = 3;
 // CMD 6: "Writing of ID failed" — the simulator's answer to a write while the EEPROM is still

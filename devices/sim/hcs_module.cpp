@@ -38,12 +38,13 @@ hcs::Family hcsFamilyOf(const Dictionary &dict)
 
 HcsModule::HcsModule(SimClock &clock, HcsModuleConfig config)
     : m_clock(clock), m_config(std::move(config)), m_family(hcsFamilyOf(*m_config.dictionary)),
-      m_version(!m_config.version.empty() ? m_config.version
+      m_version(!m_config.version.empty()               ? m_config.version
                 : m_config.dictionary->versions.empty() ? std::string()
                                                         : m_config.dictionary->versions.front()),
       m_mode(m_config.mode != 0 ? m_config.mode
-             : m_config.dictionary->modes.empty() ? 0
-                                                  : parseInt(m_config.dictionary->modes.front(), 0)),
+             : m_config.dictionary->modes.empty()
+                 ? 0
+                 : parseInt(m_config.dictionary->modes.front(), 0)),
       m_profile(hcs::profileFor(m_family, parseInt(m_version, 0), m_mode)),
       m_storage(*m_config.dictionary, m_version, std::to_string(m_mode)),
       m_dipAddress(m_config.address), m_hwEnable(m_config.hardwareEnable)
@@ -72,8 +73,10 @@ void HcsModule::applyIdentity()
 {
     // Vers = version × 100 (docs/DICTIONARY.md "Identification"), E00 = mode: fixed by the
     // firmware, so they survive a power cycle whatever their persistence says.
-    const int versRaw = m_config.versionRaw != 0 ? m_config.versionRaw : parseInt(m_version, 0) * 100;
-    for (const auto &[name, value] : {std::pair<std::string_view, int>{"Vers", versRaw}, {"E00", m_mode}}) {
+    const int versRaw =
+        m_config.versionRaw != 0 ? m_config.versionRaw : parseInt(m_version, 0) * 100;
+    for (const auto &[name, value] :
+         {std::pair<std::string_view, int>{"Vers", versRaw}, {"E00", m_mode}}) {
         if (const ParamMeta *row = m_storage.find(name)) {
             m_storage.setRaw(*row->id, value);
             m_storage.commit(*row->id, value);
@@ -99,10 +102,16 @@ void HcsModule::buildPlants()
     };
     switch (m_mode) {
     case 1: open(1); break; // one valve with two solenoids (DMA V13 / V15)
-    case 2: open(1); open(2); break; // two valves with one solenoid each (DMA V22)
+    case 2:
+        open(1);
+        open(2);
+        break; // two valves with one solenoid each (DMA V22)
     case 6:
-    case 8: closed(1); closed(2); break; // two closed loops (OPAT, DMA V32)
-    default: closed(1); break;           // modes 3 / 4
+    case 8:
+        closed(1);
+        closed(2);
+        break;                 // two closed loops (OPAT, DMA V32)
+    default: closed(1); break; // modes 3 / 4
     }
 }
 
@@ -185,7 +194,8 @@ void HcsModule::writeSwitches(std::uint16_t word)
 
 void HcsModule::applyControl(std::uint8_t control)
 {
-    const std::uint8_t used = m_profile ? hcs::profileInfo(*m_profile).controlBits : hcs::kControlBusDisable;
+    const std::uint8_t used =
+        m_profile ? hcs::profileInfo(*m_profile).controlBits : hcs::kControlBusDisable;
     m_din[0] = (control & used & hcs::kControlDin1) != 0;
     m_din[1] = (control & used & hcs::kControlDin2) != 0;
     setBusDisable((control & hcs::kControlBusDisable) != 0);
@@ -285,7 +295,9 @@ std::optional<int> HcsModule::errorNumber() const
 {
     for (std::size_t b = 0; b < 2; ++b) {
         const int branch = static_cast<int>(b) + 1;
-        const ErrorLatch *latch = m_open[b] ? &m_open[b]->errors() : m_closed[b] ? &m_closed[b]->errors() : nullptr;
+        const ErrorLatch *latch = m_open[b]     ? &m_open[b]->errors()
+                                  : m_closed[b] ? &m_closed[b]->errors()
+                                                : nullptr;
         if (!latch || !latch->tripped())
             continue;
         const ErrorTable table = m_family == hcs::Family::Opat ? ErrorTable::Opat : ErrorTable::Dma;
@@ -363,12 +375,14 @@ void HcsModule::setPowered(bool on)
 
 OpenLoopPlant *HcsModule::openLoop(int branch)
 {
-    return branch == 1 || branch == 2 ? m_open[static_cast<std::size_t>(branch - 1)].get() : nullptr;
+    return branch == 1 || branch == 2 ? m_open[static_cast<std::size_t>(branch - 1)].get()
+                                      : nullptr;
 }
 
 ClosedLoopPlant *HcsModule::closedLoop(int branch)
 {
-    return branch == 1 || branch == 2 ? m_closed[static_cast<std::size_t>(branch - 1)].get() : nullptr;
+    return branch == 1 || branch == 2 ? m_closed[static_cast<std::size_t>(branch - 1)].get()
+                                      : nullptr;
 }
 
 void HcsModule::step(const SimStep &step)

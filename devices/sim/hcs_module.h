@@ -36,10 +36,10 @@ enum class EepromBusyPolicy {
 struct HcsModuleConfig
 {
     const Dictionary *dictionary = nullptr; // must outlive the module
-    std::string version;      // major version as the dictionary lists it ("34"); empty: the first
-    int versionRaw = 0;       // Vers (ID 0) = version × 100 (3403 = V34.03); 0: major × 100
-    int mode = 0;             // E00; 0: the family's first mode
-    std::uint8_t address = 1; // OPAT: 0 master, 1..7 DIP switch; DMA: E22 (1..32)
+    std::string version;        // major version as the dictionary lists it ("34"); empty: the first
+    int versionRaw = 0;         // Vers (ID 0) = version × 100 (3403 = V34.03); 0: major × 100
+    int mode = 0;               // E00; 0: the family's first mode
+    std::uint8_t address = 1;   // OPAT: 0 master, 1..7 DIP switch; DMA: E22 (1..32)
     bool hardwareEnable = true; // the manuals' examples have the enable wired
     std::int64_t eepromWriteUs = 25'000;
     EepromBusyPolicy eepromBusy = EepromBusyPolicy::Refuse;

@@ -32,7 +32,8 @@ std::optional<std::uint8_t> HcsNode::nextCyclicAddress(std::size_t modules) cons
     return hcs::moduleAddress(m_family, m_nextResponder % modules);
 }
 
-Bytes HcsNode::exception(std::uint8_t tadr, std::uint8_t sadr, std::uint8_t command, std::uint8_t code) const
+Bytes HcsNode::exception(std::uint8_t tadr, std::uint8_t sadr, std::uint8_t command,
+                         std::uint8_t code) const
 {
     return hcs::encode(hcs::ExceptionResponse{tadr, sadr, command, code});
 }
@@ -72,8 +73,9 @@ std::optional<TimedBytes> HcsNode::process(std::span<const std::uint8_t> request
     case hcs::kCmdWrite: return write(request);
     case hcs::kCmdCyclic: return cyclic(request);
     default:
-        return TimedBytes{exception(request[0], request[1], command & 0x7F, exce::kCommandNotSupported),
-                          m_clock.nowUs()};
+        return TimedBytes{
+            exception(request[0], request[1], command & 0x7F, exce::kCommandNotSupported),
+            m_clock.nowUs()};
     }
 }
 
@@ -124,7 +126,8 @@ TimedBytes HcsNode::cyclic(std::span<const std::uint8_t> request)
     if (!count)
         return error(0, exce::kInvalidSlaveCount);
     const std::size_t needed = hcs::kCyclicHeaderSize + hcs::kCyclicModuleSize * *count;
-    if (request.size() < needed || (m_options.outputBufferBytes != 0 && m_options.outputBufferBytes < needed))
+    if (request.size() < needed ||
+        (m_options.outputBufferBytes != 0 && m_options.outputBufferBytes < needed))
         return error(0, exce::kBufferTooSmall); // DMA Profinet manual §4.3 code 9: "SADR = 0"
     const auto q = hcs::decodeCyclicRequest(request.first(needed), {m_family, false});
     if (!q)
@@ -153,7 +156,8 @@ TimedBytes HcsNode::cyclic(std::span<const std::uint8_t> request)
     const std::size_t index = m_nextResponder % *count;
     m_nextResponder = (index + 1) % *count;
     const CyclicValues v = targets[index]->cyclicValues();
-    return {hcs::encode(hcs::CyclicResponse{tadr, hcs::moduleAddress(m_family, index), v.status, v.value1, v.value2}),
+    return {hcs::encode(hcs::CyclicResponse{tadr, hcs::moduleAddress(m_family, index), v.status,
+                                            v.value1, v.value2}),
             now};
 }
 

@@ -68,7 +68,8 @@ public:
     std::optional<std::uint8_t> nextCyclicAddress(std::size_t modules) const;
 
 private:
-    Bytes exception(std::uint8_t tadr, std::uint8_t sadr, std::uint8_t command, std::uint8_t code) const;
+    Bytes exception(std::uint8_t tadr, std::uint8_t sadr, std::uint8_t command,
+                    std::uint8_t code) const;
     std::uint8_t addressFault(std::size_t found) const; // 0 ok, else the EXCE for `found` modules
     TimedBytes read(std::span<const std::uint8_t> request);
     TimedBytes write(std::span<const std::uint8_t> request);

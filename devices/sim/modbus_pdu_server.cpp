@@ -25,10 +25,13 @@ std::optional<TimedPdu> ModbusPduServer::unitFault(std::uint8_t function, std::s
     const std::int64_t now = m_node.clock().nowUs();
     if (found == 0)
         return exceptionPdu(function, exce::kSlaveTimeout, now);
-    return exceptionPdu(function, m_node.family() == hcs::Family::Opat ? exce::kDuplicateAddress : exce::kChecksum, now);
+    return exceptionPdu(
+        function, m_node.family() == hcs::Family::Opat ? exce::kDuplicateAddress : exce::kChecksum,
+        now);
 }
 
-std::optional<TimedPdu> ModbusPduServer::handle(std::uint8_t unit, std::span<const std::uint8_t> pdu)
+std::optional<TimedPdu> ModbusPduServer::handle(std::uint8_t unit,
+                                                std::span<const std::uint8_t> pdu)
 {
     if (pdu.empty())
         return std::nullopt;
@@ -39,7 +42,8 @@ std::optional<TimedPdu> ModbusPduServer::handle(std::uint8_t unit, std::span<con
 
     std::vector<HcsModule *> modules;
     if (m_options.pointToPointUnit) {
-        if (unit != *m_options.pointToPointUnit || m_node.moduleCount() == 0 || !m_node.module(0).powered())
+        if (unit != *m_options.pointToPointUnit || m_node.moduleCount() == 0 ||
+            !m_node.module(0).powered())
             return std::nullopt;
         modules.push_back(&m_node.module(0));
     } else if (broadcast) {
@@ -59,7 +63,8 @@ std::optional<TimedPdu> ModbusPduServer::handle(std::uint8_t unit, std::span<con
         // Modbus Application Protocol §7: 1 illegal function, 3 illegal data value (a quantity
         // outside 1..125 — the HCS "CNT == 0 or CNT > 16" as well).
         const bool unknown = request.error().code == DecodeErrc::UnexpectedCommand;
-        return exceptionPdu(function, unknown ? modbus::kIllegalFunction : modbus::kIllegalDataValue, now);
+        return exceptionPdu(function,
+                            unknown ? modbus::kIllegalFunction : modbus::kIllegalDataValue, now);
     }
 
     if (const auto *read = std::get_if<modbus::ReadRequest>(&*request)) {

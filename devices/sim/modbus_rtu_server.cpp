@@ -15,7 +15,8 @@ void ModbusRtuServer::receive(std::span<const std::uint8_t> bytes)
         ++m_frames;
         // The de-framer hands out CRC-valid frames only: unit id, PDU, CRC (2 bytes).
         const std::uint8_t unit = frame.front();
-        const auto pdu = std::span<const std::uint8_t>(frame).subspan(1, frame.size() - modbus::kRtuOverhead);
+        const auto pdu =
+            std::span<const std::uint8_t>(frame).subspan(1, frame.size() - modbus::kRtuOverhead);
         auto answer = m_pdu.handle(unit, pdu);
         if (!answer)
             continue;

@@ -28,7 +28,8 @@ void ModbusTcpServer::receive(std::span<const std::uint8_t> bytes)
         auto answer = m_pdu.handle(header->unit, pdu);
         if (!answer)
             continue;
-        auto adu = modbus::encodeTcp(modbus::TcpResponse{header->transaction, header->unit, std::move(answer->pdu)});
+        auto adu = modbus::encodeTcp(
+            modbus::TcpResponse{header->transaction, header->unit, std::move(answer->pdu)});
         if (adu)
             m_answers.push({std::move(adu).value(), answer->readyAtUs});
     }

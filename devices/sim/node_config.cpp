@@ -46,9 +46,10 @@ Result<std::unique_ptr<HcsNode>, std::string> makeNode(SimClock &clock, const Di
     if (config.mode != 0 && !has(dict->modes, std::to_string(config.mode)))
         return std::string(config.family + " has no mode " + std::to_string(config.mode));
     if (!config.addresses.empty() && config.addresses.size() != config.modules)
-        return std::string(config.family + ": " + std::to_string(config.addresses.size()) + " addresses for " +
-                           std::to_string(config.modules) + " modules");
-    std::string dmaVersion = config.version.empty() && !dict->versions.empty() ? dict->versions.back() : config.version;
+        return std::string(config.family + ": " + std::to_string(config.addresses.size()) +
+                           " addresses for " + std::to_string(config.modules) + " modules");
+    std::string dmaVersion =
+        config.version.empty() && !dict->versions.empty() ? dict->versions.back() : config.version;
     if (family == hcs::Family::Dma && !has(dict->versions, dmaVersion))
         return std::string(config.family + " has no version " + dmaVersion);
 
@@ -62,7 +63,8 @@ Result<std::unique_ptr<HcsNode>, std::string> makeNode(SimClock &clock, const Di
             m.address = static_cast<std::uint8_t>(i); // master 0, DIP switches 1..7
         } else {
             m.version = dmaVersion;
-            m.address = static_cast<std::uint8_t>(i + 1); // E22 = 1, 2, … (DMA Profinet manual §4.1)
+            m.address =
+                static_cast<std::uint8_t>(i + 1); // E22 = 1, 2, … (DMA Profinet manual §4.1)
         }
         if (!config.addresses.empty())
             m.address = config.addresses[i];

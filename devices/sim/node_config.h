@@ -21,10 +21,11 @@ namespace vt::dev::sim {
 
 struct NodeConfig
 {
-    std::string family;      // HCS dictionary family id: "opat", "dma-pn-v13", "dma-pb-v32", …
-    std::size_t modules = 1; // every module of the node: OPAT 1..8 (master + 0..7 slaves), DMA 1..32
-    int mode = 0;            // E00 of every module; 0: the family's first mode
-    std::string version;     // DMA: major version; empty: the family's newest (V32 of "31"/"32")
+    std::string family; // HCS dictionary family id: "opat", "dma-pn-v13", "dma-pb-v32", …
+    std::size_t modules =
+        1;               // every module of the node: OPAT 1..8 (master + 0..7 slaves), DMA 1..32
+    int mode = 0;        // E00 of every module; 0: the family's first mode
+    std::string version; // DMA: major version; empty: the family's newest (V32 of "31"/"32")
     // Module addresses in order (OPAT: 0 = master, then DIP switches; DMA: E22). Empty: OPAT
     // 0, 1, 2, …; DMA 1, 2, 3, … Repeating an address configures the duplicate-address fault.
     std::vector<std::uint8_t> addresses;

@@ -30,7 +30,8 @@ void NodeImageServer::receive(std::span<const std::uint8_t> bytes)
     m_buffer.insert(m_buffer.end(), bytes.begin(), bytes.end());
     std::size_t used = 0;
     while (m_buffer.size() - used >= m_layout.outputBytes) {
-        const auto image = std::span<const std::uint8_t>(m_buffer).subspan(used, m_layout.outputBytes);
+        const auto image =
+            std::span<const std::uint8_t>(m_buffer).subspan(used, m_layout.outputBytes);
         used += m_layout.outputBytes;
         ++m_images;
         auto answer = m_node.process(image);
@@ -38,7 +39,8 @@ void NodeImageServer::receive(std::span<const std::uint8_t> bytes)
             continue;
         ++m_answered;
         // The input image: the telegram, zero-padded (or cut, should the PLC's input image be
-        // shorter than a CMD 3 answer — a configuration error the real node would show the same way).
+        // shorter than a CMD 3 answer — a configuration error the real node would show the same
+        // way).
         answer->bytes.resize(m_layout.inputBytes, 0);
         m_answers.push(std::move(*answer));
     }

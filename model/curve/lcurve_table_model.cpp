@@ -1,4 +1,5 @@
 #include "lcurve_table_model.h"
+
 #include "model/text_language.h"
 
 #include <QLocale>

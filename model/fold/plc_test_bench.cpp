@@ -1,8 +1,8 @@
 #include "model/fold/plc_test_bench.h"
-#include "model/text_language.h"
 
 #include "access/node_image_adapter.h"
 #include "hcs/exceptions.h"
+#include "model/text_language.h"
 
 #include <QPointer>
 #include <algorithm>

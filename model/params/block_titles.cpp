@@ -1,7 +1,6 @@
 #include "block_titles.h"
 
 #include <QCoreApplication>
-
 #include <algorithm>
 #include <array>
 
@@ -9,7 +8,8 @@ namespace vt::model {
 
 std::vector<std::string> blockOrder(const dev::Dictionary &dictionary)
 {
-    static const std::array<const char *, 9> hcs = {"d", "C", "E", "A", "L", "r", "S", "B", "system"};
+    static const std::array<const char *, 9> hcs = {"d", "C", "E", "A",     "L",
+                                                    "r", "S", "B", "system"};
     std::vector<std::string> seen;
     for (const dev::ParamMeta &row : dictionary.params)
         if (std::find(seen.begin(), seen.end(), row.block) == seen.end())

@@ -6,7 +6,6 @@
 #include "dict/dictionary.h"
 
 #include <QString>
-
 #include <string>
 #include <vector>
 

@@ -86,7 +86,10 @@ int CompareModel::rowCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
 }
 
-int CompareModel::columnCount(const QModelIndex &parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int CompareModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant CompareModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
@@ -135,7 +138,8 @@ Qt::ItemFlags CompareModel::flags(const QModelIndex &index) const
 
 bool CompareModel::setData(const QModelIndex &index, const QVariant &value, int role)
 {
-    if (!index.isValid() || index.column() != ColTake || role != Qt::CheckStateRole || index.row() >= rowCount())
+    if (!index.isValid() || index.column() != ColTake || role != Qt::CheckStateRole ||
+        index.row() >= rowCount())
         return false;
     m_rows[static_cast<std::size_t>(index.row())].take = value.toInt() == Qt::Checked;
     emit dataChanged(index, index, {Qt::CheckStateRole});
@@ -166,8 +170,9 @@ int CompareModel::applyTaken()
             changes.push_back({r.module, r.meta, r.theirs});
     if (changes.empty())
         return 0;
-    m_document.editMany(changes, m_other == Other::Device ? tr("Take values from the device")
-                                                           : tr("Take values from %1").arg(m_otherName));
+    m_document.editMany(changes, m_other == Other::Device
+                                     ? tr("Take values from the device")
+                                     : tr("Take values from %1").arg(m_otherName));
     refresh();
     return static_cast<int>(changes.size());
 }

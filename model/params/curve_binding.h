@@ -6,7 +6,6 @@
 #include "dict/param_meta.h"
 
 #include <QObject>
-
 #include <optional>
 
 namespace vt::model {

@@ -42,7 +42,8 @@ void ReadAllJob::next()
         m_running = false;
         m_handle.reset();
         // Deferred: the caller of start()/cancel() may still be on the stack.
-        QTimer::singleShot(0, this, [this] { emit finished(!m_cancelled && m_problems.isEmpty()); });
+        QTimer::singleShot(0, this,
+                           [this] { emit finished(!m_cancelled && m_problems.isEmpty()); });
         return;
     }
     const int module = m_queue.front();
@@ -60,12 +61,14 @@ void ReadAllJob::next()
             QString reason;
             for (const RowFailure &f : result.failures) {
                 if (f.outcome.status == OutcomeStatus::NotEncodable)
-                    continue; // rows this protocol cannot address (e.g. SD7 texts): not a failure of the read
+                    continue; // rows this protocol cannot address (e.g. SD7 texts): not a failure
+                              // of the read
                 failedRows += f.rows.size();
                 reason = f.outcome.reason;
             }
             if (failedRows > 0)
-                m_problems << tr("Module %1: %n rows not read (%2)", nullptr, static_cast<int>(failedRows))
+                m_problems << tr("Module %1: %n rows not read (%2)", nullptr,
+                                 static_cast<int>(failedRows))
                                   .arg(address)
                                   .arg(reason);
             if (result.cancelled)
@@ -128,10 +131,12 @@ void WriteChangesJob::next()
     WriteJob *job = m_job;
     const int module = target.module;
     connect(job, &WriteJob::itemChanged, this, [this, job, module](int index) {
-        m_results[m_current].items[static_cast<std::size_t>(index)] = job->items()[static_cast<std::size_t>(index)];
+        m_results[m_current].items[static_cast<std::size_t>(index)] =
+            job->items()[static_cast<std::size_t>(index)];
         emit itemChanged(module, index);
     });
-    connect(job, &WriteJob::progress, this, [this](int done, int) { emit progress(m_doneBefore + done, m_total); });
+    connect(job, &WriteJob::progress, this,
+            [this](int done, int) { emit progress(m_doneBefore + done, m_total); });
     connect(job, &WriteJob::finished, this, [this, job, module](bool) {
         m_results[m_current].items = job->items();
         m_document.applyWritten(module, job->items());

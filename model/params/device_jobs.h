@@ -10,7 +10,6 @@
 #include "model/session/write_job.h"
 
 #include <QObject>
-
 #include <memory>
 #include <vector>
 
@@ -56,9 +55,10 @@ class WriteChangesJob : public QObject
 {
     Q_OBJECT
 public:
-    // `plan`: the rows to write per module (usually document.pendingWrites(i) for every online module).
-    WriteChangesJob(DeviceAccess &access, ParameterDocument &document, std::vector<ModuleWriteResult> plan,
-                    QObject *parent = nullptr);
+    // `plan`: the rows to write per module (usually document.pendingWrites(i) for every online
+    // module).
+    WriteChangesJob(DeviceAccess &access, ParameterDocument &document,
+                    std::vector<ModuleWriteResult> plan, QObject *parent = nullptr);
     ~WriteChangesJob() override;
 
     void start();

@@ -9,24 +9,28 @@
 namespace vt::model {
 namespace {
 
-
 std::optional<QString> writeAtomically(const QString &path, const std::string &bytes)
 {
     QSaveFile out(path);
     if (!out.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2").arg(path, out.errorString());
-    if (out.write(bytes.data(), static_cast<qint64>(bytes.size())) != static_cast<qint64>(bytes.size())) {
+        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2")
+            .arg(path, out.errorString());
+    if (out.write(bytes.data(), static_cast<qint64>(bytes.size())) !=
+        static_cast<qint64>(bytes.size())) {
         out.cancelWriting();
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2").arg(path, out.errorString());
+        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2")
+            .arg(path, out.errorString());
     }
     if (!out.commit())
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2").arg(path, out.errorString());
+        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2")
+            .arg(path, out.errorString());
     return std::nullopt;
 }
 
 QString tooLarge(const QString &path)
 {
-    return QCoreApplication::translate("vt::model::ParamFileIo", "%1 is larger than %2 MiB: not a parameter file.")
+    return QCoreApplication::translate("vt::model::ParamFileIo",
+                                       "%1 is larger than %2 MiB: not a parameter file.")
         .arg(path)
         .arg(dev::files::kMaxFileBytes / (1024 * 1024));
 }
@@ -37,14 +41,17 @@ dev::Result<dev::files::ParamFile, QString> readParamFile(const QString &path, d
 {
     QFile in(path);
     if (!in.open(QIODevice::ReadOnly))
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot open %1: %2").arg(path, in.errorString());
+        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot open %1: %2")
+            .arg(path, in.errorString());
     if (in.size() > static_cast<qint64>(dev::files::kMaxFileBytes))
         return tooLarge(path);
-    // Bounded even when size() lies (a pipe, a growing file): one byte more than allowed is enough to know.
+    // Bounded even when size() lies (a pipe, a growing file): one byte more than allowed is enough
+    // to know.
     const QByteArray bytes = in.read(static_cast<qint64>(dev::files::kMaxFileBytes) + 1);
     if (bytes.size() > static_cast<qsizetype>(dev::files::kMaxFileBytes))
         return tooLarge(path);
-    auto parsed = dev::files::parseParamFile(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    auto parsed = dev::files::parseParamFile(
+        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
     if (!parsed)
         return QString::fromStdString(parsed.error().text().in(lang));
     return std::move(parsed).value();

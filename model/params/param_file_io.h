@@ -9,7 +9,6 @@
 #include "files/param_file.h"
 
 #include <QString>
-
 #include <optional>
 
 namespace vt::model {

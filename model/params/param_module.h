@@ -9,7 +9,6 @@
 #include "files/param_file_map.h"
 
 #include <QString>
-
 #include <map>
 #include <optional>
 #include <string>

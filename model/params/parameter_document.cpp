@@ -4,24 +4,28 @@
 #include "value_commands.h"
 
 #include <QCoreApplication>
-
 #include <algorithm>
 #include <set>
 
 namespace vt::model {
 namespace {
 
-QString moduleIdentity(const dev::Dictionary &dict, const std::string &version, const std::string &mode)
+QString moduleIdentity(const dev::Dictionary &dict, const std::string &version,
+                       const std::string &mode)
 {
     QString text = QString::fromStdString(dict.family);
     if (!version.empty())
         text += QLatin1Char(' ') + QString::fromStdString(version);
     if (!mode.empty())
-        text += QCoreApplication::translate("vt::model::ParameterDocument", ", mode %1").arg(QString::fromStdString(mode));
+        text += QCoreApplication::translate("vt::model::ParameterDocument", ", mode %1")
+                    .arg(QString::fromStdString(mode));
     return text;
 }
 
-dev::LocalText both(const char *en, const char *de) { return dev::LocalText{en, de}; }
+dev::LocalText both(const char *en, const char *de)
+{
+    return dev::LocalText{en, de};
+}
 
 std::string valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev::Language lang)
 {
@@ -32,7 +36,9 @@ std::string valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev
 
 } // namespace
 
-ParameterDocument::ParameterDocument(QObject *parent) : QObject(parent) {}
+ParameterDocument::ParameterDocument(QObject *parent) : QObject(parent)
+{
+}
 
 ParameterDocument::~ParameterDocument() = default;
 
@@ -68,7 +74,8 @@ void ParameterDocument::clear()
     emit filePathChanged(m_filePath);
 }
 
-void ParameterDocument::createNew(const NewFileChoice &choice, const dev::DictionarySet &dictionaries)
+void ParameterDocument::createNew(const NewFileChoice &choice,
+                                  const dev::DictionarySet &dictionaries)
 {
     loadFile(newParamFile(choice, {}, std::chrono::system_clock::now()), dictionaries, QString());
 }
@@ -76,9 +83,12 @@ void ParameterDocument::createNew(const NewFileChoice &choice, const dev::Dictio
 void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)
 {
     std::vector<ParamModule> modules = m_modules;
-    auto sameFamily = [](const ParamModule &m, const ModuleInfo &info) { return m.dictionary == info.dictionary; };
+    auto sameFamily = [](const ParamModule &m, const ModuleInfo &info) {
+        return m.dictionary == info.dictionary;
+    };
     // A one-module file goes onto the one module of its family on the node, whatever its address.
-    if (modules.size() == 1 && infos.size() == 1 && !modules[0].online && sameFamily(modules[0], infos[0]))
+    if (modules.size() == 1 && infos.size() == 1 && !modules[0].online &&
+        sameFamily(modules[0], infos[0]))
         modules[0].address = infos[0].address;
     for (const ModuleInfo &info : infos) {
         if (!info.dictionary)
@@ -113,8 +123,8 @@ void ParameterDocument::detachDevice()
     }
 }
 
-void ParameterDocument::loadFile(const dev::files::ParamFile &file, const dev::DictionarySet &dictionaries,
-                                 const QString &path)
+void ParameterDocument::loadFile(const dev::files::ParamFile &file,
+                                 const dev::DictionarySet &dictionaries, const QString &path)
 {
     std::vector<ParamModule> modules;
     m_unmapped.clear();
@@ -213,22 +223,25 @@ void ParameterDocument::markSaved(const QString &path)
         emit moduleValuesChanged(i);
 }
 
-std::optional<dev::RawValue> ParameterDocument::value(int module, const dev::ParamMeta *row, Layer layer) const
+std::optional<dev::RawValue> ParameterDocument::value(int module, const dev::ParamMeta *row,
+                                                      Layer layer) const
 {
     if (module < 0 || module >= moduleCount())
         return std::nullopt;
     return m_modules[static_cast<std::size_t>(module)].value(row, layer);
 }
 
-std::optional<dev::LocalText> ParameterDocument::edit(int module, const dev::ParamMeta *row, const dev::RawValue &value)
+std::optional<dev::LocalText> ParameterDocument::edit(int module, const dev::ParamMeta *row,
+                                                      const dev::RawValue &value)
 {
     if (module < 0 || module >= moduleCount() || !row)
         return both("No such parameter.", "Diesen Parameter gibt es nicht.");
     if (!row->writable())
         return both("This parameter is read only.", "Dieser Parameter ist nur lesbar.");
     if (row->isString() != dev::isText(value))
-        return row->isString() ? both("This parameter takes a text.", "Dieser Parameter nimmt einen Text.")
-                               : both("This parameter takes a number.", "Dieser Parameter nimmt eine Zahl.");
+        return row->isString()
+                   ? both("This parameter takes a text.", "Dieser Parameter nimmt einen Text.")
+                   : both("This parameter takes a number.", "Dieser Parameter nimmt eine Zahl.");
     if (const auto *text = std::get_if<std::string>(&value)) {
         if (row->length > 0 && text->size() > static_cast<std::size_t>(row->length))
             return dev::LocalText{"At most " + std::to_string(row->length) + " characters.",
@@ -258,8 +271,9 @@ void ParameterDocument::editMany(const std::vector<Change> &changes, const QStri
         m_undo.push(new SetValuesCommand(*this, std::move(rows), undoText));
 }
 
-void ParameterDocument::editNumbers(int module, const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
-                                    const QString &undoText)
+void ParameterDocument::editNumbers(
+    int module, const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
+    const QString &undoText)
 {
     std::vector<Change> changes;
     for (const auto &[row, number] : values)
@@ -267,7 +281,8 @@ void ParameterDocument::editNumbers(int module, const std::vector<std::pair<cons
     editMany(changes, undoText);
 }
 
-void ParameterDocument::setWorking(int module, const dev::ParamMeta *row, const std::optional<dev::RawValue> &value)
+void ParameterDocument::setWorking(int module, const dev::ParamMeta *row,
+                                   const std::optional<dev::RawValue> &value)
 {
     if (module < 0 || module >= moduleCount() || !row)
         return;

@@ -12,7 +12,6 @@
 
 #include <QObject>
 #include <QUndoStack>
-
 #include <vector>
 
 namespace vt::model {
@@ -26,7 +25,10 @@ public:
 
     QUndoStack *undoStack() { return &m_undo; }
     const std::vector<ParamModule> &modules() const { return m_modules; }
-    const ParamModule &module(int index) const { return m_modules.at(static_cast<std::size_t>(index)); }
+    const ParamModule &module(int index) const
+    {
+        return m_modules.at(static_cast<std::size_t>(index));
+    }
     int moduleCount() const { return static_cast<int>(m_modules.size()); }
     int findModule(int address) const; // -1 when absent
 
@@ -48,7 +50,8 @@ public:
     // Replaces the document with a loaded file (each record mapped onto its family's dictionary;
     // the reports say what did not map). Undo history is cleared. Records of a family the set does
     // not know are kept for saving and listed in `unknownFamilies`.
-    void loadFile(const dev::files::ParamFile &file, const dev::DictionarySet &dictionaries, const QString &path);
+    void loadFile(const dev::files::ParamFile &file, const dev::DictionarySet &dictionaries,
+                  const QString &path);
     const QString &filePath() const { return m_filePath; }
     bool hasFile() const { return !m_filePath.isEmpty(); }
     const std::vector<dev::files::ModuleRecord> &unknownFamilies() const { return m_unmapped; }
@@ -61,10 +64,12 @@ public:
     bool isModified() const { return !m_undo.isClean(); }
 
     // --- values -------------------------------------------------------------------------------
-    std::optional<dev::RawValue> value(int module, const dev::ParamMeta *row, Layer layer = Layer::Working) const;
+    std::optional<dev::RawValue> value(int module, const dev::ParamMeta *row,
+                                       Layer layer = Layer::Working) const;
     // A user edit (undoable). Refused, with the reason in both languages, for read-only rows,
     // values of the wrong type and values out of range (the limits named in display units).
-    std::optional<dev::LocalText> edit(int module, const dev::ParamMeta *row, const dev::RawValue &value);
+    std::optional<dev::LocalText> edit(int module, const dev::ParamMeta *row,
+                                       const dev::RawValue &value);
     // Several rows as one undo step (Revert, Apply from compare); no checks beyond the row's type.
     struct Change
     {
@@ -74,13 +79,15 @@ public:
     };
     void editMany(const std::vector<Change> &changes, const QString &undoText);
     // Several number rows of one module as one undo step (a drag on the L curve).
-    void editNumbers(int module, const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
+    void editNumbers(int module,
+                     const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
                      const QString &undoText);
     // Used by the undo commands: sets the working value without recording.
-    void setWorking(int module, const dev::ParamMeta *row, const std::optional<dev::RawValue> &value);
+    void setWorking(int module, const dev::ParamMeta *row,
+                    const std::optional<dev::RawValue> &value);
 
-    // Values read from the device. Read-only rows and rows the user has not changed follow the device;
-    // a file's values stay (the "differs from device" filter shows them).
+    // Values read from the device. Read-only rows and rows the user has not changed follow the
+    // device; a file's values stay (the "differs from device" filter shows them).
     void applyRead(int module, const std::vector<RowValue> &values);
     // After a write job: rows now on the device update the device layer.
     void applyWritten(int module, const std::vector<WriteItem> &items);

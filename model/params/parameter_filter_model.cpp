@@ -52,7 +52,8 @@ bool ParameterFilterModel::filterAcceptsRow(int sourceRow, const QModelIndex &so
     if (m_differsOnly && !index.data(DiffersFromDeviceRole).toBool())
         return false;
     const QString search = m_search.trimmed();
-    return search.isEmpty() || index.data(SearchTextRole).toString().contains(search, Qt::CaseInsensitive);
+    return search.isEmpty() ||
+           index.data(SearchTextRole).toString().contains(search, Qt::CaseInsensitive);
 }
 
 } // namespace vt::model

@@ -6,15 +6,21 @@
 #include <QBrush>
 #include <QColor>
 #include <QFont>
-#include <QPalette>
 #include <QGuiApplication>
+#include <QPalette>
 
 namespace vt::model {
 namespace {
 
-QString qs(const std::string &s) { return QString::fromStdString(s); }
+QString qs(const std::string &s)
+{
+    return QString::fromStdString(s);
+}
 
-bool isBitField(const dev::ParamMeta &row) { return !row.bits.empty() && row.enums.empty(); }
+bool isBitField(const dev::ParamMeta &row)
+{
+    return !row.bits.empty() && row.enums.empty();
+}
 
 } // namespace
 
@@ -25,7 +31,8 @@ QString formatRaw(const dev::ParamMeta &row, const dev::RawValue &value, dev::La
     const double raw = dev::rawNumber(value);
     if (isBitField(row)) {
         const auto bits = static_cast<std::uint32_t>(static_cast<std::int64_t>(raw));
-        const QString hex = QStringLiteral("0x") + QStringLiteral("%1").arg(bits, 4, 16, QLatin1Char('0')).toUpper();
+        const QString hex = QStringLiteral("0x") +
+                            QStringLiteral("%1").arg(bits, 4, 16, QLatin1Char('0')).toUpper();
         const std::string labels = dev::formatBits(row, bits, lang);
         return labels.empty() ? hex : hex + QStringLiteral(" (") + qs(labels) + QLatin1Char(')');
     }
@@ -60,7 +67,8 @@ ParameterTreeModel::ParameterTreeModel(ParameterDocument &document, QObject *par
         emit dataChanged(first, first.siblingAtColumn(ColumnCount - 1));
     });
     connect(&m_document, &ParameterDocument::valueChanged, this, &ParameterTreeModel::refreshRow);
-    connect(&m_document, &ParameterDocument::moduleValuesChanged, this, &ParameterTreeModel::refreshModule);
+    connect(&m_document, &ParameterDocument::moduleValuesChanged, this,
+            &ParameterTreeModel::refreshModule);
     connect(&m_document, &ParameterDocument::languageChanged, this, [this] {
         refreshAll();
         emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
@@ -142,12 +150,14 @@ QModelIndex ParameterTreeModel::index(int row, int column, const QModelIndex &pa
     if (!parent.isValid()) {
         if (row >= static_cast<int>(m_modules.size()))
             return {};
-        return createIndex(row, column, static_cast<quintptr>(m_modules[static_cast<std::size_t>(row)]));
+        return createIndex(row, column,
+                           static_cast<quintptr>(m_modules[static_cast<std::size_t>(row)]));
     }
     const Node *p = nodeAt(parent);
     if (!p || parent.column() != 0 || row >= static_cast<int>(p->children.size()))
         return {};
-    return createIndex(row, column, static_cast<quintptr>(p->children[static_cast<std::size_t>(row)]));
+    return createIndex(row, column,
+                       static_cast<quintptr>(p->children[static_cast<std::size_t>(row)]));
 }
 
 QModelIndex ParameterTreeModel::parent(const QModelIndex &child) const
@@ -169,13 +179,17 @@ int ParameterTreeModel::rowCount(const QModelIndex &parent) const
     return node ? static_cast<int>(node->children.size()) : 0;
 }
 
-int ParameterTreeModel::columnCount(const QModelIndex &) const { return ColumnCount; }
+int ParameterTreeModel::columnCount(const QModelIndex &) const
+{
+    return ColumnCount;
+}
 
 QModelIndex ParameterTreeModel::moduleIndex(int module) const
 {
     if (module < 0 || module >= static_cast<int>(m_modules.size()))
         return {};
-    return createIndex(module, 0, static_cast<quintptr>(m_modules[static_cast<std::size_t>(module)]));
+    return createIndex(module, 0,
+                       static_cast<quintptr>(m_modules[static_cast<std::size_t>(module)]));
 }
 
 QModelIndex ParameterTreeModel::indexOf(int module, const dev::ParamMeta *row, int column) const
@@ -183,7 +197,8 @@ QModelIndex ParameterTreeModel::indexOf(int module, const dev::ParamMeta *row, i
     const auto it = m_rowNode.find({module, row});
     if (it == m_rowNode.end())
         return {};
-    return createIndex(m_nodes[static_cast<std::size_t>(it->second)].row, column, static_cast<quintptr>(it->second));
+    return createIndex(m_nodes[static_cast<std::size_t>(it->second)].row, column,
+                       static_cast<quintptr>(it->second));
 }
 
 const dev::ParamMeta *ParameterTreeModel::metaAt(const QModelIndex &index) const
@@ -261,8 +276,9 @@ QString ParameterTreeModel::helpText(int module, const dev::ParamMeta &row) cons
     if (row.defaultValue && !row.isString())
         text += QLatin1Char('\n') + tr("Default: %1").arg(formatRaw(row, *row.defaultValue, lang));
     if (row.scale.assumed)
-        text += QLatin1Char('\n') + tr("The display scale depends on the installation; %1 is a typical value.")
-                                        .arg(qs(row.scale.name));
+        text += QLatin1Char('\n') +
+                tr("The display scale depends on the installation; %1 is a typical value.")
+                    .arg(qs(row.scale.name));
     if (!row.enums.empty()) {
         text += QLatin1Char('\n');
         for (const dev::EnumLabel &e : row.enums)
@@ -287,7 +303,8 @@ QVariant ParameterTreeModel::moduleData(const Node &node, int column, int role) 
             QString text = m.identity;
             if (!m.label.isEmpty())
                 text = m.label + QStringLiteral(" — ") + text;
-            return text + QStringLiteral(" (") + (m.online ? tr("online") : tr("offline")) + QLatin1Char(')');
+            return text + QStringLiteral(" (") + (m.online ? tr("online") : tr("offline")) +
+                   QLatin1Char(')');
         }
     }
     if (role == Qt::FontRole && column == ColName) {
@@ -342,7 +359,8 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
         }
         return {};
     case Qt::BackgroundRole:
-        if ((column == ColValue || column == ColDevice) && m_document.differsFromDevice(module, &row))
+        if ((column == ColValue || column == ColDevice) &&
+            m_document.differsFromDevice(module, &row))
             return QBrush(QColor(255, 236, 179)); // amber: the editor and the device disagree
         return {};
     case MetaRole: return QVariant::fromValue(reinterpret_cast<quintptr>(&row));
@@ -356,8 +374,10 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
             return qs(*text);
         return dev::rawNumber(*value);
     }
-    case DisplayMinRole: return row.isString() ? QVariant() : QVariant(dev::toDisplay(row, dev::rowLimits(row).min));
-    case DisplayMaxRole: return row.isString() ? QVariant() : QVariant(dev::toDisplay(row, dev::rowLimits(row).max));
+    case DisplayMinRole:
+        return row.isString() ? QVariant() : QVariant(dev::toDisplay(row, dev::rowLimits(row).min));
+    case DisplayMaxRole:
+        return row.isString() ? QVariant() : QVariant(dev::toDisplay(row, dev::rowLimits(row).max));
     case DecimalsRole: return row.scale.decimals;
     case UnitRole: return qs(row.unit);
     case EnumLabelsRole: {
@@ -372,7 +392,8 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
             return {};
         QVariantList list;
         for (const dev::BitLabel &b : row.bits)
-            list.push_back(QVariantMap{{QStringLiteral("bit"), b.bit}, {QStringLiteral("text"), qs(b.text.in(lang))}});
+            list.push_back(QVariantMap{{QStringLiteral("bit"), b.bit},
+                                       {QStringLiteral("text"), qs(b.text.in(lang))}});
         return list;
     }
     case ReadOnlyRole: return !row.writable() || !m.active(row);
@@ -380,8 +401,8 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
     case ChangedRole: return m_document.changed(module, &row);
     case DiffersFromDeviceRole: return m_document.differsFromDevice(module, &row);
     case SearchTextRole:
-        return qs(row.name) + QLatin1Char('\n') + qs(row.label.en) + QLatin1Char('\n') + qs(row.label.de) +
-               QLatin1Char('\n') + qs(row.description.in(lang));
+        return qs(row.name) + QLatin1Char('\n') + qs(row.label.en) + QLatin1Char('\n') +
+               qs(row.label.de) + QLatin1Char('\n') + qs(row.description.in(lang));
     default: return {};
     }
 }
@@ -437,7 +458,8 @@ bool ParameterTreeModel::setData(const QModelIndex &index, const QVariant &value
         } else {
             auto parsed = dev::parseValue(row, text, lang);
             if (!parsed) {
-                m_lastError = qs(row.name) + QStringLiteral(": ") + qs(parsed.error().message.in(lang));
+                m_lastError =
+                    qs(row.name) + QStringLiteral(": ") + qs(parsed.error().message.in(lang));
                 emit editRefused(index, m_lastError);
                 return false;
             }

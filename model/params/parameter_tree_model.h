@@ -8,7 +8,6 @@
 #include "model/params/parameter_document.h"
 
 #include <QAbstractItemModel>
-
 #include <map>
 #include <vector>
 
@@ -18,7 +17,16 @@ class ParameterTreeModel : public QAbstractItemModel
 {
     Q_OBJECT
 public:
-    enum Column { ColName, ColLabel, ColValue, ColDevice, ColFile, ColRange, ColAccess, ColumnCount };
+    enum Column {
+        ColName,
+        ColLabel,
+        ColValue,
+        ColDevice,
+        ColFile,
+        ColRange,
+        ColAccess,
+        ColumnCount
+    };
 
     explicit ParameterTreeModel(ParameterDocument &document, QObject *parent = nullptr);
     ~ParameterTreeModel() override;
@@ -30,7 +38,8 @@ public:
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
     bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
     Qt::ItemFlags flags(const QModelIndex &index) const override;
-    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
 
     ParameterDocument &document() const { return m_document; }
     // The index (column ColName) of a parameter row; invalid when the module has no such row.

@@ -4,7 +4,8 @@
 
 namespace vt::model {
 
-SetValuesCommand::SetValuesCommand(ParameterDocument &document, std::vector<Row> rows, const QString &text)
+SetValuesCommand::SetValuesCommand(ParameterDocument &document, std::vector<Row> rows,
+                                   const QString &text)
     : QUndoCommand(text), m_document(document), m_rows(std::move(rows))
 {
 }

@@ -7,7 +7,6 @@
 #include "dict/raw_value.h"
 
 #include <QUndoCommand>
-
 #include <optional>
 #include <vector>
 

@@ -1,7 +1,6 @@
 #include "device_access.h"
 
 #include <QTimer>
-
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -66,8 +65,8 @@ std::string majorVersion(const std::string &version)
 
 } // namespace
 
-DeviceAccess::DeviceAccess(Session &session, const dev::DictionarySet &dictionaries, dev::HcsProduct product,
-                           QObject *parent)
+DeviceAccess::DeviceAccess(Session &session, const dev::DictionarySet &dictionaries,
+                           dev::HcsProduct product, QObject *parent)
     : QObject(parent), m_session(session), m_dictionaries(dictionaries), m_product(product)
 {
 }
@@ -84,16 +83,17 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
         result.module.address = module;
         if (state->failed) {
             result.failure = state->failure;
-            result.message = state->failure.reason.isEmpty() ? outcomeStatusText(state->failure.status)
-                                                             : state->failure.reason;
+            result.message = state->failure.reason.isEmpty()
+                                 ? outcomeStatusText(state->failure.status)
+                                 : state->failure.reason;
             if (state->failure.status == OutcomeStatus::DeviceException)
                 result.message = fromLocal(state->failure.reply.exceptionText);
             done(result);
             return;
         }
         const dev::access::Identity &id = state->identity;
-        dev::Result<dev::Identification, dev::LocalText> found = dev::LocalText{"the module did not identify itself",
-                                                                                "das Modul hat sich nicht zu erkennen gegeben"};
+        dev::Result<dev::Identification, dev::LocalText> found = dev::LocalText{
+            "the module did not identify itself", "das Modul hat sich nicht zu erkennen gegeben"};
         if (id.manufacturer != 0)
             found = dev::identifyHart(m_dictionaries, id.manufacturer, id.expandedDeviceType);
         else if (id.capability != 0)
@@ -133,10 +133,9 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
     }
 }
 
-std::shared_ptr<DeviceAccess::ReadHandle> DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows,
-                                                             Priority priority,
-                                                             std::function<void(const ReadResult &)> done,
-                                                             ReadProgress progress)
+std::shared_ptr<DeviceAccess::ReadHandle>
+DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priority priority,
+                   std::function<void(const ReadResult &)> done, ReadProgress progress)
 {
     auto handle = std::make_shared<ReadHandle>();
     handle->m_session = &m_session;
@@ -157,10 +156,14 @@ std::shared_ptr<DeviceAccess::ReadHandle> DeviceAccess::read(int module, std::ve
             unplanned.push_back(row);
     }
     if (!unplanned.empty()) {
-        state->failures.push_back(RowFailure{std::move(unplanned),
-                                             Outcome{OutcomeStatus::NotEncodable, {}, 0, false,
-                                                     tr("not readable over %1")
-                                                         .arg(QString::fromStdString(m_session.adapter().protocolKey()))}});
+        state->failures.push_back(RowFailure{
+            std::move(unplanned),
+            Outcome{OutcomeStatus::NotEncodable,
+                    {},
+                    0,
+                    false,
+                    tr("not readable over %1")
+                        .arg(QString::fromStdString(m_session.adapter().protocolKey()))}});
     }
     state->total = static_cast<int>(plan.size());
 
@@ -184,8 +187,10 @@ std::shared_ptr<DeviceAccess::ReadHandle> DeviceAccess::read(int module, std::ve
     for (auto &t : plan) {
         auto rowsOfT = t.rows;
         handle->m_ids.push_back(m_session.submit(
-            std::move(t), priority, [state, conclude, rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
-                if (outcome.status == OutcomeStatus::Ok && outcome.reply.values.size() == rowsOfT.size()) {
+            std::move(t), priority,
+            [state, conclude, rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
+                if (outcome.status == OutcomeStatus::Ok &&
+                    outcome.reply.values.size() == rowsOfT.size()) {
                     for (std::size_t i = 0; i < rowsOfT.size(); ++i)
                         state->got[rowsOfT[i]] = outcome.reply.values[i];
                 } else if (outcome.status != OutcomeStatus::Cancelled) {
@@ -201,10 +206,11 @@ std::shared_ptr<DeviceAccess::ReadHandle> DeviceAccess::read(int module, std::ve
     return handle;
 }
 
-RequestId DeviceAccess::write(int module, const dev::ParamMeta &row, const dev::RawValue &value, Priority priority,
-                              Completion done)
+RequestId DeviceAccess::write(int module, const dev::ParamMeta &row, const dev::RawValue &value,
+                              Priority priority, Completion done)
 {
-    return m_session.submit(m_session.adapter().planWrite(module, row, value), priority, std::move(done));
+    return m_session.submit(m_session.adapter().planWrite(module, row, value), priority,
+                            std::move(done));
 }
 
 void DeviceAccess::ReadHandle::cancel()
@@ -216,8 +222,8 @@ void DeviceAccess::ReadHandle::cancel()
         m_session->cancel(id);
 }
 
-std::vector<const dev::ParamMeta *> readableRows(const dev::Dictionary &dictionary, const std::string &version,
-                                                 const std::string &mode)
+std::vector<const dev::ParamMeta *>
+readableRows(const dev::Dictionary &dictionary, const std::string &version, const std::string &mode)
 {
     const std::string major = majorVersion(version);
     std::vector<const dev::ParamMeta *> rows;

@@ -4,14 +4,12 @@
 // loop. Owner: the connection; same thread as its Session, which must outlive it.
 #pragma once
 
-#include "model/session/session.h"
-
 #include "dict/dictionary.h"
 #include "dict/identify.h"
+#include "model/session/session.h"
 
 #include <QObject>
 #include <QString>
-
 #include <functional>
 #include <memory>
 #include <vector>
@@ -32,8 +30,8 @@ struct IdentifyResult
 {
     bool ok = false;
     ModuleInfo module;
-    Outcome failure;  // when !ok and the exchange failed
-    QString message;  // when !ok: why (no answer, unknown device …); when ok: a fallback warning
+    Outcome failure; // when !ok and the exchange failed
+    QString message; // when !ok: why (no answer, unknown device …); when ok: a fallback warning
 };
 
 struct RowValue
@@ -76,12 +74,15 @@ public:
     // Reads `rows` of `module`; the handle cancels the rest. Rows the protocol cannot address and
     // rows that are not readable are reported as failures with status NotEncodable.
     class ReadHandle;
-    std::shared_ptr<ReadHandle> read(int module, std::vector<const dev::ParamMeta *> rows, Priority priority,
-                                     std::function<void(const ReadResult &)> done, ReadProgress progress = {});
+    std::shared_ptr<ReadHandle> read(int module, std::vector<const dev::ParamMeta *> rows,
+                                     Priority priority,
+                                     std::function<void(const ReadResult &)> done,
+                                     ReadProgress progress = {});
 
-    // Writes one raw value. The caller range-checks first (dev::checkWrite); this does not read back.
-    RequestId write(int module, const dev::ParamMeta &row, const dev::RawValue &value, Priority priority,
-                    Completion done);
+    // Writes one raw value. The caller range-checks first (dev::checkWrite); this does not read
+    // back.
+    RequestId write(int module, const dev::ParamMeta &row, const dev::RawValue &value,
+                    Priority priority, Completion done);
 
 private:
     Session &m_session;
@@ -106,7 +107,8 @@ private:
 
 // Rows a "read all" asks for: readable, applicable to the module's version and mode; inactive
 // (x) and not-implemented (n) rows are never read.
-std::vector<const dev::ParamMeta *> readableRows(const dev::Dictionary &dictionary, const std::string &version,
+std::vector<const dev::ParamMeta *> readableRows(const dev::Dictionary &dictionary,
+                                                 const std::string &version,
                                                  const std::string &mode);
 
 } // namespace vt::model

@@ -4,15 +4,15 @@
 // connection (disconnect it, or destroy the scheduler, before the store goes).
 #pragma once
 
+#include "core/local_text.h"
 #include "model/sample_store.h"
 #include "model/session/monitor_scheduler.h"
-
-#include "core/local_text.h"
 
 namespace vt::model {
 
 // One channel per row: id = the row's name ("d1.11"), name = its label, unit = its unit.
-QList<SampleChannel> monitorChannels(const std::vector<const dev::ParamMeta *> &rows, dev::Language lang);
+QList<SampleChannel> monitorChannels(const std::vector<const dev::ParamMeta *> &rows,
+                                     dev::Language lang);
 
 // Appends every complete sample of `module` whose rows match the store's channels.
 QMetaObject::Connection recordSamples(MonitorScheduler &scheduler, int module, SampleStore &store);

@@ -28,7 +28,8 @@ std::vector<const dev::ParamMeta *> defaultMonitorRows(const dev::Dictionary &di
     return rows;
 }
 
-MonitorScheduler::MonitorScheduler(DeviceAccess &access, QObject *parent) : QObject(parent), m_access(access)
+MonitorScheduler::MonitorScheduler(DeviceAccess &access, QObject *parent)
+    : QObject(parent), m_access(access)
 {
     qRegisterMetaType<vt::model::MonitorSample>();
 }
@@ -125,35 +126,38 @@ void MonitorScheduler::poll(int module)
         }
     }
     channel.inFlight = true;
-    channel.handle = m_access.read(module, channel.rows, Priority::Monitor, [this, module](const ReadResult &result) {
-        auto found = m_channels.find(module);
-        if (found == m_channels.end())
-            return;
-        Channel &ch = *found->second;
-        ch.inFlight = false;
-        ch.handle.reset();
-        const qint64 t = m_access.session().elapsedNs();
-        if (result.values.size() == ch.rows.size() && !ch.rows.empty()) {
-            ++ch.samples;
-            ch.recent.push_back(t);
-            while (!ch.recent.empty() && ch.recent.front() < t - kSecondNs)
-                ch.recent.pop_front();
-            MonitorSample sample;
-            sample.module = module;
-            sample.seconds = static_cast<double>(t) * 1e-9;
-            sample.rows = ch.rows;
-            for (const RowValue &v : result.values)
-                sample.values.push_back(v.value);
-            emit sampled(sample);
-        } else if (!result.cancelled) {
-            ++ch.failed;
-            const QString reason = result.failures.empty() ? tr("incomplete answer") : result.failures.front().outcome.reason;
-            emit pollFailed(module, reason);
-        }
-        if (ch.hz <= 0)
-            ch.nextDueNs = t;
-        arm(ch);
-    });
+    channel.handle = m_access.read(
+        module, channel.rows, Priority::Monitor, [this, module](const ReadResult &result) {
+            auto found = m_channels.find(module);
+            if (found == m_channels.end())
+                return;
+            Channel &ch = *found->second;
+            ch.inFlight = false;
+            ch.handle.reset();
+            const qint64 t = m_access.session().elapsedNs();
+            if (result.values.size() == ch.rows.size() && !ch.rows.empty()) {
+                ++ch.samples;
+                ch.recent.push_back(t);
+                while (!ch.recent.empty() && ch.recent.front() < t - kSecondNs)
+                    ch.recent.pop_front();
+                MonitorSample sample;
+                sample.module = module;
+                sample.seconds = static_cast<double>(t) * 1e-9;
+                sample.rows = ch.rows;
+                for (const RowValue &v : result.values)
+                    sample.values.push_back(v.value);
+                emit sampled(sample);
+            } else if (!result.cancelled) {
+                ++ch.failed;
+                const QString reason = result.failures.empty()
+                                           ? tr("incomplete answer")
+                                           : result.failures.front().outcome.reason;
+                emit pollFailed(module, reason);
+            }
+            if (ch.hz <= 0)
+                ch.nextDueNs = t;
+            arm(ch);
+        });
 }
 
 double MonitorScheduler::achievedRate(int module) const
@@ -162,7 +166,9 @@ double MonitorScheduler::achievedRate(int module) const
     if (!channel || channel->recent.size() < 2)
         return 0;
     const qint64 span = channel->recent.back() - channel->recent.front();
-    return span > 0 ? static_cast<double>(channel->recent.size() - 1) * 1e9 / static_cast<double>(span) : 0;
+    return span > 0
+               ? static_cast<double>(channel->recent.size() - 1) * 1e9 / static_cast<double>(span)
+               : 0;
 }
 
 double MonitorScheduler::requestedRate(int module) const

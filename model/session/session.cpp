@@ -8,12 +8,14 @@ namespace {
 
 QByteArray toQByteArray(const dev::Bytes &bytes)
 {
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()),
+                      static_cast<qsizetype>(bytes.size()));
 }
 
 std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
 {
-    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())};
+    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+            static_cast<std::size_t>(bytes.size())};
 }
 
 constexpr qsizetype kMaxUnmatched = 4096;
@@ -65,7 +67,8 @@ RequestId Session::submit(dev::access::Transaction t, Priority priority, Complet
     pending->done = std::move(done);
     const RequestId id = pending->id;
     if (queued() >= m_options.maxQueued) {
-        finish(std::move(pending), Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("The request queue is full")});
+        finish(std::move(pending),
+               Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("The request queue is full")});
         return id;
     }
     (priority == Priority::User ? m_user : m_monitor).push_back(std::move(pending));
@@ -85,7 +88,8 @@ void Session::cancel(RequestId id)
             if ((*it)->id == id) {
                 auto pending = std::move(*it);
                 queue->erase(it);
-                finish(std::move(pending), Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("Cancelled")});
+                finish(std::move(pending),
+                       Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("Cancelled")});
                 return;
             }
         }
@@ -99,7 +103,8 @@ void Session::cancelAll(Priority priority)
     auto taken = std::move(queue);
     queue.clear();
     for (auto &pending : taken)
-        finish(std::move(pending), Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("Cancelled")});
+        finish(std::move(pending),
+               Outcome{OutcomeStatus::Cancelled, {}, 0, false, tr("Cancelled")});
     if (m_current && m_current->priority == priority)
         m_current->cancelled = true;
 }
@@ -127,7 +132,8 @@ void Session::startNext()
     if (state == link::LinkState::Opening)
         return; // onLinkState(Open) schedules again
     if (state != link::LinkState::Open) {
-        failEverything(OutcomeStatus::LinkLost, tr("The link %1 is not open").arg(m_link->description()));
+        failEverything(OutcomeStatus::LinkLost,
+                       tr("The link %1 is not open").arg(m_link->description()));
         return;
     }
     auto &queue = m_user.empty() ? m_monitor : m_user;
@@ -143,16 +149,21 @@ void Session::sendAttempt()
     const ApiGuard guard(m_apiDepth);
     Pending &p = *m_current;
     if (p.cancelled) {
-        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, {}, p.attempts, p.sent, tr("Cancelled")});
+        finish(std::move(m_current),
+               Outcome{OutcomeStatus::Cancelled, {}, p.attempts, p.sent, tr("Cancelled")});
         return;
     }
     m_adapter->resetFraming();
     m_unmatched.clear();
     const dev::Bytes bytes = m_adapter->encode(p.transaction);
     if (bytes.empty()) {
-        finish(std::move(m_current), Outcome{OutcomeStatus::NotEncodable, {}, p.attempts, p.sent,
-                                             tr("The request cannot be encoded for %1")
-                                                 .arg(QString::fromStdString(m_adapter->protocolKey()))});
+        finish(std::move(m_current),
+               Outcome{OutcomeStatus::NotEncodable,
+                       {},
+                       p.attempts,
+                       p.sent,
+                       tr("The request cannot be encoded for %1")
+                           .arg(QString::fromStdString(m_adapter->protocolKey()))});
         return;
     }
     ++p.attempts;
@@ -190,8 +201,8 @@ void Session::onReceived(const QByteArray &bytes)
         return;
     m_unmatched.clear();
     if (reply->status == dev::access::ReplyStatus::Mismatch) {
-        emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(), ReceivedKind::Unmatched,
-                           tr("does not answer the request"));
+        emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+                           ReceivedKind::Unmatched, tr("does not answer the request"));
         return;
     }
     m_timeout.stop();
@@ -200,10 +211,15 @@ void Session::onReceived(const QByteArray &bytes)
                        refused ? ReceivedKind::Exception : ReceivedKind::Answer,
                        refused ? QString::fromStdString(reply->exceptionText.en) : QString());
     if (p.cancelled) {
-        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, std::move(*reply), p.attempts, true, tr("Cancelled")});
+        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, std::move(*reply),
+                                             p.attempts, true, tr("Cancelled")});
         return;
     }
-    Outcome outcome{refused ? OutcomeStatus::DeviceException : OutcomeStatus::Ok, std::move(*reply), p.attempts, true, {}};
+    Outcome outcome{refused ? OutcomeStatus::DeviceException : OutcomeStatus::Ok,
+                    std::move(*reply),
+                    p.attempts,
+                    true,
+                    {}};
     if (refused)
         ++m_counters.exceptions;
     finish(std::move(m_current), std::move(outcome));
@@ -222,7 +238,8 @@ void Session::onTimeout()
     }
     emit attemptTimedOut(p.transaction.module, p.attempts, elapsedNs());
     if (p.cancelled) {
-        finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, {}, p.attempts, true, tr("Cancelled")});
+        finish(std::move(m_current),
+               Outcome{OutcomeStatus::Cancelled, {}, p.attempts, true, tr("Cancelled")});
         return;
     }
     if (p.attempts <= m_options.retries) {
@@ -231,7 +248,10 @@ void Session::onTimeout()
         return;
     }
     ++m_counters.failures;
-    finish(std::move(m_current), Outcome{OutcomeStatus::Timeout, {}, p.attempts, true,
+    finish(std::move(m_current), Outcome{OutcomeStatus::Timeout,
+                                         {},
+                                         p.attempts,
+                                         true,
                                          tr("No answer after %n attempt(s)", nullptr, p.attempts)});
 }
 
@@ -242,7 +262,8 @@ void Session::onLinkState(link::LinkState state)
         return;
     }
     if (state == link::LinkState::Closed || state == link::LinkState::Failed)
-        failEverything(OutcomeStatus::LinkLost, tr("The link %1 was lost").arg(m_link->description()));
+        failEverything(OutcomeStatus::LinkLost,
+                       tr("The link %1 was lost").arg(m_link->description()));
 }
 
 void Session::onLinkFailed(const QString &reason)
@@ -281,7 +302,8 @@ void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
         // Inside submit()/cancel()/a link failure: the caller must not see its completion
         // before the call returns. Completions run from the event loop, in order.
         if (done)
-            QTimer::singleShot(0, this, [done = std::move(done), outcome = std::move(outcome)] { done(outcome); });
+            QTimer::singleShot(
+                0, this, [done = std::move(done), outcome = std::move(outcome)] { done(outcome); });
         schedule();
         return;
     }
@@ -295,18 +317,12 @@ void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
 QString outcomeStatusText(OutcomeStatus status)
 {
     switch (status) {
-    case OutcomeStatus::Ok:
-        return Session::tr("ok");
-    case OutcomeStatus::DeviceException:
-        return Session::tr("refused by the device");
-    case OutcomeStatus::Timeout:
-        return Session::tr("no answer");
-    case OutcomeStatus::LinkLost:
-        return Session::tr("link lost");
-    case OutcomeStatus::Cancelled:
-        return Session::tr("cancelled");
-    case OutcomeStatus::NotEncodable:
-        return Session::tr("cannot be encoded");
+    case OutcomeStatus::Ok: return Session::tr("ok");
+    case OutcomeStatus::DeviceException: return Session::tr("refused by the device");
+    case OutcomeStatus::Timeout: return Session::tr("no answer");
+    case OutcomeStatus::LinkLost: return Session::tr("link lost");
+    case OutcomeStatus::Cancelled: return Session::tr("cancelled");
+    case OutcomeStatus::NotEncodable: return Session::tr("cannot be encoded");
     }
     return {};
 }

@@ -6,16 +6,14 @@
 // used only from there. The link is not owned and must outlive the session.
 #pragma once
 
-#include "model/session/session_options.h"
-
 #include "access/transaction.h"
+#include "model/session/session_options.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
-
 #include <deque>
 #include <functional>
 #include <memory>
@@ -35,7 +33,7 @@ enum class OutcomeStatus {
     Timeout,         // no valid answer after every retry
     LinkLost,        // the link failed or closed while the request was queued or on the wire
     Cancelled,
-    NotEncodable,    // the adapter cannot express the request (a programmer error or bad value)
+    NotEncodable, // the adapter cannot express the request (a programmer error or bad value)
 };
 
 struct Outcome
@@ -55,8 +53,8 @@ using Completion = std::function<void(const Outcome &)>;
 
 struct SessionCounters
 {
-    quint64 requests = 0;   // completed, whatever the outcome
-    quint64 attempts = 0;   // frames sent
+    quint64 requests = 0; // completed, whatever the outcome
+    quint64 attempts = 0; // frames sent
     quint64 retries = 0;
     quint64 timeouts = 0;   // attempts that got no answer in time
     quint64 exceptions = 0; // device refusals
@@ -92,8 +90,8 @@ public:
 signals:
     // A frame the session put on the wire / recognised coming back (for the telegram log).
     void frameSent(const QByteArray &bytes, int module, qint64 elapsedNs);
-    void frameReceived(const QByteArray &bytes, int module, qint64 elapsedNs, vt::model::ReceivedKind kind,
-                       const QString &note);
+    void frameReceived(const QByteArray &bytes, int module, qint64 elapsedNs,
+                       vt::model::ReceivedKind kind, const QString &note);
     // An attempt got no answer in time.
     void attemptTimedOut(int module, int attempt, qint64 elapsedNs);
     void countersChanged();

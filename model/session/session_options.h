@@ -17,10 +17,10 @@ struct SessionOptions
     // the scheduling slack of a desktop OS. HCS: DMA Profinet manual §3.4.1 names 25 ms for an
     // EEPROM write; 100 ms leaves room for a USB serial adapter's latency.
     std::chrono::milliseconds turnaround{100};
-    int retries = 3;                           // attempts after the first one
-    std::chrono::milliseconds backoff{20};     // before the first retry; doubles each retry
+    int retries = 3;                       // attempts after the first one
+    std::chrono::milliseconds backoff{20}; // before the first retry; doubles each retry
     std::chrono::milliseconds maxBackoff{500};
-    std::size_t maxQueued = 100'000;           // refuse more instead of growing without bound
+    std::size_t maxQueued = 100'000; // refuse more instead of growing without bound
 
     // Time on the wire for `bytes` characters (zero without a serial wire).
     std::chrono::microseconds wireTime(std::size_t bytes) const

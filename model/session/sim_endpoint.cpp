@@ -1,7 +1,5 @@
 #include "sim_endpoint.h"
 
-#include "transports/sim_link.h"
-
 #include "dict/dictionary_loader.h"
 #include "model/session/sim_hart.h"
 #include "sim/hcs_node.h"
@@ -9,6 +7,7 @@
 #include "sim/modbus_tcp_server.h"
 #include "sim/node_config.h"
 #include "sim/node_image_server.h"
+#include "transports/sim_link.h"
 
 namespace vt::model {
 
@@ -81,7 +80,8 @@ void SimEndpoint::tick()
         m_link->pump();
 }
 
-dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &specIn, const dev::DictionarySet *set)
+dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &specIn,
+                                                                 const dev::DictionarySet *set)
 {
     using namespace dev::sim;
     SimSpec spec = specIn;
@@ -93,7 +93,8 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
     }
     const dev::Dictionary *dict = set->find(spec.family);
     if (!dict)
-        return SimEndpoint::tr("unknown device family '%1'").arg(QString::fromStdString(spec.family));
+        return SimEndpoint::tr("unknown device family '%1'")
+            .arg(QString::fromStdString(spec.family));
 
     auto endpoint = std::unique_ptr<SimEndpoint>(new SimEndpoint(spec, nullptr));
     std::shared_ptr<dev::ByteServer> server;
@@ -133,7 +134,8 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
                 .arg(QString::fromStdString(spec.family), QString::fromStdString(spec.protocol));
         }
     } else {
-        return SimEndpoint::tr("%1 cannot be simulated over a PC link yet (DSP-408 needs PROFIBUS or CANopen)")
+        return SimEndpoint::tr(
+                   "%1 cannot be simulated over a PC link yet (DSP-408 needs PROFIBUS or CANopen)")
             .arg(QString::fromStdString(spec.family));
     }
     endpoint->m_spec = spec;

@@ -13,7 +13,6 @@
 #include <QObject>
 #include <QString>
 #include <QTimer>
-
 #include <memory>
 #include <string>
 
@@ -36,12 +35,12 @@ struct SimHart;
 
 struct SimSpec
 {
-    std::string family;              // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
-    std::size_t modules = 1;         // HCS node size
-    int mode = 0;                    // E00; 0: the family's first mode
-    std::string protocol;            // "modbus-rtu" (default for one HCS module), "modbus-tcp" (default for
-                                     // a node of several), "node-image", "hart" (the SD7's only one)
-    int baudRate = 0;                // simulated wire speed; 0: no wire delay
+    std::string family;      // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
+    std::size_t modules = 1; // HCS node size
+    int mode = 0;            // E00; 0: the family's first mode
+    std::string protocol;    // "modbus-rtu" (default for one HCS module), "modbus-tcp" (default for
+                             // a node of several), "node-image", "hart" (the SD7's only one)
+    int baudRate = 0;        // simulated wire speed; 0: no wire delay
     int bitsPerCharacter = 11;
 };
 
@@ -55,8 +54,8 @@ public:
     ~SimEndpoint() override;
 
     dev::sim::SimClock &clock() { return m_clock; }
-    dev::sim::HcsNode *node() const { return m_node.get(); }        // HCS families
-    dev::sim::HartDevice *hart() const;                             // wandfluh-sd7
+    dev::sim::HcsNode *node() const { return m_node.get(); } // HCS families
+    dev::sim::HartDevice *hart() const;                      // wandfluh-sd7
     const SimSpec &spec() const { return m_spec; }
     // The module address a master uses for module `index` (Modbus unit / node SADR / poll address).
     int moduleAddress(std::size_t index) const;
@@ -66,8 +65,8 @@ public:
     void setRunning(bool running);
 
 private:
-    friend dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &spec,
-                                                                            const dev::DictionarySet *set);
+    friend dev::Result<std::unique_ptr<link::SimLink>, QString>
+    makeSimLink(const SimSpec &spec, const dev::DictionarySet *set);
     SimEndpoint(SimSpec spec, QObject *parent);
     void tick();
 
@@ -83,8 +82,8 @@ private:
 
 // Builds the device and its link (not yet open). `set`: the dictionaries (builtin when null),
 // which must outlive the link. The endpoint is `link->findChild<SimEndpoint *>()`.
-dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &spec,
-                                                                 const dev::DictionarySet *set = nullptr);
+dev::Result<std::unique_ptr<link::SimLink>, QString>
+makeSimLink(const SimSpec &spec, const dev::DictionarySet *set = nullptr);
 SimEndpoint *simEndpointOf(const link::SimLink &link);
 
 } // namespace vt::model

@@ -22,26 +22,32 @@ TelegramRecord::Status statusOf(ReceivedKind kind)
 
 } // namespace
 
-TelegramRecorder::TelegramRecorder(Session &session, TelegramLog &log, QObject *parent) : QObject(parent)
+TelegramRecorder::TelegramRecorder(Session &session, TelegramLog &log, QObject *parent)
+    : QObject(parent)
 {
     QPointer<TelegramLog> target(&log);
     Session *s = &session;
     const auto protocol = [s] { return QString::fromStdString(s->adapter().protocolKey()); };
-    connect(&session, &Session::frameSent, this, [s, target, protocol](const QByteArray &bytes, int module, qint64) {
-        if (target)
-            target->append(dev::Direction::Request, s->link().description(), protocol(), module, bytes);
-    });
-    connect(&session, &Session::frameReceived, this,
-            [s, target, protocol](const QByteArray &bytes, int module, qint64, ReceivedKind kind, const QString &note) {
+    connect(&session, &Session::frameSent, this,
+            [s, target, protocol](const QByteArray &bytes, int module, qint64) {
                 if (target)
-                    target->append(dev::Direction::Response, s->link().description(), protocol(), module, bytes,
-                                   statusOf(kind), note);
+                    target->append(dev::Direction::Request, s->link().description(), protocol(),
+                                   module, bytes);
             });
-    connect(&session, &Session::attemptTimedOut, this, [s, target, protocol](int module, int attempt, qint64) {
-        if (target)
-            target->appendTimeout(s->link().description(), protocol(), module,
-                                  TelegramRecorder::tr("no answer to attempt %1").arg(attempt));
-    });
+    connect(&session, &Session::frameReceived, this,
+            [s, target, protocol](const QByteArray &bytes, int module, qint64, ReceivedKind kind,
+                                  const QString &note) {
+                if (target)
+                    target->append(dev::Direction::Response, s->link().description(), protocol(),
+                                   module, bytes, statusOf(kind), note);
+            });
+    connect(&session, &Session::attemptTimedOut, this,
+            [s, target, protocol](int module, int attempt, qint64) {
+                if (target)
+                    target->appendTimeout(
+                        s->link().description(), protocol(), module,
+                        TelegramRecorder::tr("no answer to attempt %1").arg(attempt));
+            });
 }
 
 } // namespace vt::model

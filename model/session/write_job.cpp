@@ -1,9 +1,8 @@
 #include "write_job.h"
 
-#include <QPointer>
-
 #include "dict/cooking.h"
 
+#include <QPointer>
 #include <algorithm>
 
 namespace vt::model {
@@ -19,7 +18,8 @@ QString valueText(const dev::ParamMeta &row, const dev::RawValue &value)
 {
     if (dev::isText(value))
         return QStringLiteral("\"%1\"").arg(QString::fromStdString(std::get<std::string>(value)));
-    return QString::fromStdString(dev::formatValue(row, dev::rawNumber(value), dev::Language::English)) +
+    return QString::fromStdString(
+               dev::formatValue(row, dev::rawNumber(value), dev::Language::English)) +
            QStringLiteral(" (raw %1)").arg(dev::rawNumber(value), 0, 'g', 10);
 }
 
@@ -32,10 +32,11 @@ std::string trimmed(std::string s)
 
 } // namespace
 
-WriteJob::WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary, std::vector<WriteItem> items,
-                   WriteOptions options, QObject *parent)
-    : QObject(parent), m_access(access), m_module(module), m_dictionary(dictionary), m_items(std::move(items)),
-      m_options(options), m_pacingMs(options.pacingMs.value_or(dictionary.writePacingMs))
+WriteJob::WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary,
+                   std::vector<WriteItem> items, WriteOptions options, QObject *parent)
+    : QObject(parent), m_access(access), m_module(module), m_dictionary(dictionary),
+      m_items(std::move(items)), m_options(options),
+      m_pacingMs(options.pacingMs.value_or(dictionary.writePacingMs))
 {
     m_pace.setSingleShot(true);
     m_pace.setTimerType(Qt::PreciseTimer);
@@ -51,7 +52,8 @@ WriteJob::~WriteJob() = default;
 
 bool WriteJob::complete() const
 {
-    return std::all_of(m_items.begin(), m_items.end(), [](const WriteItem &i) { return isOnDevice(i.status); });
+    return std::all_of(m_items.begin(), m_items.end(),
+                       [](const WriteItem &i) { return isOnDevice(i.status); });
 }
 
 void WriteJob::start()
@@ -70,8 +72,9 @@ void WriteJob::start()
             item.reason = tr("unknown parameter");
         } else if (dev::isText(item.value) != item.row->isString()) {
             item.status = WriteStatus::RefusedLocally;
-            item.reason = tr("%1 expects %2").arg(QString::fromStdString(item.row->name),
-                                                  item.row->isString() ? tr("text") : tr("a number"));
+            item.reason = tr("%1 expects %2")
+                              .arg(QString::fromStdString(item.row->name),
+                                   item.row->isString() ? tr("text") : tr("a number"));
         } else if (!item.row->writable()) {
             item.status = WriteStatus::RefusedLocally;
             item.reason = tr("%1 is not writable").arg(QString::fromStdString(item.row->name));
@@ -162,95 +165,110 @@ void WriteJob::next()
 void WriteJob::writeItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.write(m_module, *item.row, item.value, Priority::User, [this, guard = QPointer<WriteJob>(this), index](const Outcome &outcome) {
-        if (!guard)
-            return; // the job was destroyed while its request was out
-        m_sinceWrite.start(); // pacing counts from the device's acknowledgement (or the give-up)
-        WriteItem &it = m_items[static_cast<std::size_t>(index)];
-        switch (outcome.status) {
-        case OutcomeStatus::Ok:
-            if (m_options.verify && it.row->readable()) {
-                verifyItem(index);
+    m_access.write(
+        m_module, *item.row, item.value, Priority::User,
+        [this, guard = QPointer<WriteJob>(this), index](const Outcome &outcome) {
+            if (!guard)
+                return; // the job was destroyed while its request was out
+            m_sinceWrite
+                .start(); // pacing counts from the device's acknowledgement (or the give-up)
+            WriteItem &it = m_items[static_cast<std::size_t>(index)];
+            switch (outcome.status) {
+            case OutcomeStatus::Ok:
+                if (m_options.verify && it.row->readable()) {
+                    verifyItem(index);
+                    return;
+                }
+                settle(index, WriteStatus::Written, tr("acknowledged; not read back"));
+                next();
+                return;
+            case OutcomeStatus::DeviceException:
+                it.exceptionCode = outcome.reply.exceptionCode;
+                settle(index, WriteStatus::Refused, local(outcome.reply.exceptionText));
+                next();
+                return;
+            case OutcomeStatus::NotEncodable:
+                settle(index, WriteStatus::RefusedLocally, outcome.reason);
+                next();
+                return;
+            case OutcomeStatus::Timeout:
+            case OutcomeStatus::LinkLost:
+            case OutcomeStatus::Cancelled:
+                settle(
+                    index, outcome.sent ? WriteStatus::Uncertain : WriteStatus::NotSent,
+                    outcome.sent
+                        ? tr("sent, but no answer (%1): the value may or may not be on the device")
+                              .arg(outcome.reason)
+                        : outcome.reason);
+                stopRemaining(outcome.reason);
+                done();
                 return;
             }
-            settle(index, WriteStatus::Written, tr("acknowledged; not read back"));
-            next();
-            return;
-        case OutcomeStatus::DeviceException:
-            it.exceptionCode = outcome.reply.exceptionCode;
-            settle(index, WriteStatus::Refused, local(outcome.reply.exceptionText));
-            next();
-            return;
-        case OutcomeStatus::NotEncodable:
-            settle(index, WriteStatus::RefusedLocally, outcome.reason);
-            next();
-            return;
-        case OutcomeStatus::Timeout:
-        case OutcomeStatus::LinkLost:
-        case OutcomeStatus::Cancelled:
-            settle(index, outcome.sent ? WriteStatus::Uncertain : WriteStatus::NotSent,
-                   outcome.sent ? tr("sent, but no answer (%1): the value may or may not be on the device")
-                                      .arg(outcome.reason)
-                                : outcome.reason);
-            stopRemaining(outcome.reason);
-            done();
-            return;
-        }
-    });
+        });
 }
 
 void WriteJob::verifyItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(m_module, {item.row}, Priority::User, [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
-        if (!guard)
-            return; // the job was destroyed while its request was out
-        WriteItem &it = m_items[static_cast<std::size_t>(index)];
-        if (result.values.size() == 1) {
-            it.readBack = result.values.front().value;
-            if (readBackEquals(it, *it.readBack))
-                settle(index, WriteStatus::Verified);
-            else
-                settle(index, WriteStatus::Mismatch,
-                       tr("read back %1, expected %2").arg(valueText(*it.row, *it.readBack), valueText(*it.row, it.value)));
-            next();
-            return;
-        }
-        const Outcome outcome = result.failures.empty() ? Outcome{} : result.failures.front().outcome;
-        settle(index, WriteStatus::Written, tr("acknowledged; the read back failed (%1)").arg(outcome.reason));
-        if (outcome.status == OutcomeStatus::LinkLost || outcome.status == OutcomeStatus::Timeout ||
-            outcome.status == OutcomeStatus::Cancelled) {
-            stopRemaining(outcome.reason);
-            done();
-            return;
-        }
-        next();
-    });
+    m_access.read(m_module, {item.row}, Priority::User,
+                  [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
+                      if (!guard)
+                          return; // the job was destroyed while its request was out
+                      WriteItem &it = m_items[static_cast<std::size_t>(index)];
+                      if (result.values.size() == 1) {
+                          it.readBack = result.values.front().value;
+                          if (readBackEquals(it, *it.readBack))
+                              settle(index, WriteStatus::Verified);
+                          else
+                              settle(index, WriteStatus::Mismatch,
+                                     tr("read back %1, expected %2")
+                                         .arg(valueText(*it.row, *it.readBack),
+                                              valueText(*it.row, it.value)));
+                          next();
+                          return;
+                      }
+                      const Outcome outcome =
+                          result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+                      settle(index, WriteStatus::Written,
+                             tr("acknowledged; the read back failed (%1)").arg(outcome.reason));
+                      if (outcome.status == OutcomeStatus::LinkLost ||
+                          outcome.status == OutcomeStatus::Timeout ||
+                          outcome.status == OutcomeStatus::Cancelled) {
+                          stopRemaining(outcome.reason);
+                          done();
+                          return;
+                      }
+                      next();
+                  });
 }
 
 void WriteJob::probeItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(m_module, {item.row}, Priority::User, [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
-        if (!guard)
-            return; // the job was destroyed while its request was out
-        WriteItem &it = m_items[static_cast<std::size_t>(index)];
-        if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
-            it.readBack = result.values.front().value;
-            settle(index, WriteStatus::Verified, tr("found on the device after the interruption"));
-            next();
-            return;
-        }
-        if (result.values.size() == 1) { // not there: write it now, paced like any write
-            it.status = WriteStatus::Pending;
-            --m_cursor;
-            next();
-            return;
-        }
-        const Outcome outcome = result.failures.empty() ? Outcome{} : result.failures.front().outcome;
-        stopRemaining(outcome.reason); // it stays Uncertain
-        done();
-    });
+    m_access.read(
+        m_module, {item.row}, Priority::User,
+        [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
+            if (!guard)
+                return; // the job was destroyed while its request was out
+            WriteItem &it = m_items[static_cast<std::size_t>(index)];
+            if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
+                it.readBack = result.values.front().value;
+                settle(index, WriteStatus::Verified,
+                       tr("found on the device after the interruption"));
+                next();
+                return;
+            }
+            if (result.values.size() == 1) { // not there: write it now, paced like any write
+                it.status = WriteStatus::Pending;
+                --m_cursor;
+                next();
+                return;
+            }
+            const Outcome outcome =
+                result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+            stopRemaining(outcome.reason); // it stays Uncertain
+            done();
+        });
 }
 
 void WriteJob::settle(int index, WriteStatus status, const QString &reason)
@@ -292,7 +310,8 @@ bool WriteJob::readBackEquals(const WriteItem &item, const dev::RawValue &value)
         return trimmed(std::get<std::string>(item.value)) == trimmed(std::get<std::string>(value));
     }
     if (item.row && item.row->isFloat())
-        return static_cast<float>(dev::rawNumber(item.value)) == static_cast<float>(dev::rawNumber(value));
+        return static_cast<float>(dev::rawNumber(item.value)) ==
+               static_cast<float>(dev::rawNumber(value));
     return dev::rawNumber(item.value) == dev::rawNumber(value);
 }
 

@@ -27,8 +27,8 @@ class WriteJob : public QObject
 {
     Q_OBJECT
 public:
-    WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary, std::vector<WriteItem> items,
-             WriteOptions options = {}, QObject *parent = nullptr);
+    WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary,
+             std::vector<WriteItem> items, WriteOptions options = {}, QObject *parent = nullptr);
     ~WriteJob() override;
 
     // Checks every row (RefusedLocally / Unchanged), then writes the rest in order.

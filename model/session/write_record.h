@@ -7,7 +7,6 @@
 #include "dict/raw_value.h"
 
 #include <QString>
-
 #include <optional>
 #include <vector>
 
@@ -28,8 +27,8 @@ enum class WriteStatus {
 struct WriteItem
 {
     const dev::ParamMeta *row = nullptr;
-    dev::RawValue value;                    // what should be on the device
-    std::optional<dev::RawValue> before;    // what the device held, when known
+    dev::RawValue value;                 // what should be on the device
+    std::optional<dev::RawValue> before; // what the device held, when known
     WriteStatus status = WriteStatus::Pending;
     std::optional<dev::RawValue> readBack;
     int exceptionCode = 0;

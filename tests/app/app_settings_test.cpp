@@ -1,7 +1,6 @@
 #include "app/gui/app_settings.h"
 
 #include <QTemporaryDir>
-
 #include <gtest/gtest.h>
 
 using vt::app::AppSettings;

@@ -2,13 +2,11 @@
 // --help and --version exit 0; --json output is JSON.
 #include "app/cli/cli_app.h"
 
-#include <nlohmann/json.hpp>
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -41,8 +39,9 @@ int lines(const std::string &s)
 
 TEST(Cli, UsageErrorsExitTwoWithOneLineOnStderr)
 {
-    for (const QStringList &args : {QStringList{}, QStringList{"--frobnicate"}, QStringList{"no-such-command"},
-                                    QStringList{"--json", "no-such-command"}}) {
+    for (const QStringList &args :
+         {QStringList{}, QStringList{"--frobnicate"}, QStringList{"no-such-command"},
+          QStringList{"--json", "no-such-command"}}) {
         const CliRun r = cli(args);
         EXPECT_EQ(r.code, vt::cli::kExitUsage) << args.join(' ').toStdString();
         EXPECT_EQ(lines(r.err), 1) << r.err;
@@ -55,7 +54,8 @@ TEST(Cli, HelpAndVersion)
 {
     const CliRun help = cli({"--help"});
     EXPECT_EQ(help.code, 0);
-    EXPECT_NE(help.out.find("Exit codes: 0 ok, 1 device or protocol error, 2 usage error"), std::string::npos);
+    EXPECT_NE(help.out.find("Exit codes: 0 ok, 1 device or protocol error, 2 usage error"),
+              std::string::npos);
     const CliRun version = cli({"--version"});
     EXPECT_EQ(version.code, 0);
     EXPECT_EQ(version.out, std::string("valvetune-cli ") + VT_VERSION + "\n");
@@ -95,9 +95,11 @@ TEST(CliDictionary, ShowsEveryParameterWithItsMetadata)
     ASSERT_EQ(r.code, 0) << r.err;
     const auto doc = nlohmann::json::parse(r.out);
     const auto &rows = doc.at("parameters");
-    const auto it = std::find_if(rows.begin(), rows.end(), [](const auto &p) { return p["name"] == "C1.07"; });
+    const auto it =
+        std::find_if(rows.begin(), rows.end(), [](const auto &p) { return p["name"] == "C1.07"; });
     ASSERT_NE(it, rows.end());
-    for (const char *key : {"name", "id", "block", "access", "type", "min", "max", "unit", "scale", "enum", "label_en", "label_de"})
+    for (const char *key : {"name", "id", "block", "access", "type", "min", "max", "unit", "scale",
+                            "enum", "label_en", "label_de"})
         EXPECT_TRUE(it->contains(key)) << key;
     EXPECT_EQ((*it)["id"], 48);
     EXPECT_EQ((*it)["unit"], "V");

@@ -9,17 +9,17 @@
 #include "app/gui/main_window.h"
 #include "app/gui/workspace.h"
 #include "model/params/compare_model.h"
+#include "model/params/device_jobs.h"
+#include "model/params/param_file_io.h"
 #include "model/params/param_roles.h"
 #include "model/params/parameter_filter_model.h"
 #include "model/params/parameter_tree_model.h"
 #include "session_fixture.h"
-#include "widgets/editor/compare_dialog.h"
-#include "widgets/editor/map_report_dialog.h"
-#include "model/params/device_jobs.h"
-#include "model/params/param_file_io.h"
-#include "widgets/editor/parameter_editor.h"
 #include "widgets/connect/connect_dialog.h"
 #include "widgets/connect/link_status_widget.h"
+#include "widgets/editor/compare_dialog.h"
+#include "widgets/editor/map_report_dialog.h"
+#include "widgets/editor/parameter_editor.h"
 #include "widgets/editor/write_dialog.h"
 #include "widgets/files/new_file_dialog.h"
 
@@ -149,8 +149,8 @@ TEST_F(EditorE2E, GermanLocaleTakesTheDecimalComma)
     connectSimulator();
     typeValue("C1.07", QStringLiteral("1,5"));
     EXPECT_EQ(working("C1.07"), dev::RawValue{1500.0});
-    const QModelIndex value =
-        window->editor()->treeModel()->indexOf(0, row("C1.07"), model::ParameterTreeModel::ColValue);
+    const QModelIndex value = window->editor()->treeModel()->indexOf(
+        0, row("C1.07"), model::ParameterTreeModel::ColValue);
     EXPECT_EQ(value.data().toString(), "1,500 V");
 }
 
@@ -204,7 +204,8 @@ TEST_F(EditorE2E, NewFileFromTheDictionaryDefaultsAndConnectThroughTheDialog)
     QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
     connectDialog->accept();
     ASSERT_TRUE(read.wait(30000));
-    EXPECT_TRUE(window->linkStatus()->linkText().contains("dma-pn-v51")) << window->linkStatus()->linkText().toStdString();
+    EXPECT_TRUE(window->linkStatus()->linkText().contains("dma-pn-v51"))
+        << window->linkStatus()->linkText().toStdString();
     EXPECT_TRUE(window->workspace().document().module(0).online);
     // The new document's module 1 paired with the device's: its values now differ where the
     // simulator's stored values are not the defaults, and nothing was written.
@@ -253,14 +254,16 @@ TEST_F(EditorE2E, FileOfAnotherVersionReportsWhatDidNotMap)
     record.family = "dma-pn-v51";
     record.version = "51";
     record.mode = "3";
-    record.values.push_back(dev::files::makeValueRow(*dev::builtinDictionaries()->find("dma-pn-v51")->find("C1.07"), 700.0));
+    record.values.push_back(dev::files::makeValueRow(
+        *dev::builtinDictionaries()->find("dma-pn-v51")->find("C1.07"), 700.0));
     dev::files::ValueRow future;
     future.name = "C1.99";
     future.raw = 5.0;
     record.values.push_back(future);
     file.modules.push_back(record);
     const QString path = dir.filePath("newer.vtpar");
-    ASSERT_FALSE(model::saveParamFile(path, file, *dev::builtinDictionaries(), dev::Language::English));
+    ASSERT_FALSE(
+        model::saveParamFile(path, file, *dev::builtinDictionaries(), dev::Language::English));
     ASSERT_TRUE(window->files().openPath(path));
     ASSERT_TRUE(ui::MapReportDialog::needed(window->workspace().document()));
     ui::MapReportDialog report(window->workspace().document());

@@ -21,13 +21,15 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
-
 #include <gtest/gtest.h>
 
 namespace vt::test {
 namespace {
 
-QString tr(const char *context, const char *text) { return QCoreApplication::translate(context, text); }
+QString tr(const char *context, const char *text)
+{
+    return QCoreApplication::translate(context, text);
+}
 
 struct Texts
 {
@@ -39,13 +41,17 @@ Texts visible(app::MainWindow &w)
     Texts t;
     t.menu = w.menuBar()->actions().first()->text();
     t.filter = w.editor()->findChild<QCheckBox *>("filterChanged")->text();
-    t.header = w.editor()->treeModel()->headerData(model::ParameterTreeModel::ColValue, Qt::Horizontal).toString();
+    t.header = w.editor()
+                   ->treeModel()
+                   ->headerData(model::ParameterTreeModel::ColValue, Qt::Horizontal)
+                   .toString();
     t.axis = w.monitor()->plot()->xAxis->label();
     t.tab = w.inspector()->findChild<QTabWidget *>()->tabText(0);
     ui::FoldWizard *wizard = w.findChild<ui::FoldWizard *>();
     t.wizardPage = wizard && wizard->currentPage() ? wizard->currentPage()->title() : QString();
     const model::ParamModule &m = w.workspace().document().module(0);
-    t.value = w.editor()->treeModel()
+    t.value = w.editor()
+                  ->treeModel()
                   ->indexOf(0, m.dictionary->find("C1.07"), model::ParameterTreeModel::ColValue)
                   .data()
                   .toString();

@@ -1,6 +1,7 @@
 #include "app/gui/app_settings.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "qt_printers.h"
 #include "widgets/connect/link_status_widget.h"
 
 #include <QAction>
@@ -10,9 +11,6 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QTemporaryDir>
-
-#include "qt_printers.h"
-
 #include <gtest/gtest.h>
 
 using namespace vt::app;
@@ -54,13 +52,17 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
 {
     MainWindow w(settings, language);
     w.show();
-    EXPECT_EQ(menuTitles(w), (QStringList{"&File", "&Edit", "&Device", "&View", "&Language", "&Help"}));
-    EXPECT_EQ(actionTexts(w, "menuFile"), (QStringList{"&New…", "&Open…", "&Save", "Save &As…", "Open &Recent",
-                                                      "&Export CSV…", "Compare with &File…", "&Quit"}));
+    EXPECT_EQ(menuTitles(w),
+              (QStringList{"&File", "&Edit", "&Device", "&View", "&Language", "&Help"}));
+    EXPECT_EQ(actionTexts(w, "menuFile"),
+              (QStringList{"&New…", "&Open…", "&Save", "Save &As…", "Open &Recent", "&Export CSV…",
+                           "Compare with &File…", "&Quit"}));
     EXPECT_EQ(actionTexts(w, "menuDevice"),
-              (QStringList{"&Connect…", "&Disconnect", "&Read All", "&Write Changes…", "Compare with De&vice…",
-                           "&Live Display Values", "&Scan Node", "&Fold Wizard…"}));
-    EXPECT_EQ(actionTexts(w, "menuView"), (QStringList{"Node", "Monitor", "Telegrams", "Linearisation"}));
+              (QStringList{"&Connect…", "&Disconnect", "&Read All", "&Write Changes…",
+                           "Compare with De&vice…", "&Live Display Values", "&Scan Node",
+                           "&Fold Wizard…"}));
+    EXPECT_EQ(actionTexts(w, "menuView"),
+              (QStringList{"Node", "Monitor", "Telegrams", "Linearisation"}));
     EXPECT_EQ(actionTexts(w, "menuLanguage"), (QStringList{"English", "Deutsch"}));
 
     for (QDockWidget *d : {w.nodeDock(), w.monitorDock(), w.telegramsDock()}) {
@@ -84,10 +86,12 @@ TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)
     QCoreApplication::processEvents(); // QApplication posts LanguageChange to every window
     EXPECT_EQ(language.current(), "de");
     EXPECT_TRUE(german->isChecked());
-    EXPECT_EQ(menuTitles(w), (QStringList{"&Datei", "&Bearbeiten", "&Gerät", "&Ansicht", "&Sprache", "&Hilfe"}));
+    EXPECT_EQ(menuTitles(w),
+              (QStringList{"&Datei", "&Bearbeiten", "&Gerät", "&Ansicht", "&Sprache", "&Hilfe"}));
     EXPECT_EQ(actionTexts(w, "menuDevice"),
               (QStringList{"&Verbinden…", "&Trennen", "Alle &lesen", "Änderungen &schreiben…",
-                           "Mit &Gerät vergleichen…", "&Live-Anzeigewerte", "Knoten &abfragen", "&Knoten-Assistent…"}));
+                           "Mit &Gerät vergleichen…", "&Live-Anzeigewerte", "Knoten &abfragen",
+                           "&Knoten-Assistent…"}));
     EXPECT_EQ(w.nodeDock()->windowTitle(), "Knoten");
     EXPECT_EQ(w.linkStatus()->linkText(), "Nicht verbunden");
     EXPECT_EQ(settings.language(), "de"); // the choice is remembered

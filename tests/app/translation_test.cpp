@@ -1,12 +1,11 @@
 // The German catalogue is complete: every message translated, none unfinished, vanished or
 // obsolete (German and English issue). lupdate marks new UI strings "unfinished", so a change
 // that adds text without translating it fails here.
+#include "qt_printers.h"
+
 #include <QFile>
 #include <QXmlStreamReader>
-
 #include <gtest/gtest.h>
-
-#include "qt_printers.h"
 
 TEST(Translations, GermanCatalogueHasNoUnfinishedEntries)
 {
@@ -25,7 +24,8 @@ TEST(Translations, GermanCatalogueHasNoUnfinishedEntries)
         } else if (xml.name() == QLatin1String("translation")) {
             ++messages;
             const QString type = xml.attributes().value(QLatin1String("type")).toString();
-            const bool plural = xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes");
+            const bool plural =
+                xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes");
             const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
             if (!type.isEmpty() || (!plural && text.trimmed().isEmpty()))
                 problems << QStringLiteral("%1 [%2]").arg(source, type.isEmpty() ? "empty" : type);

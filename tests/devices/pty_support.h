@@ -2,13 +2,12 @@
 // one side of a serial line and ValveTune's code on the other.
 #pragma once
 
-#include <fcntl.h>
-#include <stdlib.h>
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
+#include <fcntl.h>
+#include <stdlib.h>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace vt::test {

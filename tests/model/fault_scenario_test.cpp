@@ -1,10 +1,8 @@
 // Issue #6 fault scenarios: 2 % dropped and 0.5 % corrupted frames — read all still completes
 // with the right values, over several seeds; no out-of-range value is ever sent.
-#include "session_fixture.h"
-
-#include "model/session/write_job.h"
-
 #include "modbus/rtu.h"
+#include "model/session/write_job.h"
+#include "session_fixture.h"
 
 #include <QSignalSpy>
 
@@ -23,21 +21,26 @@ TEST(FaultScenario, ReadAllCompletesWithCorrectValuesUnderDropsAndCorruption)
         options.retries = 5;
         auto c = connectSim("dma-pb-v32", 1, faults, options);
         ASSERT_TRUE(c);
-        const auto rows = model::readableRows(c->dictionary(), c->module().version(), std::to_string(c->module().mode()));
+        const auto rows = model::readableRows(c->dictionary(), c->module().version(),
+                                              std::to_string(c->module().mode()));
         for (int round = 0; round < 3; ++round) {
             std::optional<model::ReadResult> result;
-            c->access->read(c->address(), rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
+            c->access->read(c->address(), rows, model::Priority::User,
+                            [&](const model::ReadResult &r) { result = r; });
             ASSERT_TRUE(waitFor(result, 60'000));
-            ASSERT_TRUE(result->complete()) << "seed " << seed << ": "
-                                            << result->failures.front().outcome.reason.toStdString();
+            ASSERT_TRUE(result->complete())
+                << "seed " << seed << ": " << result->failures.front().outcome.reason.toStdString();
             for (const model::RowValue &v : result->values) {
                 if (v.row->block != "d") {
-                    EXPECT_EQ(dev::rawNumber(v.value), storedRaw(c->module(), *v.row)) << v.row->name;
+                    EXPECT_EQ(dev::rawNumber(v.value), storedRaw(c->module(), *v.row))
+                        << v.row->name;
                 }
             }
         }
         const auto &counters = c->fault->counters();
-        EXPECT_GT(counters.txDropped + counters.rxDropped + counters.txCorrupted + counters.rxCorrupted, 0u)
+        EXPECT_GT(counters.txDropped + counters.rxDropped + counters.txCorrupted +
+                      counters.rxCorrupted,
+                  0u)
             << "seed " << seed << ": the schedule injected nothing, the test proves nothing";
     }
 }
@@ -49,10 +52,11 @@ TEST(FaultScenario, NoOutOfRangeValueIsEverSent)
     auto c = connectSim("dma-pn-v51", 1, faults);
     ASSERT_TRUE(c);
     std::vector<QByteArray> writes;
-    QObject::connect(c->session.get(), &model::Session::frameSent, [&](const QByteArray &bytes, int, qint64) {
-        if (bytes.size() > 1 && bytes[1] == 6)
-            writes.push_back(bytes);
-    });
+    QObject::connect(c->session.get(), &model::Session::frameSent,
+                     [&](const QByteArray &bytes, int, qint64) {
+                         if (bytes.size() > 1 && bytes[1] == 6)
+                             writes.push_back(bytes);
+                     });
     std::vector<model::WriteItem> list;
     for (const dev::ParamMeta &row : c->dictionary().params) {
         if (!row.writable() || !row.id || row.block != "C" || row.branch != 1)

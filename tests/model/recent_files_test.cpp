@@ -1,7 +1,6 @@
 #include "model/recent_files.h"
 
 #include <QSignalSpy>
-
 #include <gtest/gtest.h>
 
 using vt::model::RecentFiles;

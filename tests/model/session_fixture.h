@@ -2,22 +2,20 @@
 // FaultLink) → Session → DeviceAccess, with bounded waits on the event loop (never sleeps).
 #pragma once
 
+#include "access/hcs_rows.h"
+#include "access/modbus_adapter.h"
+#include "dict/dictionary_loader.h"
 #include "model/session/device_access.h"
 #include "model/session/session.h"
 #include "model/session/sim_endpoint.h"
+#include "sim/hcs_module.h"
+#include "sim/hcs_node.h"
 #include "transports/fault_link.h"
 #include "transports/fault_spec.h"
 #include "transports/sim_link.h"
 
-#include "access/hcs_rows.h"
-#include "access/modbus_adapter.h"
-#include "dict/dictionary_loader.h"
-#include "sim/hcs_module.h"
-#include "sim/hcs_node.h"
-
 #include <QTest>
 #include <gtest/gtest.h>
-
 #include <memory>
 #include <optional>
 
@@ -32,7 +30,7 @@ inline const dev::DictionarySet &dictionaries()
 
 struct SimConnection
 {
-    std::unique_ptr<link::Link> link;   // the SimLink, or the FaultLink around it
+    std::unique_ptr<link::Link> link; // the SimLink, or the FaultLink around it
     link::SimLink *sim = nullptr;
     link::FaultLink *fault = nullptr;
     model::SimEndpoint *endpoint = nullptr;
@@ -41,7 +39,10 @@ struct SimConnection
 
     dev::sim::HcsModule &module(std::size_t i = 0) { return endpoint->node()->module(i); }
     int address(std::size_t i = 0) const { return endpoint->moduleAddress(i); }
-    const dev::Dictionary &dictionary() const { return *dictionaries().find(endpoint->spec().family); }
+    const dev::Dictionary &dictionary() const
+    {
+        return *dictionaries().find(endpoint->spec().family);
+    }
 
     bool open()
     {
@@ -50,9 +51,9 @@ struct SimConnection
     }
 };
 
-inline std::unique_ptr<SimConnection> connectSim(const std::string &family, std::size_t modules = 1,
-                                                 std::optional<link::FaultSpec> faults = std::nullopt,
-                                                 model::SessionOptions options = {})
+inline std::unique_ptr<SimConnection>
+connectSim(const std::string &family, std::size_t modules = 1,
+           std::optional<link::FaultSpec> faults = std::nullopt, model::SessionOptions options = {})
 {
     auto c = std::make_unique<SimConnection>();
     model::SimSpec spec;
@@ -87,8 +88,7 @@ inline std::unique_ptr<SimConnection> connectSim(const std::string &family, std:
 }
 
 // Runs the event loop until `flag` is set (bounded).
-template <typename T>
-bool waitFor(const std::optional<T> &value, int timeoutMs = kWaitMs)
+template<typename T> bool waitFor(const std::optional<T> &value, int timeoutMs = kWaitMs)
 {
     return QTest::qWaitFor([&] { return value.has_value(); }, timeoutMs);
 }

@@ -3,6 +3,9 @@
 // loopback (Modbus TCP and the node image) and a CanLink on a SOCK_SEQPACKET socketpair, each
 // against a valvetune-sim process: identify, read all, write + verify. (The in-process SimLink is
 // covered by session_test.cpp / write_job_test.cpp.)
+#include "../app/sim_process.h"
+#include "access/transaction.h"
+#include "dict/dictionary_loader.h"
 #include "model/session/adapter_factory.h"
 #include "model/session/device_access.h"
 #include "model/session/session.h"
@@ -12,15 +15,9 @@
 #include "transports/serial_settings.h"
 #include "transports/tcp_link.h"
 
-#include "access/transaction.h"
-#include "dict/dictionary_loader.h"
-
-#include "../app/sim_process.h"
-
 #include <QFile>
 #include <QSignalSpy>
 #include <QTest>
-
 #include <fcntl.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -47,7 +44,8 @@ struct Endpoint
               model::SessionOptions options = {})
     {
         link = std::move(l);
-        session = std::make_unique<model::Session>(link.get(), model::makeAdapter(kind, family), options);
+        session =
+            std::make_unique<model::Session>(link.get(), model::makeAdapter(kind, family), options);
         access = std::make_unique<model::DeviceAccess>(*session, dictionaries());
         link->open();
         return QTest::qWaitFor([&] { return link->state() == link::LinkState::Open; }, kWaitMs);
@@ -63,15 +61,18 @@ struct Endpoint
 
     model::ReadResult readAll(int module, const model::ModuleInfo &info)
     {
-        const auto rows = model::readableRows(*info.dictionary, info.identification.version, info.identification.mode);
+        const auto rows = model::readableRows(*info.dictionary, info.identification.version,
+                                              info.identification.mode);
         std::optional<model::ReadResult> result;
-        access->read(module, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
+        access->read(module, rows, model::Priority::User,
+                     [&](const model::ReadResult &r) { result = r; });
         EXPECT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, 120'000));
         EXPECT_EQ(result ? result->values.size() : 0u, rows.size());
         return result.value_or(model::ReadResult{});
     }
 
-    model::WriteStatus writeOne(int module, const dev::Dictionary &dict, const char *name, double raw)
+    model::WriteStatus writeOne(int module, const dev::Dictionary &dict, const char *name,
+                                double raw)
     {
         std::vector<model::WriteItem> items(1);
         items[0].row = dict.find(name);
@@ -80,19 +81,22 @@ struct Endpoint
         QSignalSpy finished(&job, &model::WriteJob::finished);
         job.start();
         EXPECT_TRUE(finished.wait(kWaitMs));
-        EXPECT_EQ(job.items()[0].status, model::WriteStatus::Verified) << job.items()[0].reason.toStdString();
+        EXPECT_EQ(job.items()[0].status, model::WriteStatus::Verified)
+            << job.items()[0].reason.toStdString();
         return job.items()[0].status;
     }
 };
 
-void expectDefaults(const model::ReadResult &result, const std::string &family, std::size_t modules, std::size_t index)
+void expectDefaults(const model::ReadResult &result, const std::string &family, std::size_t modules,
+                    std::size_t index)
 {
     ASSERT_TRUE(result.complete());
     for (const model::RowValue &v : result.values) {
         if (v.row->block == "d" || !v.row->id)
             continue; // live values move with the plant
         const std::uint16_t word = simtest::freshWord(family, modules, index, *v.row->id);
-        const double expected = v.row->type == dev::RawType::Int16 ? static_cast<std::int16_t>(word) : word;
+        const double expected =
+            v.row->type == dev::RawType::Int16 ? static_cast<std::int16_t>(word) : word;
         EXPECT_EQ(dev::rawNumber(v.value), expected) << family << " " << v.row->name;
     }
 }
@@ -104,13 +108,15 @@ TEST(SessionLinks, ModbusRtuOverAPseudoTerminal)
     ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
     // libserialport looks ports up in sysfs: the "/dev/../../..<symlink>" path of
     // tests/transports/pty_pair.h (the ioctl shim in this binary handles the modem lines).
-    const QString symlink = QStringLiteral("/tmp/vt-session-pty-%1").arg(QCoreApplication::applicationPid());
+    const QString symlink =
+        QStringLiteral("/tmp/vt-session-pty-%1").arg(QCoreApplication::applicationPid());
     QFile::remove(symlink);
     ASSERT_TRUE(QFile::link(pty, symlink));
     model::SessionOptions options;
     options.baudRate = 19200;
     Endpoint e;
-    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(link::SerialSettings::hcsDefault(QStringLiteral("/dev/../../..") + symlink)),
+    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(link::SerialSettings::hcsDefault(
+                           QStringLiteral("/dev/../../..") + symlink)),
                        model::AdapterKind::ModbusRtu, "dma-pn-v51", options));
     const auto id = e.identify(1);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
@@ -141,7 +147,8 @@ TEST(SessionLinks, ModbusTcpOnLoopbackToAThreeModuleNode)
 
 TEST(SessionLinks, NodeImageOnLoopback)
 {
-    Sim sim({"--device", "dma-pn-v13", "--modules", "2", "--tcp", "127.0.0.1:0", "--protocol", "node-image"});
+    Sim sim({"--device", "dma-pn-v13", "--modules", "2", "--tcp", "127.0.0.1:0", "--protocol",
+             "node-image"});
     const QString where = sim.listening();
     ASSERT_FALSE(where.isEmpty()) << sim.stderrText().toStdString();
     const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
@@ -165,7 +172,8 @@ TEST(SessionLinks, CanopenSdoThroughASocketpair)
     ::close(child);
     ASSERT_FALSE(sim.listening().isEmpty()) << sim.stderrText().toStdString();
     Endpoint e;
-    ASSERT_TRUE(e.open(std::make_unique<link::CanLink>(link::CanLink::AdoptedFd{fds[0]}, QStringLiteral("socketpair")),
+    ASSERT_TRUE(e.open(std::make_unique<link::CanLink>(link::CanLink::AdoptedFd{fds[0]},
+                                                       QStringLiteral("socketpair")),
                        model::AdapterKind::CanopenHcs, "dma-pn-v51"));
     const auto id = e.identify(5);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
@@ -179,7 +187,8 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     Sim sim({"--device", "wandfluh-sd7", "--pty"});
     const QString pty = sim.listening();
     ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
-    const QString symlink = QStringLiteral("/tmp/vt-session-hart-%1").arg(QCoreApplication::applicationPid());
+    const QString symlink =
+        QStringLiteral("/tmp/vt-session-hart-%1").arg(QCoreApplication::applicationPid());
     QFile::remove(symlink);
     ASSERT_TRUE(QFile::link(pty, symlink));
     const auto settings = link::SerialSettings::hart(QStringLiteral("/dev/../../..") + symlink);
@@ -187,7 +196,8 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     options.baudRate = settings.baudRate;
     options.bitsPerCharacter = settings.bitsPerCharacter();
     Endpoint e;
-    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(settings), model::AdapterKind::Hart, {}, options));
+    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(settings), model::AdapterKind::Hart, {},
+                       options));
     const auto id = e.identify(0);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
     EXPECT_EQ(id.module.dictionary->family, "wandfluh-sd7");
@@ -200,8 +210,9 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     std::optional<model::ReadResult> result;
     e.access->read(0, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
     ASSERT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, 120'000));
-    EXPECT_TRUE(result->complete()) << (result->failures.empty() ? std::string()
-                                                                  : result->failures.front().outcome.reason.toStdString());
+    EXPECT_TRUE(result->complete())
+        << (result->failures.empty() ? std::string()
+                                     : result->failures.front().outcome.reason.toStdString());
     QFile::remove(symlink);
 }
 

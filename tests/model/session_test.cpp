@@ -1,16 +1,13 @@
 // The session engine against the built-in simulator (issue #6 "Session"): identify, read all in
 // blocks of ≤ 8 consecutive IDs, priorities, timeouts and retries, link loss.
-#include "session_fixture.h"
-
+#include "dict/cooking.h"
 #include "model/session/monitor_recording.h"
 #include "model/session/monitor_scheduler.h"
 #include "model/session/telegram_recorder.h"
 #include "model/telegram_log.h"
-
-#include "dict/cooking.h"
+#include "session_fixture.h"
 
 #include <QSignalSpy>
-
 #include <set>
 
 namespace vt::test {
@@ -21,7 +18,8 @@ using model::Priority;
 
 TEST(Session, IdentifiesEachHcsFamily)
 {
-    for (const char *family : {"opat", "dma-pn-v13", "dma-pn-v51", "dma-pb-v15", "dma-pb-v22", "dma-pb-v32"}) {
+    for (const char *family :
+         {"opat", "dma-pn-v13", "dma-pn-v51", "dma-pb-v15", "dma-pb-v22", "dma-pb-v32"}) {
         auto c = connectSim(family);
         ASSERT_TRUE(c);
         std::optional<model::IdentifyResult> result;
@@ -52,7 +50,8 @@ TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
 {
     auto c = connectSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    const auto rows = model::readableRows(c->dictionary(), c->module().version(), std::to_string(c->module().mode()));
+    const auto rows = model::readableRows(c->dictionary(), c->module().version(),
+                                          std::to_string(c->module().mode()));
     ASSERT_GT(rows.size(), 50u);
 
     std::vector<QByteArray> requests;
@@ -60,8 +59,12 @@ TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
                      [&](const QByteArray &bytes, int, qint64) { requests.push_back(bytes); });
     int lastDone = 0, lastTotal = 0;
     std::optional<model::ReadResult> result;
-    c->access->read(c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; },
-                    [&](int done, int total) { lastDone = done; lastTotal = total; });
+    c->access->read(
+        c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; },
+        [&](int done, int total) {
+            lastDone = done;
+            lastTotal = total;
+        });
     ASSERT_TRUE(waitFor(result));
     EXPECT_TRUE(result->complete());
     ASSERT_EQ(result->values.size(), rows.size());
@@ -70,7 +73,8 @@ TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
     for (const QByteArray &request : requests) {
         ASSERT_EQ(request.size(), 8); // unit, FC 3, start, count, CRC
         EXPECT_EQ(request[1], 3);
-        const int count = (static_cast<unsigned char>(request[4]) << 8) | static_cast<unsigned char>(request[5]);
+        const int count =
+            (static_cast<unsigned char>(request[4]) << 8) | static_cast<unsigned char>(request[5]);
         EXPECT_GE(count, 1);
         EXPECT_LE(count, 8); // OPAT manual §2.1 / DMA Profinet manual §3.1
     }
@@ -82,8 +86,10 @@ TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
     // No inactive or not-implemented row was asked for.
     std::set<int> asked;
     for (const QByteArray &request : requests) {
-        const int start = (static_cast<unsigned char>(request[2]) << 8) | static_cast<unsigned char>(request[3]);
-        const int count = (static_cast<unsigned char>(request[4]) << 8) | static_cast<unsigned char>(request[5]);
+        const int start =
+            (static_cast<unsigned char>(request[2]) << 8) | static_cast<unsigned char>(request[3]);
+        const int count =
+            (static_cast<unsigned char>(request[4]) << 8) | static_cast<unsigned char>(request[5]);
         for (int id = start; id < start + count; ++id)
             asked.insert(id);
     }
@@ -102,9 +108,14 @@ TEST(Session, UserRequestsGoBeforeMonitorPolls)
     ASSERT_TRUE(c107);
     std::vector<int> order;
     for (int i = 0; i < 3; ++i)
-        c->session->submit(c->session->adapter().planRead(c->address(), std::vector<const dev::ParamMeta *>{c107}).front(),
-                           Priority::Monitor, [&order](const model::Outcome &) { order.push_back(1); });
-    c->session->submit(c->session->adapter().planRead(c->address(), std::vector<const dev::ParamMeta *>{c107}).front(),
+        c->session->submit(c->session->adapter()
+                               .planRead(c->address(), std::vector<const dev::ParamMeta *>{c107})
+                               .front(),
+                           Priority::Monitor,
+                           [&order](const model::Outcome &) { order.push_back(1); });
+    c->session->submit(c->session->adapter()
+                           .planRead(c->address(), std::vector<const dev::ParamMeta *>{c107})
+                           .front(),
                        Priority::User, [&order](const model::Outcome &) { order.push_back(0); });
     ASSERT_TRUE(QTest::qWaitFor([&] { return order.size() == 4; }, kWaitMs));
     EXPECT_EQ(order.front(), 0);
@@ -150,7 +161,8 @@ TEST(Session, LinkLossFailsWhatIsQueuedAndTheLinkCanReopen)
     ASSERT_TRUE(c);
     const auto rows = model::readableRows(c->dictionary(), c->module().version(), "1");
     std::optional<model::ReadResult> result;
-    c->access->read(c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; });
+    c->access->read(c->address(), rows, Priority::User,
+                    [&](const model::ReadResult &r) { result = r; });
     c->link->close();
     ASSERT_TRUE(waitFor(result));
     EXPECT_FALSE(result->complete());
@@ -159,7 +171,8 @@ TEST(Session, LinkLossFailsWhatIsQueuedAndTheLinkCanReopen)
 
     ASSERT_TRUE(c->open());
     std::optional<model::ReadResult> again;
-    c->access->read(c->address(), rows, Priority::User, [&](const model::ReadResult &r) { again = r; });
+    c->access->read(c->address(), rows, Priority::User,
+                    [&](const model::ReadResult &r) { again = r; });
     ASSERT_TRUE(waitFor(again));
     EXPECT_TRUE(again->complete());
 }
@@ -170,7 +183,8 @@ TEST(Session, CancelledReadEndsWithoutTheRest)
     ASSERT_TRUE(c);
     const auto rows = model::readableRows(c->dictionary(), c->module().version(), "3");
     std::optional<model::ReadResult> result;
-    auto handle = c->access->read(c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; });
+    auto handle = c->access->read(c->address(), rows, Priority::User,
+                                  [&](const model::ReadResult &r) { result = r; });
     handle->cancel();
     ASSERT_TRUE(waitFor(result));
     EXPECT_TRUE(result->cancelled);
@@ -221,7 +235,8 @@ TEST(Session, MonitorSamplesGoToABoundedStoreInDisplayUnits)
     EXPECT_DOUBLE_EQ(store.lastTime(), last.seconds);
     for (int ch = 0; ch < 7; ++ch) {
         EXPECT_DOUBLE_EQ(store.valueAt(ch, store.size() - 1),
-                         dev::toDisplay(*rows[static_cast<std::size_t>(ch)], dev::rawNumber(last.values[static_cast<std::size_t>(ch)])))
+                         dev::toDisplay(*rows[static_cast<std::size_t>(ch)],
+                                        dev::rawNumber(last.values[static_cast<std::size_t>(ch)])))
             << ch;
     }
 }
@@ -241,7 +256,8 @@ TEST(Session, EveryFrameInAndOutGoesToTheTelegramLog)
     model::TelegramRecorder recorder(*c->session, log);
     const auto rows = model::readableRows(c->dictionary(), c->module().version(), "1");
     std::optional<model::ReadResult> result;
-    c->access->read(c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; });
+    c->access->read(c->address(), rows, Priority::User,
+                    [&](const model::ReadResult &r) { result = r; });
     ASSERT_TRUE(waitFor(result, 60'000));
     EXPECT_TRUE(result->complete());
     std::map<model::TelegramRecord::Status, int> byStatus;
@@ -257,10 +273,12 @@ TEST(Session, EveryFrameInAndOutGoesToTheTelegramLog)
         }
     }
     EXPECT_EQ(static_cast<quint64>(requests), c->session->counters().attempts);
-    EXPECT_EQ(static_cast<quint64>(byStatus[model::TelegramRecord::Status::Timeout]), c->session->counters().timeouts);
+    EXPECT_EQ(static_cast<quint64>(byStatus[model::TelegramRecord::Status::Timeout]),
+              c->session->counters().timeouts);
     EXPECT_GT(byStatus[model::TelegramRecord::Status::Timeout], 0);
     EXPECT_GT(byStatus[model::TelegramRecord::Status::ChecksumError], 0);
-    EXPECT_EQ(byStatus[model::TelegramRecord::Status::Ok], static_cast<int>(c->session->counters().requests));
+    EXPECT_EQ(byStatus[model::TelegramRecord::Status::Ok],
+              static_cast<int>(c->session->counters().requests));
 }
 
 } // namespace

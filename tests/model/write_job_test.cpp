@@ -1,9 +1,8 @@
 // Safe writes (issue #6 "Write"): range check before sending, only changed values, pacing from
 // the dictionary (DMA Profinet manual §3.4.1: ≥ 30 ms), read back, per-parameter result, and a
 // write cut in the middle that resumes to completion.
-#include "session_fixture.h"
-
 #include "model/session/write_job.h"
+#include "session_fixture.h"
 
 #include <QSignalSpy>
 
@@ -14,7 +13,8 @@ using model::WriteItem;
 using model::WriteJob;
 using model::WriteStatus;
 
-std::vector<WriteItem> items(const dev::Dictionary &dict, std::initializer_list<std::pair<const char *, double>> values)
+std::vector<WriteItem> items(const dev::Dictionary &dict,
+                             std::initializer_list<std::pair<const char *, double>> values)
 {
     std::vector<WriteItem> out;
     for (const auto &[name, raw] : values) {
@@ -43,12 +43,13 @@ struct WriteTimes
 
 void recordWrites(SimConnection &c, WriteTimes &times)
 {
-    QObject::connect(c.session.get(), &model::Session::frameSent, [&c, &times](const QByteArray &bytes, int, qint64 ns) {
-        if (bytes.size() > 1 && bytes[1] == 6) {
-            times.sessionNs.push_back(ns);
-            times.simUs.push_back(c.endpoint->clock().nowUs());
-        }
-    });
+    QObject::connect(c.session.get(), &model::Session::frameSent,
+                     [&c, &times](const QByteArray &bytes, int, qint64 ns) {
+                         if (bytes.size() > 1 && bytes[1] == 6) {
+                             times.sessionNs.push_back(ns);
+                             times.simUs.push_back(c.endpoint->clock().nowUs());
+                         }
+                     });
 }
 
 TEST(WriteJob, WritesVerifiesAndTheSimulatorHoldsTheValue)
@@ -56,11 +57,13 @@ TEST(WriteJob, WritesVerifiesAndTheSimulatorHoldsTheValue)
     auto c = connectSim("dma-pn-v51");
     ASSERT_TRUE(c);
     // Issue #7's scenario on the session level: C1.07 = 1.000 V is raw 1000.
-    WriteJob job(*c->access, c->address(), c->dictionary(), items(c->dictionary(), {{"C1.07", 1000}, {"r1.01", 120}}));
+    WriteJob job(*c->access, c->address(), c->dictionary(),
+                 items(c->dictionary(), {{"C1.07", 1000}, {"r1.01", 120}}));
     ASSERT_TRUE(runJob(job));
     EXPECT_TRUE(job.complete());
     for (const WriteItem &item : job.items()) {
-        EXPECT_EQ(item.status, WriteStatus::Verified) << item.row->name << ": " << item.reason.toStdString();
+        EXPECT_EQ(item.status, WriteStatus::Verified)
+            << item.row->name << ": " << item.reason.toStdString();
         EXPECT_EQ(storedRaw(c->module(), *item.row), dev::rawNumber(item.value)) << item.row->name;
     }
 }
@@ -71,13 +74,15 @@ TEST(WriteJob, OutOfRangeAndReadOnlyNeverLeaveTheMaster)
     ASSERT_TRUE(c);
     QSignalSpy sent(c->session.get(), &model::Session::frameSent);
     const double before = storedRaw(c->module(), *c->dictionary().find("C1.07"));
-    WriteJob job(*c->access, c->address(), c->dictionary(),
-                 items(c->dictionary(), {{"C1.07", 10000}, {"C1.07", -1}, {"d1.10", 5}, {"C1.17", 4001}}));
+    WriteJob job(
+        *c->access, c->address(), c->dictionary(),
+        items(c->dictionary(), {{"C1.07", 10000}, {"C1.07", -1}, {"d1.10", 5}, {"C1.17", 4001}}));
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(sent.count(), 0);
     for (const WriteItem &item : job.items())
         EXPECT_EQ(item.status, WriteStatus::RefusedLocally) << item.row->name;
-    EXPECT_NE(job.items()[0].reason.indexOf(QStringLiteral("9.999")), -1) << job.items()[0].reason.toStdString();
+    EXPECT_NE(job.items()[0].reason.indexOf(QStringLiteral("9.999")), -1)
+        << job.items()[0].reason.toStdString();
     EXPECT_EQ(storedRaw(c->module(), *c->dictionary().find("C1.07")), before);
 }
 
@@ -104,8 +109,10 @@ TEST(WriteJob, PacingHoldsOnTheSimulatedClockAndTheEepromNeverRefuses)
     EXPECT_EQ(c->dictionary().writePacingMs, 30);
     WriteTimes times;
     recordWrites(*c, times);
-    WriteJob job(*c->access, c->address(), c->dictionary(),
-                 items(c->dictionary(), {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}, {"C2.08", 400}, {"r1.01", 10}}));
+    WriteJob job(
+        *c->access, c->address(), c->dictionary(),
+        items(c->dictionary(),
+              {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}, {"C2.08", 400}, {"r1.01", 10}}));
     ASSERT_TRUE(runJob(job));
     EXPECT_TRUE(job.complete());
     ASSERT_EQ(times.simUs.size(), 5u);
@@ -138,7 +145,8 @@ TEST(WriteJob, DeviceRefusalIsReportedWithTheDevicesReason)
     ASSERT_TRUE(c);
     const dev::ParamMeta *row = c->dictionary().find("C1.07");
     ASSERT_TRUE(row);
-    // Pretend the dictionary allowed more than the module does: a copy of the row with a wider range.
+    // Pretend the dictionary allowed more than the module does: a copy of the row with a wider
+    // range.
     dev::ParamMeta wide = *row;
     wide.max = 32000;
     std::vector<WriteItem> list(1);
@@ -154,12 +162,15 @@ TEST(WriteJob, DeviceRefusalIsReportedWithTheDevicesReason)
 TEST(WriteJob, ACutMidWriteLeavesAnExactRecordAndResumeFinishesIt)
 {
     link::FaultSpec cut;
-    cut.cutAfterFrames = 9; // two rows verified (4 frames each), the third row's write request goes out
+    cut.cutAfterFrames =
+        9; // two rows verified (4 frames each), the third row's write request goes out
     model::SessionOptions options;
     options.turnaround = std::chrono::milliseconds(50);
     auto c = connectSim("dma-pn-v51", 1, cut, options);
     ASSERT_TRUE(c);
-    auto list = items(c->dictionary(), {{"C1.07", 111}, {"C1.08", 222}, {"C2.07", 333}, {"C2.08", 444}, {"r1.01", 55}});
+    auto list =
+        items(c->dictionary(),
+              {{"C1.07", 111}, {"C1.08", 222}, {"C2.07", 333}, {"C2.08", 444}, {"r1.01", 55}});
     std::vector<double> before;
     for (WriteItem &item : list) {
         before.push_back(storedRaw(c->module(), *item.row));
@@ -182,11 +193,8 @@ TEST(WriteJob, ACutMidWriteLeavesAnExactRecordAndResumeFinishesIt)
             ++notSent;
             EXPECT_EQ(stored, before[i]) << item.row->name;
             break;
-        case WriteStatus::Uncertain:
-            ++uncertain;
-            break;
-        default:
-            ADD_FAILURE() << item.row->name << " ended " << model::writeStatusKey(item.status);
+        case WriteStatus::Uncertain: ++uncertain; break;
+        default: ADD_FAILURE() << item.row->name << " ended " << model::writeStatusKey(item.status);
         }
     }
     EXPECT_EQ(verified, 2);

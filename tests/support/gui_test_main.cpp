@@ -1,9 +1,7 @@
 #include <QApplication>
 #include <QStandardPaths>
-
-#include <gtest/gtest.h>
-
 #include <cstdlib>
+#include <gtest/gtest.h>
 
 int main(int argc, char **argv)
 {

@@ -4,10 +4,12 @@
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
-
 #include <ostream>
 
-inline void PrintTo(const QString &s, std::ostream *os) { *os << '"' << s.toStdString() << '"'; }
+inline void PrintTo(const QString &s, std::ostream *os)
+{
+    *os << '"' << s.toStdString() << '"';
+}
 inline void PrintTo(const QStringList &l, std::ostream *os)
 {
     *os << '{';
@@ -15,4 +17,7 @@ inline void PrintTo(const QStringList &l, std::ostream *os)
         *os << (i ? ", " : "") << '"' << l[i].toStdString() << '"';
     *os << '}';
 }
-inline void PrintTo(const QByteArray &b, std::ostream *os) { *os << b.toHex(' ').toStdString(); }
+inline void PrintTo(const QByteArray &b, std::ostream *os)
+{
+    *os << b.toHex(' ').toStdString();
+}

@@ -1,7 +1,7 @@
 #include "link_status_widget.h"
-#include "model/text_language.h"
 
 #include "model/session/connection.h"
+#include "model/text_language.h"
 #include "transports/link.h"
 #include "widgets/connect/language_text.h"
 

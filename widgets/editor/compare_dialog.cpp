@@ -57,7 +57,8 @@ void CompareDialog::updateSummary()
 {
     const int n = m_model->rowCount();
     m_summary->setText(n == 0 ? tr("No differences.")
-                              : tr("%n parameter(s) differ. Tick \"Take other\" for each value to take into this document.",
+                              : tr("%n parameter(s) differ. Tick \"Take other\" for each value to "
+                                   "take into this document.",
                                    nullptr, n));
 }
 

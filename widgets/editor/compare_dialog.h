@@ -12,7 +12,7 @@ class QTableView;
 namespace vt::model {
 class CompareModel;
 class ParameterDocument;
-}
+} // namespace vt::model
 
 namespace vt::ui {
 

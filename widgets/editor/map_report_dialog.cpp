@@ -4,9 +4,9 @@
 #include "model/params/parameter_document.h"
 
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QPlainTextEdit>
 #include <QVBoxLayout>
-#include <QLabel>
 
 namespace vt::ui {
 
@@ -18,7 +18,8 @@ bool MapReportDialog::needed(const model::ParameterDocument &document)
         if (!m.mapReport)
             continue;
         for (const dev::files::RowMapping &r : m.mapReport->rows)
-            if (r.status != dev::files::MapStatus::Mapped && r.status != dev::files::MapStatus::Missing)
+            if (r.status != dev::files::MapStatus::Mapped &&
+                r.status != dev::files::MapStatus::Missing)
                 return true;
         if (!m.mapReport->notes.empty())
             return true;
@@ -26,7 +27,8 @@ bool MapReportDialog::needed(const model::ParameterDocument &document)
     return false;
 }
 
-MapReportDialog::MapReportDialog(const model::ParameterDocument &document, QWidget *parent) : QDialog(parent)
+MapReportDialog::MapReportDialog(const model::ParameterDocument &document, QWidget *parent)
+    : QDialog(parent)
 {
     setObjectName(QStringLiteral("mapReportDialog"));
     setWindowTitle(tr("What Did Not Map"));
@@ -35,25 +37,31 @@ MapReportDialog::MapReportDialog(const model::ParameterDocument &document, QWidg
     for (const model::ParamModule &m : document.modules()) {
         if (!m.mapReport)
             continue;
-        m_text += tr("Module %1 (%2): %3").arg(m.address).arg(m.identity, q(m.mapReport->summary())) + QLatin1Char('\n');
+        m_text +=
+            tr("Module %1 (%2): %3").arg(m.address).arg(m.identity, q(m.mapReport->summary())) +
+            QLatin1Char('\n');
         for (const dev::LocalText &note : m.mapReport->notes)
             m_text += QStringLiteral("  ") + q(note) + QLatin1Char('\n');
         for (const dev::files::RowMapping *r : m.mapReport->problems()) {
             if (r->status == dev::files::MapStatus::Missing)
-                continue; // listed in the summary count; the dictionary default or device value applies
+                continue; // listed in the summary count; the dictionary default or device value
+                          // applies
             m_text += QStringLiteral("  %1 — %2: %3\n")
-                          .arg(QString::fromStdString(r->name), q(dev::files::statusText(r->status)), q(r->reason));
+                          .arg(QString::fromStdString(r->name),
+                               q(dev::files::statusText(r->status)), q(r->reason));
         }
         m_text += QLatin1Char('\n');
     }
     for (const dev::files::ModuleRecord &r : document.unknownFamilies())
-        m_text += tr("Module %1: family \"%2\" is not known to this version; its %n value(s) are kept and saved unchanged.",
+        m_text += tr("Module %1: family \"%2\" is not known to this version; its %n value(s) are "
+                     "kept and saved unchanged.",
                      nullptr, static_cast<int>(r.values.size()))
                       .arg(r.address)
                       .arg(QString::fromStdString(r.family)) +
                   QLatin1Char('\n');
 
-    auto *intro = new QLabel(tr("Rows that did not map are kept in the file and written back unchanged on save."), this);
+    auto *intro = new QLabel(
+        tr("Rows that did not map are kept in the file and written back unchanged on save."), this);
     intro->setWordWrap(true);
     auto *view = new QPlainTextEdit(m_text, this);
     view->setReadOnly(true);

@@ -8,7 +8,8 @@
 
 namespace vt::ui {
 
-NodeView::NodeView(model::ParameterDocument &document, QWidget *parent) : QTreeWidget(parent), m_document(document)
+NodeView::NodeView(model::ParameterDocument &document, QWidget *parent)
+    : QTreeWidget(parent), m_document(document)
 {
     setObjectName(QStringLiteral("nodeView"));
     setColumnCount(6);
@@ -19,11 +20,13 @@ NodeView::NodeView(model::ParameterDocument &document, QWidget *parent) : QTreeW
     connect(&m_document, &model::ParameterDocument::moduleValuesChanged, this, &NodeView::rebuild);
     connect(&m_document, &model::ParameterDocument::languageChanged, this, &NodeView::rebuild);
     // Live values: only the state word column changes.
-    connect(&m_document, &model::ParameterDocument::valueChanged, this, [this](int module, const dev::ParamMeta *) {
-        QTreeWidgetItem *node = topLevelItem(0);
-        if (node && module < node->childCount())
-            node->child(module)->setText(4, model::stateWordText(m_document.module(module), m_document.language()));
-    });
+    connect(&m_document, &model::ParameterDocument::valueChanged, this,
+            [this](int module, const dev::ParamMeta *) {
+                QTreeWidgetItem *node = topLevelItem(0);
+                if (node && module < node->childCount())
+                    node->child(module)->setText(
+                        4, model::stateWordText(m_document.module(module), m_document.language()));
+            });
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         const QVariant module = item->data(0, Qt::UserRole);
         if (module.isValid())
@@ -54,7 +57,8 @@ void NodeView::rebuild()
         auto *item = new QTreeWidgetItem(node);
         item->setData(0, Qt::UserRole, i);
         item->setText(0, tr("Module %1").arg(m.address));
-        item->setText(1, m.label.isEmpty() ? QString::fromStdString(m.dictionary->family) : m.label);
+        item->setText(1,
+                      m.label.isEmpty() ? QString::fromStdString(m.dictionary->family) : m.label);
         item->setText(2, QString::fromStdString(m.version));
         item->setText(3, QString::fromStdString(m.mode));
         item->setText(4, model::stateWordText(m, m_document.language()));
@@ -73,7 +77,8 @@ void NodeView::changeEvent(QEvent *event)
 
 void NodeView::retranslate()
 {
-    setHeaderLabels({tr("Module"), tr("Device"), tr("Version"), tr("Mode"), tr("State word"), tr("Link")});
+    setHeaderLabels(
+        {tr("Module"), tr("Device"), tr("Version"), tr("Mode"), tr("State word"), tr("Link")});
     rebuild();
 }
 

@@ -30,9 +30,12 @@ QString rangeHint(const QModelIndex &index)
 
 } // namespace
 
-ParamDelegate::ParamDelegate(QObject *parent) : QStyledItemDelegate(parent) {}
+ParamDelegate::ParamDelegate(QObject *parent) : QStyledItemDelegate(parent)
+{
+}
 
-QWidget *ParamDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem &option, const QModelIndex &index) const
+QWidget *ParamDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem &option,
+                                     const QModelIndex &index) const
 {
     if (index.data(model::ReadOnlyRole).toBool() || !(index.flags() & Qt::ItemIsEditable))
         return nullptr;
@@ -42,7 +45,8 @@ QWidget *ParamDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem
         combo->setProperty(kKind, QStringLiteral("enum"));
         for (const QVariant &e : enums) {
             const QVariantMap m = e.toMap();
-            combo->addItem(QStringLiteral("%1 — %2").arg(m.value(QStringLiteral("value")).toLongLong())
+            combo->addItem(QStringLiteral("%1 — %2")
+                               .arg(m.value(QStringLiteral("value")).toLongLong())
                                .arg(m.value(QStringLiteral("text")).toString()),
                            m.value(QStringLiteral("value")));
         }
@@ -54,7 +58,8 @@ QWidget *ParamDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem
         list->setProperty(kKind, QStringLiteral("bits"));
         for (const QVariant &b : bits) {
             const QVariantMap m = b.toMap();
-            auto *item = new QListWidgetItem(QStringLiteral("%1: %2").arg(m.value(QStringLiteral("bit")).toInt())
+            auto *item = new QListWidgetItem(QStringLiteral("%1: %2")
+                                                 .arg(m.value(QStringLiteral("bit")).toInt())
                                                  .arg(m.value(QStringLiteral("text")).toString()),
                                              list);
             item->setData(Qt::UserRole, m.value(QStringLiteral("bit")));
@@ -91,7 +96,8 @@ void ParamDelegate::setEditorData(QWidget *editor, const QModelIndex &index) con
     }
 }
 
-void ParamDelegate::setModelData(QWidget *editor, QAbstractItemModel *model, const QModelIndex &index) const
+void ParamDelegate::setModelData(QWidget *editor, QAbstractItemModel *model,
+                                 const QModelIndex &index) const
 {
     const QString kind = editor->property(kKind).toString();
     if (kind == QLatin1String("enum")) {
@@ -115,7 +121,8 @@ void ParamDelegate::setModelData(QWidget *editor, QAbstractItemModel *model, con
     }
 }
 
-void ParamDelegate::updateEditorGeometry(QWidget *editor, const QStyleOptionViewItem &option, const QModelIndex &index) const
+void ParamDelegate::updateEditorGeometry(QWidget *editor, const QStyleOptionViewItem &option,
+                                         const QModelIndex &index) const
 {
     if (editor->property(kKind).toString() == QLatin1String("bits")) {
         auto *list = static_cast<QListWidget *>(editor);

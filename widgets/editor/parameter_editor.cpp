@@ -94,30 +94,37 @@ ParameterEditor::ParameterEditor(model::ParameterDocument &document, QWidget *pa
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(splitter);
 
-    connect(m_search, &QLineEdit::textChanged, m_filter, &model::ParameterFilterModel::setSearchText);
+    connect(m_search, &QLineEdit::textChanged, m_filter,
+            &model::ParameterFilterModel::setSearchText);
     connect(m_search, &QLineEdit::textChanged, this, [this](const QString &text) {
         if (!text.isEmpty())
             m_view->expandAll();
     });
-    connect(m_changedOnly, &QCheckBox::toggled, m_filter, &model::ParameterFilterModel::setChangedOnly);
-    connect(m_differsOnly, &QCheckBox::toggled, m_filter, &model::ParameterFilterModel::setDiffersFromDeviceOnly);
-    connect(m_showInactive, &QCheckBox::toggled, m_filter, &model::ParameterFilterModel::setShowInactive);
+    connect(m_changedOnly, &QCheckBox::toggled, m_filter,
+            &model::ParameterFilterModel::setChangedOnly);
+    connect(m_differsOnly, &QCheckBox::toggled, m_filter,
+            &model::ParameterFilterModel::setDiffersFromDeviceOnly);
+    connect(m_showInactive, &QCheckBox::toggled, m_filter,
+            &model::ParameterFilterModel::setShowInactive);
     connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) { onCurrentChanged(current); });
-    connect(m_tree, &ParameterTreeModel::editRefused, this, [this](const QModelIndex &, const QString &message) {
-        m_message->setText(message);
-        m_message->show();
-    });
-    connect(&m_document, &model::ParameterDocument::valueChanged, this, [this] { m_message->hide(); });
+    connect(m_tree, &ParameterTreeModel::editRefused, this,
+            [this](const QModelIndex &, const QString &message) {
+                m_message->setText(message);
+                m_message->show();
+            });
+    connect(&m_document, &model::ParameterDocument::valueChanged, this,
+            [this] { m_message->hide(); });
     connect(m_tree, &QAbstractItemModel::modelReset, this, [this] {
         updateColumns();
         expandDefault();
     });
-    connect(&m_document, &model::ParameterDocument::moduleChanged, this, &ParameterEditor::updateColumns);
-    connect(&m_document, &model::ParameterDocument::filePathChanged, this, &ParameterEditor::updateColumns);
-    connect(&m_document, &model::ParameterDocument::languageChanged, this, [this] {
-        onCurrentChanged(m_view->currentIndex());
-    });
+    connect(&m_document, &model::ParameterDocument::moduleChanged, this,
+            &ParameterEditor::updateColumns);
+    connect(&m_document, &model::ParameterDocument::filePathChanged, this,
+            &ParameterEditor::updateColumns);
+    connect(&m_document, &model::ParameterDocument::languageChanged, this,
+            [this] { onCurrentChanged(m_view->currentIndex()); });
     updateColumns();
     retranslate();
 }
@@ -146,7 +153,8 @@ void ParameterEditor::onCurrentChanged(const QModelIndex &current)
 {
     const QModelIndex source = m_filter->mapToSource(current);
     const dev::ParamMeta *row = m_tree->metaAt(source);
-    m_help->setPlainText(row ? source.siblingAtColumn(0).data(model::HelpRole).toString() : QString());
+    m_help->setPlainText(row ? source.siblingAtColumn(0).data(model::HelpRole).toString()
+                             : QString());
     if (row)
         emit parameterSelected(m_tree->moduleAt(source), row);
 }

@@ -18,7 +18,7 @@ namespace vt::model {
 class ParameterDocument;
 class ParameterFilterModel;
 class ParameterTreeModel;
-}
+} // namespace vt::model
 
 namespace vt::ui {
 

@@ -28,8 +28,8 @@ WriteDialog::WriteDialog(model::DeviceAccess &access, model::ParameterDocument &
     m_intro->setWordWrap(true);
     m_table = new QTableWidget(0, ColCount, this);
     m_table->setObjectName(QStringLiteral("writeTable"));
-    m_table->setHorizontalHeaderLabels({tr("Module"), tr("Name"), tr("Parameter"), tr("Device"), tr("New value"),
-                                        tr("Result")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("Module"), tr("Name"), tr("Parameter"), tr("Device"), tr("New value"), tr("Result")});
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -65,8 +65,10 @@ WriteDialog::WriteDialog(model::DeviceAccess &access, model::ParameterDocument &
         for (std::size_t p = 0; p < m_job->results().size(); ++p)
             for (std::size_t i = 0; i < m_job->results()[p].items.size(); ++i)
                 showItem(static_cast<int>(p), static_cast<int>(i));
-        m_intro->setText(complete ? tr("Every change is on the device.")
-                                  : tr("Not every change reached the device: see the result of each parameter."));
+        m_intro->setText(
+            complete
+                ? tr("Every change is on the device.")
+                : tr("Not every change reached the device: see the result of each parameter."));
         m_buttons->setStandardButtons(QDialogButtonBox::Close);
         m_buttons->button(QDialogButtonBox::Close)->setDefault(true);
         emit writeFinished(complete);
@@ -76,7 +78,10 @@ WriteDialog::WriteDialog(model::DeviceAccess &access, model::ParameterDocument &
 
 WriteDialog::~WriteDialog() = default;
 
-bool WriteDialog::isWriting() const { return m_job->isRunning(); }
+bool WriteDialog::isWriting() const
+{
+    return m_job->isRunning();
+}
 
 void WriteDialog::fillConfirmation()
 {
@@ -89,17 +94,22 @@ void WriteDialog::fillConfirmation()
             const int row = m_table->rowCount();
             m_table->insertRow(row);
             m_rowOf.emplace_back(static_cast<int>(p), static_cast<int>(i));
-            auto set = [&](int col, const QString &text) { m_table->setItem(row, col, new QTableWidgetItem(text)); };
+            auto set = [&](int col, const QString &text) {
+                m_table->setItem(row, col, new QTableWidgetItem(text));
+            };
             set(ColModule, QString::number(m_document.module(r.module).address));
             set(ColName, QString::fromStdString(item.row->name));
             set(ColLabel, QString::fromStdString(item.row->label.in(lang)));
-            set(ColBefore, item.before ? model::formatRaw(*item.row, *item.before, lang) : tr("(unknown)"));
+            set(ColBefore,
+                item.before ? model::formatRaw(*item.row, *item.before, lang) : tr("(unknown)"));
             set(ColAfter, model::formatRaw(*item.row, item.value, lang));
             set(ColResult, QString());
             ++count;
         }
     }
-    m_intro->setText(tr("%n change(s) will be written to the device, one at a time, each read back.", nullptr, count));
+    m_intro->setText(
+        tr("%n change(s) will be written to the device, one at a time, each read back.", nullptr,
+           count));
 }
 
 void WriteDialog::showItem(int planIndex, int index)
@@ -107,13 +117,14 @@ void WriteDialog::showItem(int planIndex, int index)
     for (std::size_t row = 0; row < m_rowOf.size(); ++row) {
         if (m_rowOf[row] != std::pair(planIndex, index))
             continue;
-        const model::WriteItem &item =
-            m_job->results()[static_cast<std::size_t>(planIndex)].items[static_cast<std::size_t>(index)];
+        const model::WriteItem &item = m_job->results()[static_cast<std::size_t>(planIndex)]
+                                           .items[static_cast<std::size_t>(index)];
         QString text = model::writeStatusText(item.status);
         if (!item.reason.isEmpty())
             text += QStringLiteral(": ") + item.reason;
         auto *cell = new QTableWidgetItem(text);
-        if (item.status == model::WriteStatus::Verified || item.status == model::WriteStatus::Written ||
+        if (item.status == model::WriteStatus::Verified ||
+            item.status == model::WriteStatus::Written ||
             item.status == model::WriteStatus::Unchanged)
             cell->setForeground(QColor(0, 110, 0));
         else if (item.status != model::WriteStatus::Pending)

@@ -69,8 +69,8 @@ void FoldOptionsPage::rebuild()
             if (!row)
                 continue;
             const QString key = QString::fromStdString(name);
-            auto *set =
-                new QCheckBox(QStringLiteral("%1 — %2").arg(key, model::localText(row->label)), box);
+            auto *set = new QCheckBox(
+                QStringLiteral("%1 — %2").arg(key, model::localText(row->label)), box);
             set->setObjectName(QStringLiteral("set%1").arg(key));
             grid->addWidget(set, line, 0, 1, 3);
             ++line;
@@ -91,9 +91,10 @@ void FoldOptionsPage::rebuild()
                 combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
                 combo->setMinimumContentsLength(24);
                 for (const dev::EnumLabel &label : row->enums)
-                    combo->addItem(
-                        QStringLiteral("%1 = %2").arg(label.value).arg(model::localText(label.text)),
-                        static_cast<int>(label.value));
+                    combo->addItem(QStringLiteral("%1 = %2")
+                                       .arg(label.value)
+                                       .arg(model::localText(label.text)),
+                                   static_cast<int>(label.value));
                 combo->setCurrentIndex(std::max(0, combo->findData(value.value_or(fallback))));
                 connect(combo, &QComboBox::currentIndexChanged, this,
                         [combo, store] { store(combo->currentData().toInt()); });

@@ -2,6 +2,7 @@
 
 #include "model/fold/fold_plan_file.h"
 #include "model/session/connection.h"
+#include "model/text_language.h"
 #include "widgets/fold/fold_address_page.h"
 #include "widgets/fold/fold_apply_page.h"
 #include "widgets/fold/fold_bench_page.h"
@@ -10,7 +11,6 @@
 #include "widgets/fold/fold_node_page.h"
 #include "widgets/fold/fold_options_page.h"
 #include "widgets/fold/fold_plc_page.h"
-#include "model/text_language.h"
 
 #include <QEvent>
 

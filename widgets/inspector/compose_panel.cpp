@@ -2,10 +2,10 @@
 
 #include "access/node_image_adapter.h"
 #include "core/hex.h"
-#include "model/text_language.h"
 #include "frame_detail.h"
 #include "inspect/logged_frame.h"
 #include "model/session/connection.h"
+#include "model/text_language.h"
 
 #include <QCheckBox>
 #include <QComboBox>

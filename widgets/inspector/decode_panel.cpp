@@ -1,11 +1,11 @@
 #include "decode_panel.h"
 
 #include "canopen/can_frame.h"
-#include "model/text_language.h"
 #include "frame_detail.h"
 #include "inspect/auto_detect.h"
 #include "inspect/hex_input.h"
 #include "inspect/logged_frame.h"
+#include "model/text_language.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -1,8 +1,8 @@
 #include "frame_detail.h"
 
-#include "model/text_language.h"
 #include "hex_view.h"
 #include "model/inspect/field_tree_model.h"
+#include "model/text_language.h"
 
 #include <QEvent>
 #include <QHeaderView>

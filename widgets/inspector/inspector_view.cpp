@@ -1,7 +1,6 @@
 #include "inspector_view.h"
 
 #include "compose_panel.h"
-#include "model/text_language.h"
 #include "decode_panel.h"
 #include "dict/dictionary.h"
 #include "frame_detail.h"
@@ -10,6 +9,7 @@
 #include "model/inspect/frame_links.h"
 #include "model/session/connection.h"
 #include "model/telegram_log_model.h"
+#include "model/text_language.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -434,13 +434,15 @@ bool openForWriting(QFile &file, QString *error)
 bool InspectorView::saveCsv(const QString &path, QString *error) const
 {
     QFile file(path);
-    return m_log && openForWriting(file, error) && m_log->writeCsv(file, summaryOptions(), filter(), error);
+    return m_log && openForWriting(file, error) &&
+           m_log->writeCsv(file, summaryOptions(), filter(), error);
 }
 
 bool InspectorView::saveText(const QString &path, QString *error) const
 {
     QFile file(path);
-    return m_log && openForWriting(file, error) && m_log->writeText(file, summaryOptions(), filter(), error);
+    return m_log && openForWriting(file, error) &&
+           m_log->writeText(file, summaryOptions(), filter(), error);
 }
 
 void InspectorView::saveInteractive(bool csv)

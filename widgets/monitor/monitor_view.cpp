@@ -1,9 +1,9 @@
 #include "monitor_view.h"
-#include "model/text_language.h"
 
 #include "channel_chooser.h"
 #include "model/monitor/monitor_export.h"
 #include "model/session/connection.h"
+#include "model/text_language.h"
 #include "monitor_plot.h"
 #include "step_control.h"
 

@@ -1,7 +1,7 @@
 #include "step_control.h"
-#include "model/text_language.h"
 
 #include "dict/cooking.h"
+#include "model/text_language.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -111,7 +111,8 @@ void StepControl::moduleChosen()
             const QString name = QString::fromStdString(row->name);
             m_row->addItem(name, name);
             m_row->setItemData(m_row->count() - 1,
-                               QString::fromStdString(row->label.in(model::textLanguage())), Qt::ToolTipRole);
+                               QString::fromStdString(row->label.in(model::textLanguage())),
+                               Qt::ToolTipRole);
         }
         m_step = std::make_unique<model::SetValueStep>(*m_access, *module);
         m_step->setLanguage(model::textLanguage());

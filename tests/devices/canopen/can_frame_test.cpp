@@ -3,9 +3,8 @@
 #include "canopen/can_frame.h"
 #include "core/byte_writer.h"
 
-#include <gtest/gtest.h>
-
 #include <bit>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::canopen;

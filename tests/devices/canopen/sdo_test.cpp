@@ -2,9 +2,8 @@
 // connection set, with the CiA 408 objects the Wandfluh devices use (ARCHITECTURE.md "CAN").
 #include "canopen/sdo.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::canopen;
@@ -105,12 +104,12 @@ TEST(CanopenSdo, Cia301AbortWithCodeTexts)
     EXPECT_EQ(abortCodeText(0x06020000).de, "Objekt existiert nicht im Objektverzeichnis");
     EXPECT_TRUE(isKnownAbortCode(0x08000022));
     EXPECT_EQ(abortCodeText(0x12345678).en, "unknown abort code 0x12345678");
-    const std::uint32_t all[] = {0x05030000, 0x05040000, 0x05040001, 0x05040002, 0x05040003, 0x05040004,
-                                 0x05040005, 0x06010000, 0x06010001, 0x06010002, 0x06020000, 0x06040041,
-                                 0x06040042, 0x06040043, 0x06040047, 0x06060000, 0x06070010, 0x06070012,
-                                 0x06070013, 0x06090011, 0x06090030, 0x06090031, 0x06090032, 0x06090036,
-                                 0x060A0023, 0x08000000, 0x08000020, 0x08000021, 0x08000022, 0x08000023,
-                                 0x08000024};
+    const std::uint32_t all[] = {
+        0x05030000, 0x05040000, 0x05040001, 0x05040002, 0x05040003, 0x05040004, 0x05040005,
+        0x06010000, 0x06010001, 0x06010002, 0x06020000, 0x06040041, 0x06040042, 0x06040043,
+        0x06040047, 0x06060000, 0x06070010, 0x06070012, 0x06070013, 0x06090011, 0x06090030,
+        0x06090031, 0x06090032, 0x06090036, 0x060A0023, 0x08000000, 0x08000020, 0x08000021,
+        0x08000022, 0x08000023, 0x08000024};
     for (std::uint32_t code : all) {
         EXPECT_TRUE(isKnownAbortCode(code)) << std::hex << code;
         EXPECT_TRUE(abortCodeText(code).complete());
@@ -138,10 +137,12 @@ TEST(CanopenSdo, CanFramesOfTheSdoChannel)
 TEST(CanopenSdo, EncodeAndDecodeErrors)
 {
     EXPECT_EQ(encodeSdo(expeditedDownload(0x6040, 0, Bytes{})).error().code, DecodeErrc::BadValue);
-    EXPECT_EQ(encodeSdo(expeditedDownload(0x6040, 0, Bytes(5, 0))).error().code, DecodeErrc::BadValue);
+    EXPECT_EQ(encodeSdo(expeditedDownload(0x6040, 0, Bytes(5, 0))).error().code,
+              DecodeErrc::BadValue);
     EXPECT_EQ(decodeSdo(Bytes{0x40, 0x41}, Direction::Request).error().code, DecodeErrc::Truncated);
     EXPECT_EQ(decodeSdo(Bytes(9, 0), Direction::Request).error().code, DecodeErrc::TooLong);
-    EXPECT_EQ(decodeSdo(Bytes{0xE0, 0, 0, 0, 0, 0, 0, 0}, Direction::Request).error().code, DecodeErrc::UnexpectedCommand);
+    EXPECT_EQ(decodeSdo(Bytes{0xE0, 0, 0, 0, 0, 0, 0, 0}, Direction::Request).error().code,
+              DecodeErrc::UnexpectedCommand);
 }
 
 TEST(CanopenSdo, DescribeUsesTheCobId)
@@ -158,7 +159,8 @@ TEST(CanopenSdo, DescribeUsesTheCobId)
     for (const FieldSpan &fs : d.fields)
         EXPECT_TRUE(fs.text.complete()) << fs.key;
 
-    const Description a = describeSdo(makeCanFrame(0x605, Bytes{0x80, 0x40, 0x60, 0x00, 0x22, 0x00, 0x00, 0x08}));
+    const Description a =
+        describeSdo(makeCanFrame(0x605, Bytes{0x80, 0x40, 0x60, 0x00, 0x22, 0x00, 0x00, 0x08}));
     ASSERT_TRUE(a.ok());
     EXPECT_EQ(a.field("sdo.abort_code")->value, "0x08000022");
     // Without a COB-ID the direction option decides; a non-SDO id is an error.

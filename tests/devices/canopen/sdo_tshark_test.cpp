@@ -6,7 +6,6 @@
 #include "core/hex.h"
 
 #include <gtest/gtest.h>
-
 #include <sstream>
 
 using namespace vt::dev;
@@ -50,7 +49,8 @@ std::vector<Case> cases()
         {"write confirmed", *toCanFrame(downloadResponse(0x6040, 0), 5)},
         {"read 0x6041", *toCanFrame(uploadRequest(0x6041, 0), 5)},
         {"read value 0x0237", *toCanFrame(expeditedUploadResponse(0x6041, 0, 0x0237, 2), 5)},
-        {"write 1 byte to 0x2000/3 (HCS manufacturer area)", *toCanFrame(expeditedDownload(0x2003, 0, 7, 1), 127)},
+        {"write 1 byte to 0x2000/3 (HCS manufacturer area)",
+         *toCanFrame(expeditedDownload(0x2003, 0, 7, 1), 127)},
         {"read 4 bytes", *toCanFrame(expeditedUploadResponse(0x604F, 1, 0x12345678, 4), 1)},
         {"segmented upload initiate", *toCanFrame(segmentedInit, 5)},
         {"server abort", *toCanFrame(abortTransfer(0x6042, 0, 0x06090030), 5, Direction::Response)},
@@ -58,9 +58,10 @@ std::vector<Case> cases()
     };
 }
 
-const std::vector<std::string> kFields{"canopen.node_id",      "canopen.sdo.ccs",     "canopen.sdo.scs",
-                                       "canopen.sdo.main_idx", "canopen.sdo.sub_idx", "canopen.sdo.data.bytes",
-                                       "canopen.sdo.abort_code", "canopen.sdo.e",    "canopen.sdo.s"};
+const std::vector<std::string> kFields{
+    "canopen.node_id",        "canopen.sdo.ccs",     "canopen.sdo.scs",
+    "canopen.sdo.main_idx",   "canopen.sdo.sub_idx", "canopen.sdo.data.bytes",
+    "canopen.sdo.abort_code", "canopen.sdo.e",       "canopen.sdo.s"};
 enum Col { kNode, kCcs, kScs, kIndex, kSub, kData, kAbort, kE, kS };
 
 bool flag(const std::string &s)
@@ -96,14 +97,16 @@ TEST(CanopenTshark, Cia301SdoFramesMatchWireshark)
         const Sdo &s = ours->sdo;
         EXPECT_EQ(number(row[kNode]), ours->channel.node);
         const long specifier = all[i].frame.data[0] >> 5;
-        EXPECT_EQ(number(ours->channel.direction == Direction::Request ? row[kCcs] : row[kScs]), specifier);
+        EXPECT_EQ(number(ours->channel.direction == Direction::Request ? row[kCcs] : row[kScs]),
+                  specifier);
         EXPECT_EQ(number(row[kIndex]), s.index);
         EXPECT_EQ(number(row[kSub]), s.subindex);
         if (s.command == SdoCommand::Abort) {
             EXPECT_EQ(static_cast<std::uint32_t>(number(row[kAbort])), s.abortCode);
             continue;
         }
-        if (s.command == SdoCommand::InitiateDownloadRequest || s.command == SdoCommand::InitiateUploadResponse) {
+        if (s.command == SdoCommand::InitiateDownloadRequest ||
+            s.command == SdoCommand::InitiateUploadResponse) {
             EXPECT_EQ(flag(row[kE]), s.expedited);
             EXPECT_EQ(flag(row[kS]), s.sizeIndicated);
         }
@@ -122,19 +125,20 @@ TEST(CanopenTshark, Cia301AbortCodeTextsMatchWireshark)
         GTEST_SKIP() << "tshark is not installed";
     if (!canSubdissectorAvailable())
         GTEST_SKIP() << "this tshark cannot decode CAN as CANopen (no can.subdissector table)";
-    const std::uint32_t codes[] = {0x05030000, 0x05040000, 0x05040001, 0x05040002, 0x05040003, 0x05040004,
-                                   0x05040005, 0x06010000, 0x06010001, 0x06010002, 0x06020000, 0x06040041,
-                                   0x06040042, 0x06040043, 0x06040047, 0x06060000, 0x06070010, 0x06070012,
-                                   0x06070013, 0x06090011, 0x06090030, 0x06090031, 0x06090032, 0x06090036,
-                                   0x060A0023, 0x08000000, 0x08000020, 0x08000021, 0x08000022, 0x08000023,
-                                   0x08000024};
+    const std::uint32_t codes[] = {
+        0x05030000, 0x05040000, 0x05040001, 0x05040002, 0x05040003, 0x05040004, 0x05040005,
+        0x06010000, 0x06010001, 0x06010002, 0x06020000, 0x06040041, 0x06040042, 0x06040043,
+        0x06040047, 0x06060000, 0x06070010, 0x06070012, 0x06070013, 0x06090011, 0x06090030,
+        0x06090031, 0x06090032, 0x06090036, 0x060A0023, 0x08000000, 0x08000020, 0x08000021,
+        0x08000022, 0x08000023, 0x08000024};
     vt::test::PcapWriter pcap(vt::test::kLinktypeSocketCan);
     for (std::uint32_t code : codes)
-        pcap.add(socketCanRecord(*toCanFrame(abortTransfer(0x2000, 1, code), 5, Direction::Response)));
+        pcap.add(
+            socketCanRecord(*toCanFrame(abortTransfer(0x2000, 1, code), 5, Direction::Response)));
     vt::test::TempFile file("vt_canopen_abort_tshark");
     ASSERT_TRUE(pcap.write(file.path()));
-    const auto r = vt::test::runCommand(vt::test::tsharkCommand() + " -n -r '" + file.path().string() + "' "
-                                        + kDecodeAs + " -V");
+    const auto r = vt::test::runCommand(vt::test::tsharkCommand() + " -n -r '" +
+                                        file.path().string() + "' " + kDecodeAs + " -V");
     ASSERT_EQ(r.status, 0);
     std::vector<std::string> texts;
     std::istringstream lines(r.output);

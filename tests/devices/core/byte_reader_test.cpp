@@ -1,8 +1,7 @@
 #include "core/byte_reader.h"
 
-#include <gtest/gtest.h>
-
 #include <array>
+#include <gtest/gtest.h>
 
 using vt::dev::ByteReader;
 

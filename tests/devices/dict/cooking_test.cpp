@@ -25,9 +25,9 @@ TEST(Cooking, HcsVoltsInBothLanguages)
     const ParamMeta &c107 = param("opat", "C1.07");
     EXPECT_EQ(formatValue(c107, 1000, Language::English), "1.000 V");
     EXPECT_EQ(formatValue(c107, 1000, Language::German), "1,000 V");
-    EXPECT_EQ(*parseValue(c107, "1,5", Language::German), 1500);       // Parameter editor issue
+    EXPECT_EQ(*parseValue(c107, "1,5", Language::German), 1500); // Parameter editor issue
     EXPECT_EQ(*parseValue(c107, " 1.5 V ", Language::English), 1500);
-    EXPECT_EQ(*parseValue(c107, "1,000 v", Language::German), 1000);    // unit in any case
+    EXPECT_EQ(*parseValue(c107, "1,000 v", Language::German), 1000); // unit in any case
     EXPECT_EQ(*parseValue(c107, "9.999", Language::English), 9999);
 }
 
@@ -51,7 +51,8 @@ TEST(Cooking, OutOfRangeNamesTheLimitsInDisplayUnits)
     EXPECT_EQ(r.error().kind, CookError::Kind::AboveMax);
     EXPECT_EQ(r.error().message.en, "C1.07: above the maximum 9.999 V (range 0.000 V … 9.999 V)");
     auto de = parseValue(c107, "-1", Language::German);
-    EXPECT_EQ(de.error().message.de, "C1.07: unter dem Minimum 0,000 V (Bereich 0,000 V … 9,999 V)");
+    EXPECT_EQ(de.error().message.de,
+              "C1.07: unter dem Minimum 0,000 V (Bereich 0,000 V … 9,999 V)");
 }
 
 TEST(Cooking, EnumLabelsInEitherLanguage)
@@ -61,16 +62,17 @@ TEST(Cooking, EnumLabelsInEitherLanguage)
     EXPECT_EQ(formatValue(mode, 2, Language::German), "Sollwertvorgabe lokal");
     EXPECT_EQ(*parseValue(mode, "sollwertvorgabe lokal", Language::English), 2);
     EXPECT_EQ(*parseValue(mode, "1", Language::German), 1);
-    EXPECT_EQ(parseValue(mode, "maybe", Language::English).error().kind, CookError::Kind::UnknownLabel);
+    EXPECT_EQ(parseValue(mode, "maybe", Language::English).error().kind,
+              CookError::Kind::UnknownLabel);
 }
 
 TEST(Cooking, Dsp408ScalingTruncatesAsTheManualShows)
 {
     const ParamMeta &aside = param("wandfluh-ed1", "dop_drivePos_AsideVal");
     ASSERT_EQ(aside.scale.rounding, Rounding::Truncate);
-    EXPECT_EQ(*parseValue(aside, "60", Language::English), 33);        // 60 / 1.78 = 33.7 -> 33
-    EXPECT_EQ(formatValue(aside, 33, Language::English), "58.74 mA");  // what the card holds
-    EXPECT_EQ(*parseValue(aside, "58.74 mA", Language::English), 33);  // and back
+    EXPECT_EQ(*parseValue(aside, "60", Language::English), 33);       // 60 / 1.78 = 33.7 -> 33
+    EXPECT_EQ(formatValue(aside, 33, Language::English), "58.74 mA"); // what the card holds
+    EXPECT_EQ(*parseValue(aside, "58.74 mA", Language::English), 33); // and back
     EXPECT_EQ(*parseValue(aside, "58,74", Language::German), 33);
 }
 
@@ -83,7 +85,8 @@ TEST(Cooking, WritesNeedAWritableRowInRange)
     const ParamMeta &c107 = param("opat", "C1.07");
     EXPECT_FALSE(checkWrite(c107, 1000).has_value());
     EXPECT_EQ(checkWrite(c107, 10000)->kind, CookError::Kind::AboveMax);
-    EXPECT_EQ(checkWrite(c107, 500, Limits{0, 400})->kind, CookError::Kind::AboveMax); // narrowed limits
+    EXPECT_EQ(checkWrite(c107, 500, Limits{0, 400})->kind,
+              CookError::Kind::AboveMax); // narrowed limits
 }
 
 TEST(Cooking, BitFieldsListTheirSetBits)

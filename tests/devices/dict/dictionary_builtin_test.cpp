@@ -2,9 +2,8 @@
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 
@@ -28,8 +27,9 @@ TEST(Dictionaries, EveryEmbeddedFamilyLoadsAndValidates)
 {
     const auto &r = builtinDictionaries();
     ASSERT_TRUE(r.ok()) << (r.ok() ? "" : r.error().front().text());
-    EXPECT_EQ(r->families(), (std::vector<std::string>{"dma-pb-v15", "dma-pb-v22", "dma-pb-v32", "dma-pn-v13",
-                                                       "dma-pn-v51", "opat", "wandfluh-ed1", "wandfluh-sd7"}));
+    EXPECT_EQ(r->families(),
+              (std::vector<std::string>{"dma-pb-v15", "dma-pb-v22", "dma-pb-v32", "dma-pn-v13",
+                                        "dma-pn-v51", "opat", "wandfluh-ed1", "wandfluh-sd7"}));
 }
 
 TEST(Dictionaries, EveryRowHasGermanText)
@@ -55,19 +55,23 @@ TEST(Dictionaries, CookingRoundTripsEveryRowInBothLanguages)
         for (const ParamMeta &p : builtin().find(family)->params) {
             if (p.isString())
                 continue;
-            const double mid = p.isFloat() ? (p.min / 2 + p.max / 2) : std::floor(p.min / 2 + p.max / 2);
+            const double mid =
+                p.isFloat() ? (p.min / 2 + p.max / 2) : std::floor(p.min / 2 + p.max / 2);
             for (double raw : {p.min, p.max, mid}) {
                 if (p.isFloat() && std::fabs(raw) > 1e9)
                     continue; // ±FLT_MAX limits of an unbounded float: not a typed value
                 for (Language lang : {Language::English, Language::German}) {
                     const std::string shown = formatValue(p, raw, lang);
                     const auto back = parseValue(p, shown, lang);
-                    ASSERT_TRUE(back.ok()) << family << " " << p.name << " raw " << raw << " shown '" << shown
-                                           << "': " << back.error().message.en;
+                    ASSERT_TRUE(back.ok())
+                        << family << " " << p.name << " raw " << raw << " shown '" << shown
+                        << "': " << back.error().message.en;
                     if (p.isFloat())
-                        EXPECT_NEAR(*back, raw, std::fabs(raw) * 1e-6 + 1e-3) << family << " " << p.name;
+                        EXPECT_NEAR(*back, raw, std::fabs(raw) * 1e-6 + 1e-3)
+                            << family << " " << p.name;
                     else
-                        EXPECT_EQ(*back, raw) << family << " " << p.name << " shown '" << shown << "'";
+                        EXPECT_EQ(*back, raw)
+                            << family << " " << p.name << " shown '" << shown << "'";
                     ++checked;
                 }
             }

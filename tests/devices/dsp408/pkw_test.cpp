@@ -1,9 +1,8 @@
 // DSP-408 PKW against the ED1/SD1 PROFIBUS-DP manual §4.6 and the worked examples of §4.6.1.
 #include "dsp408/pkw.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::dsp408;
@@ -59,7 +58,8 @@ TEST(Dsp408Pkw, Section461Example2ReadByte)
     const Bytes request{0x10, 0x62, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00};
     const Bytes response{0xB0, 0x62, 0x03, 0x00, 0x00, 0x00, 0x00, 0x64};
     EXPECT_EQ(*encodePkw(readRequest(3, 98)), request);
-    EXPECT_EQ(*encodePkw(valueResponse(3, 98, paramLength(DataType::UInt8), 100), kResponse), response);
+    EXPECT_EQ(*encodePkw(valueResponse(3, 98, paramLength(DataType::UInt8), 100), kResponse),
+              response);
 
     auto r = decodePkw(response, kResponse);
     ASSERT_TRUE(r.ok());

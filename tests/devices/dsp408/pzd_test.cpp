@@ -1,9 +1,8 @@
 // DSP-408 PZD and telegram types against the ED1/SD1 PROFIBUS-DP manual §4.5 and §4.8.2/§4.8.3.
 #include "dsp408/pzd.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::dsp408;
@@ -39,7 +38,8 @@ TEST(Dsp408Pzd, Section451TelegramType2)
 TEST(Dsp408Pzd, Section451TelegramType1Response)
 {
     const ResponseTelegram t{valueResponse(3, 98, ParamLength::Byte, 100), {0x000F, -2}};
-    const Bytes wire{0xB0, 0x62, 0x03, 0x00, 0x00, 0x00, 0x00, 0x64, 0x00, 0x0F, 0xFF, 0xFF, 0xFF, 0xFE};
+    const Bytes wire{0xB0, 0x62, 0x03, 0x00, 0x00, 0x00, 0x00,
+                     0x64, 0x00, 0x0F, 0xFF, 0xFF, 0xFF, 0xFE};
     const Options response = options(Direction::Response);
     EXPECT_EQ(*encodeTelegram(t, response), wire);
     auto d = decodeResponseTelegram(wire, response);

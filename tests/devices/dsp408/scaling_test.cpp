@@ -1,9 +1,8 @@
 // DSP-408 scaling against the ED1/SD1 PROFIBUS-DP manual §4.7.
 #include "dsp408/scaling.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 
 using namespace vt::dev::dsp408;

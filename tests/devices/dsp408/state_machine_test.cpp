@@ -58,7 +58,8 @@ TEST(Dsp408StateMachine, Section422Tr4DeviceModeActiveBit)
 TEST(Dsp408StateMachine, Section422Tr5DeviceModeActiveCleared)
 {
     EXPECT_EQ(run(State::DeviceModeActive, D | H), (Step{State::Hold, Transition::Tr5}));
-    EXPECT_EQ(run(State::DeviceModeActive, D | H | M), (Step{State::DeviceModeActive, Transition::None}));
+    EXPECT_EQ(run(State::DeviceModeActive, D | H | M),
+              (Step{State::DeviceModeActive, Transition::None}));
 }
 
 TEST(Dsp408StateMachine, Section422Tr6HoldEnableCleared)
@@ -78,7 +79,8 @@ TEST(Dsp408StateMachine, Section422Tr8ErrorPresent)
     Inputs error;
     error.errorPresent = true;
     for (State s : {State::Init, State::Disabled, State::Hold, State::DeviceModeActive})
-        EXPECT_EQ(run(s, D | H | M, error), (Step{State::FaultReaction, Transition::Tr8})) << stateName(s);
+        EXPECT_EQ(run(s, D | H | M, error), (Step{State::FaultReaction, Transition::Tr8}))
+            << stateName(s);
 }
 
 TEST(Dsp408StateMachine, Section422Tr9ErrorReactionHold)
@@ -95,7 +97,8 @@ TEST(Dsp408StateMachine, Section422Tr10ErrorResetToDisabled)
     // "reset fault" must change from 0 to 1 with H = 0.
     EXPECT_EQ(run(State::Fault, R | D, {}, D), (Step{State::Disabled, Transition::Tr10}));
     EXPECT_EQ(run(State::FaultHold, R, {}, 0), (Step{State::Disabled, Transition::Tr10}));
-    EXPECT_EQ(run(State::Fault, R | D, {}, R | D), (Step{State::Fault, Transition::None})); // no edge
+    EXPECT_EQ(run(State::Fault, R | D, {}, R | D),
+              (Step{State::Fault, Transition::None})); // no edge
     Inputs error;
     error.errorPresent = true;
     EXPECT_EQ(run(State::Fault, R, error, 0), (Step{State::Fault, Transition::None}));
@@ -121,7 +124,8 @@ TEST(Dsp408StateMachine, Section422Tr567ForcedByEnableOrCommunication)
         EXPECT_EQ(run(s, D | H | M, off), (Step{State::Init, Transition::Tr567})) << stateName(s);
     Inputs comm;
     comm.communicationForced = true;
-    EXPECT_EQ(run(State::DeviceModeActive, D | H | M, comm), (Step{State::Init, Transition::Tr567}));
+    EXPECT_EQ(run(State::DeviceModeActive, D | H | M, comm),
+              (Step{State::Init, Transition::Tr567}));
 }
 
 // ED1/SD1 manual §5.5: set D, H and M in INIT and the device becomes active.
@@ -129,10 +133,12 @@ TEST(Dsp408StateMachine, Section55SettleRunsTheStartSequence)
 {
     const Settled up = settle(State::Init, D | H | M, 0, {});
     EXPECT_EQ(up.state, State::DeviceModeActive);
-    EXPECT_EQ(up.transitions, (std::vector<Transition>{Transition::Tr2, Transition::Tr3, Transition::Tr4}));
+    EXPECT_EQ(up.transitions,
+              (std::vector<Transition>{Transition::Tr2, Transition::Tr3, Transition::Tr4}));
     const Settled down = settle(State::DeviceModeActive, 0, D | H | M, {});
     EXPECT_EQ(down.state, State::Init);
-    EXPECT_EQ(down.transitions, (std::vector<Transition>{Transition::Tr5, Transition::Tr6, Transition::Tr7}));
+    EXPECT_EQ(down.transitions,
+              (std::vector<Transition>{Transition::Tr5, Transition::Tr6, Transition::Tr7}));
     // §5.6 start after an error: reset fault with D, H, M set → HOLD, then active.
     const Settled restart = settle(State::Fault, R | D | H | M, D | H | M, {});
     EXPECT_EQ(restart.state, State::DeviceModeActive);

@@ -19,7 +19,8 @@ inline const Dictionary &dictionary(const std::string &family)
     return *d;
 }
 
-inline ModuleRecord moduleFromDefaults(const std::string &family, int address, std::string version, std::string mode)
+inline ModuleRecord moduleFromDefaults(const std::string &family, int address, std::string version,
+                                       std::string mode)
 {
     ModuleRecord m;
     m.address = address;
@@ -28,7 +29,9 @@ inline ModuleRecord moduleFromDefaults(const std::string &family, int address, s
     m.mode = std::move(mode);
     for (const ParamMeta &p : dictionary(family).params) {
         if (p.isString()) {
-            m.values.push_back(makeValueRow(p, std::string("VT-" + p.name).substr(0, static_cast<std::size_t>(std::max(p.length, 0)))));
+            m.values.push_back(
+                makeValueRow(p, std::string("VT-" + p.name)
+                                    .substr(0, static_cast<std::size_t>(std::max(p.length, 0)))));
         } else {
             const double fallback = std::clamp(0.0, p.min, p.max);
             m.values.push_back(makeValueRow(p, p.defaultValue.value_or(fallback)));

@@ -4,7 +4,6 @@
 #include "files/param_csv.h"
 
 #include <gtest/gtest.h>
-
 #include <sstream>
 
 using namespace vt::dev;
@@ -24,9 +23,11 @@ ModuleRecord sample()
     m.label = "Press 1, axis \"A\"; left";
     m.values.push_back(makeValueRow(*d.find("C1.07"), 1000.0));
     m.values.push_back(makeValueRow(*d.find("C1.00"), 2.0));
-    m.values.push_back(makeValueRow(*d.find("C1.07"), -1.0)); // (the same meta twice is fine for CSV)
+    m.values.push_back(
+        makeValueRow(*d.find("C1.07"), -1.0)); // (the same meta twice is fine for CSV)
     m.values.back().name = "C1.07 copy";
-    m.values.push_back({"X9.99", std::nullopt, {}, {}, {}, 2.5, "2.5 bar, \"est.\"", nlohmann::json::object()});
+    m.values.push_back(
+        {"X9.99", std::nullopt, {}, {}, {}, 2.5, "2.5 bar, \"est.\"", nlohmann::json::object()});
     return m;
 }
 
@@ -46,8 +47,11 @@ TEST(ParamCsv, EnglishUsesCommaAndPoint)
 {
     const auto l = lines(exportCsv(sample(), &dictionary("dma-pn-v51"), {Language::English}));
     ASSERT_EQ(l.size(), 7u);
-    EXPECT_EQ(l[0], "# ValveTune parameter export. Separator: comma. Decimal sign: point. Encoding: UTF-8.");
-    EXPECT_EQ(l[1], "# Module 1: dma-pn-v51. Version 51.02. Mode 3. Label: Press 1; axis  A ; left");
+    EXPECT_EQ(
+        l[0],
+        "# ValveTune parameter export. Separator: comma. Decimal sign: point. Encoding: UTF-8.");
+    EXPECT_EQ(l[1],
+              "# Module 1: dma-pn-v51. Version 51.02. Mode 3. Label: Press 1; axis  A ; left");
     EXPECT_EQ(l[2], "Name,Label,Value,Unit,Raw,Range,Access");
     EXPECT_EQ(l[3], "C1.07,Dead band compensation A,1.000,V,1000,0.000 … 9.999,read/write");
     EXPECT_EQ(l[4].substr(0, 17), "C1.00,Controller ");
@@ -60,8 +64,11 @@ TEST(ParamCsv, GermanUsesSemicolonAndComma)
 {
     const auto l = lines(exportCsv(sample(), &dictionary("dma-pn-v51"), {Language::German}));
     ASSERT_EQ(l.size(), 7u);
-    EXPECT_EQ(l[0], "# ValveTune-Parameterexport. Trennzeichen: Semikolon. Dezimalzeichen: Komma. Kodierung: UTF-8.");
-    EXPECT_EQ(l[1], "# Modul 1: dma-pn-v51. Version 51.02. Modus 3. Bezeichnung: Press 1, axis  A , left");
+    EXPECT_EQ(l[0], "# ValveTune-Parameterexport. Trennzeichen: Semikolon. Dezimalzeichen: Komma. "
+                    "Kodierung: UTF-8.");
+    EXPECT_EQ(
+        l[1],
+        "# Modul 1: dma-pn-v51. Version 51.02. Modus 3. Bezeichnung: Press 1, axis  A , left");
     EXPECT_EQ(l[2], "Name;Bezeichnung;Wert;Einheit;Rohwert;Bereich;Zugriff");
     EXPECT_EQ(l[3], "C1.07;Totbereichkompensation A;1,000;V;1000;0,000 … 9,999;lesen/schreiben");
     EXPECT_NE(l[4].find(";schaltender Regler;;2;0 … 4;lesen/schreiben"), std::string::npos) << l[4];

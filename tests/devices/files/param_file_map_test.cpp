@@ -4,9 +4,8 @@
 #include "file_test_support.h"
 #include "files/param_file_map.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::files;
@@ -17,7 +16,8 @@ namespace {
 
 const RowMapping *rowNamed(const MapReport &r, const std::string &name)
 {
-    const auto it = std::find_if(r.rows.begin(), r.rows.end(), [&](const RowMapping &m) { return m.name == name; });
+    const auto it = std::find_if(r.rows.begin(), r.rows.end(),
+                                 [&](const RowMapping &m) { return m.name == name; });
     return it == r.rows.end() ? nullptr : &*it;
 }
 
@@ -55,28 +55,36 @@ TEST(ParamFileMap, AFileOfTheSameFamilyMapsCleanly)
 TEST(ParamFileMap, V22FileOpenedAgainstAV32Module)
 {
     ModuleRecord m = moduleFromDefaults("dma-pb-v22", 2, "22.05", "2");
-    rowOf(m, "C1.07").raw = 12000.0;                    // above 9.999 V
-    rowOf(m, "E22").raw = std::string("3");              // text for a number row
-    rowOf(m, "C1.00").raw = 1.5;                         // a fraction for an enum row
-    rowOf(m, "C2.07").name = "C2.07 (old name)";         // renamed: found again by ID
-    m.values.push_back({"X9.99", 4000, {}, {}, {}, 7.0, {}, nlohmann::json::object()});           // unknown everywhere
-    m.values.push_back({"C1.99", 48, {}, {}, {}, 7.0, {}, nlohmann::json::object()});             // ID of C1.07, also in the file
+    rowOf(m, "C1.07").raw = 12000.0;             // above 9.999 V
+    rowOf(m, "E22").raw = std::string("3");      // text for a number row
+    rowOf(m, "C1.00").raw = 1.5;                 // a fraction for an enum row
+    rowOf(m, "C2.07").name = "C2.07 (old name)"; // renamed: found again by ID
+    m.values.push_back(
+        {"X9.99", 4000, {}, {}, {}, 7.0, {}, nlohmann::json::object()}); // unknown everywhere
+    m.values.push_back(
+        {"C1.99", 48, {}, {}, {}, 7.0, {}, nlohmann::json::object()}); // ID of C1.07, also in the
+                                                                       // file
 
     const MapReport r = mapModule(m, dictionary("dma-pb-v32"), MapTarget{"32.10", "3"});
     ASSERT_EQ(r.notes.size(), 2u);
-    EXPECT_NE(r.notes[0].en.find("written for dma-pb-v22; its values are mapped onto dma-pb-v32"), std::string::npos);
-    EXPECT_NE(r.notes[1].en.find("saved from version 22.05 in mode 2; this module runs 32.10 in mode 3"), std::string::npos)
+    EXPECT_NE(r.notes[0].en.find("written for dma-pb-v22; its values are mapped onto dma-pb-v32"),
+              std::string::npos);
+    EXPECT_NE(
+        r.notes[1].en.find("saved from version 22.05 in mode 2; this module runs 32.10 in mode 3"),
+        std::string::npos)
         << r.notes[1].en;
     EXPECT_FALSE(r.clean());
 
     // The rows V32 has and V22 had not: the module keeps its own values there.
-    EXPECT_EQ(namesWith(r, MapStatus::Missing), (std::vector<std::string>{"E18", "C1.33", "C2.33"}));
+    EXPECT_EQ(namesWith(r, MapStatus::Missing),
+              (std::vector<std::string>{"E18", "C1.33", "C2.33"}));
     const RowMapping *e18 = rowNamed(r, "E18");
     EXPECT_EQ(e18->row, RowMapping::kNoRow);
     EXPECT_EQ(e18->reason.de, "E18 fehlt in der Datei: das Modul behält seinen Wert");
 
     EXPECT_EQ(namesWith(r, MapStatus::OutOfRange), std::vector<std::string>{"C1.07"});
-    EXPECT_EQ(rowNamed(r, "C1.07")->reason.en, "C1.07: above the maximum 9.999 V (range 0.000 V … 9.999 V)");
+    EXPECT_EQ(rowNamed(r, "C1.07")->reason.en,
+              "C1.07: above the maximum 9.999 V (range 0.000 V … 9.999 V)");
     EXPECT_EQ(namesWith(r, MapStatus::TypeMismatch), (std::vector<std::string>{"C1.00", "E22"}));
     EXPECT_EQ(rowNamed(r, "E22")->reason.en, "E22 holds a number; the file has a text");
     EXPECT_EQ(rowNamed(r, "C1.00")->reason.en, "C1.00 takes whole numbers; the file has 1.5");
@@ -86,17 +94,22 @@ TEST(ParamFileMap, V22FileOpenedAgainstAV32Module)
     EXPECT_EQ(renamed->status, MapStatus::MappedByAddress);
     EXPECT_EQ(renamed->meta->name, "C2.07");
     EXPECT_TRUE(renamed->applies());
-    EXPECT_EQ(renamed->reason.en, "C2.07 (old name) is named C2.07 in dma-pb-v32 (same " + renamed->meta->addressText() + ")");
+    EXPECT_EQ(renamed->reason.en, "C2.07 (old name) is named C2.07 in dma-pb-v32 (same " +
+                                      renamed->meta->addressText() + ")");
 
     EXPECT_EQ(namesWith(r, MapStatus::Unknown), (std::vector<std::string>{"X9.99", "C1.99"}));
-    EXPECT_EQ(rowNamed(r, "X9.99")->reason.en, "X9.99 is not in dma-pb-v32: kept in the file, not applied");
-    EXPECT_EQ(rowNamed(r, "C1.99")->reason.en, "C1.99: its ID 0x30 belongs to C1.07, which the file sets as well");
+    EXPECT_EQ(rowNamed(r, "X9.99")->reason.en,
+              "X9.99 is not in dma-pb-v32: kept in the file, not applied");
+    EXPECT_EQ(rowNamed(r, "C1.99")->reason.en,
+              "C1.99: its ID 0x30 belongs to C1.07, which the file sets as well");
 
     const std::size_t problems = 3 + 1 + 2 + 1 + 2;
     EXPECT_EQ(r.problems().size(), problems);
     EXPECT_EQ(r.count(MapStatus::Mapped), m.values.size() - (problems - 3));
-    EXPECT_EQ(r.summary().en, std::to_string(r.count(MapStatus::Mapped)) +
-                                  " mapped, 1 mapped by address, 2 unknown, 1 out of range, 2 type mismatch, 3 missing");
+    EXPECT_EQ(
+        r.summary().en,
+        std::to_string(r.count(MapStatus::Mapped)) +
+            " mapped, 1 mapped by address, 2 unknown, 1 out of range, 2 type mismatch, 3 missing");
     EXPECT_NE(r.summary().de.find("3 fehlt"), std::string::npos);
     for (const RowMapping *p : r.problems())
         EXPECT_TRUE(p->reason.complete()) << p->name;
@@ -120,7 +133,8 @@ TEST(ParamFileMap, RowsOfANewerVersionAreNotApplicableToAnOlderModule)
     // A V32.10 file onto a V31 module: E18, C1.33, C2.33 exist only in V32.
     const ModuleRecord m = moduleFromDefaults("dma-pb-v32", 1, "32.10", "3");
     const MapReport r = mapModule(m, dictionary("dma-pb-v32"), MapTarget{"31.02", "3"});
-    EXPECT_EQ(namesWith(r, MapStatus::NotApplicable), (std::vector<std::string>{"E18", "C1.33", "C2.33"}));
+    EXPECT_EQ(namesWith(r, MapStatus::NotApplicable),
+              (std::vector<std::string>{"E18", "C1.33", "C2.33"}));
     EXPECT_EQ(rowNamed(r, "E18")->reason.en, "E18 exists only in software version 32, not in V31");
     EXPECT_FALSE(rowNamed(r, "E18")->applies());
 }

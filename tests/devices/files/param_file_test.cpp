@@ -3,9 +3,8 @@
 // save), and display texts are for people only.
 #include "file_test_support.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::files;
@@ -56,8 +55,11 @@ TEST(ParamFile, DisplayTextsComeFromTheDictionaryAndDoNotChangeValues)
     const DictionarySet &set = *builtinDictionaries();
     const std::string en = writeParamFile(f, &set, Language::English);
     const std::string de = writeParamFile(f, &set, Language::German);
-    EXPECT_NE(en.find(R"({"name": "C1.07", "id": 48, "raw": 1000, "display": "1.000 V"})"), std::string::npos) << en;
-    EXPECT_NE(de.find(R"({"name": "C1.07", "id": 48, "raw": 1000, "display": "1,000 V"})"), std::string::npos);
+    EXPECT_NE(en.find(R"({"name": "C1.07", "id": 48, "raw": 1000, "display": "1.000 V"})"),
+              std::string::npos)
+        << en;
+    EXPECT_NE(de.find(R"({"name": "C1.07", "id": 48, "raw": 1000, "display": "1,000 V"})"),
+              std::string::npos);
     EXPECT_NE(en.find(R"("display": "off")"), std::string::npos); // enum rows show their label
 
     ParamFile fromEn = parsed(en), fromDe = parsed(de);
@@ -77,7 +79,9 @@ TEST(ParamFile, DisplayIsIgnoredOnRead)
             {"name": "C1.07", "id": 48, "raw": 1000, "display": "7.5 V"}]}]})";
     const ParamFile f = parsed(text);
     EXPECT_EQ(rawNumber(f.modules[0].values[0].raw), 1000);
-    EXPECT_NE(writeParamFile(f, builtinDictionaries().operator->()).find("\"display\": \"1.000 V\""), std::string::npos);
+    EXPECT_NE(
+        writeParamFile(f, builtinDictionaries().operator->()).find("\"display\": \"1.000 V\""),
+        std::string::npos);
 }
 
 TEST(ParamFile, NumbersKeepTheirExactValueAndKind)
@@ -85,18 +89,45 @@ TEST(ParamFile, NumbersKeepTheirExactValueAndKind)
     ParamFile f;
     ModuleRecord m;
     m.family = "wandfluh-sd7";
-    const double values[] = {0.0, -0.0, 1.0, -32768.0, 4294967295.0, 0.1, 1.0 / 3.0, 3.4028234663852886e38,
-                             1e-45, 9007199254740992.0, 1e300};
+    const double values[] = {0.0,          -0.0,
+                             1.0,          -32768.0,
+                             4294967295.0, 0.1,
+                             1.0 / 3.0,    3.4028234663852886e38,
+                             1e-45,        9007199254740992.0,
+                             1e300};
     for (std::size_t i = 0; i < std::size(values); ++i)
-        m.values.push_back({"n" + std::to_string(i), std::nullopt, {}, {}, {}, values[i], {}, nlohmann::json::object()});
-    m.values.push_back({"text", std::nullopt, {}, {}, {}, std::string("Ventil \"A\" ÄÖÜ\t\\ 1000"), {}, nlohmann::json::object()});
-    m.values.push_back({"numeric text", std::nullopt, {}, {}, {}, std::string("1000"), {}, nlohmann::json::object()});
+        m.values.push_back({"n" + std::to_string(i),
+                            std::nullopt,
+                            {},
+                            {},
+                            {},
+                            values[i],
+                            {},
+                            nlohmann::json::object()});
+    m.values.push_back({"text",
+                        std::nullopt,
+                        {},
+                        {},
+                        {},
+                        std::string("Ventil \"A\" ÄÖÜ\t\\ 1000"),
+                        {},
+                        nlohmann::json::object()});
+    m.values.push_back({"numeric text",
+                        std::nullopt,
+                        {},
+                        {},
+                        {},
+                        std::string("1000"),
+                        {},
+                        nlohmann::json::object()});
     f.modules.push_back(m);
     const std::string text = writeParamFile(f);
-    EXPECT_NE(text.find(R"({"name": "n2", "raw": 1})"), std::string::npos) << text;     // integer, no ".0"
-    EXPECT_NE(text.find(R"({"name": "n1", "raw": -0.0})"), std::string::npos);         // sign kept
-    EXPECT_NE(text.find(R"({"name": "n5", "raw": 0.1})"), std::string::npos);          // shortest exact
-    EXPECT_NE(text.find(R"({"name": "numeric text", "raw": "1000"})"), std::string::npos); // a string stays one
+    EXPECT_NE(text.find(R"({"name": "n2", "raw": 1})"), std::string::npos)
+        << text;                                                               // integer, no ".0"
+    EXPECT_NE(text.find(R"({"name": "n1", "raw": -0.0})"), std::string::npos); // sign kept
+    EXPECT_NE(text.find(R"({"name": "n5", "raw": 0.1})"), std::string::npos);  // shortest exact
+    EXPECT_NE(text.find(R"({"name": "numeric text", "raw": "1000"})"),
+              std::string::npos); // a string stays one
     const ParamFile back = parsed(text);
     EXPECT_EQ(back, f);
     EXPECT_TRUE(std::signbit(rawNumber(back.modules[0].values[1].raw)));
@@ -109,7 +140,8 @@ TEST(ParamFile, NonFiniteFloatsAreWrittenAsTaggedObjects)
     ParamFile f;
     ModuleRecord m;
     m.family = "wandfluh-sd7";
-    m.values.push_back(makeValueRow(*dictionary("wandfluh-sd7").find("hart_PvValue"), std::nan("")));
+    m.values.push_back(
+        makeValueRow(*dictionary("wandfluh-sd7").find("hart_PvValue"), std::nan("")));
     m.values.push_back({"inf", std::nullopt, {}, {}, {}, -HUGE_VAL, {}, nlohmann::json::object()});
     f.modules.push_back(m);
     const std::string text = writeParamFile(f, builtinDictionaries().operator->());
@@ -139,14 +171,20 @@ TEST(ParamFile, UnknownKeysAndRowsAreWrittenBack)
     ASSERT_EQ(f.modules[0].values.size(), 3u);
     EXPECT_EQ(f.modules[0].values[2].instance, 2);
 
-    for (const DictionarySet *set : {static_cast<const DictionarySet *>(nullptr), builtinDictionaries().operator->()}) {
+    for (const DictionarySet *set :
+         {static_cast<const DictionarySet *>(nullptr), builtinDictionaries().operator->()}) {
         const std::string out = writeParamFile(f, set);
-        EXPECT_NE(out.find(R"("signature": {"by":"QA","codes":[1,2.5,null,true]},)"), std::string::npos) << out;
+        EXPECT_NE(out.find(R"("signature": {"by":"QA","codes":[1,2.5,null,true]},)"),
+                  std::string::npos)
+            << out;
         EXPECT_NE(out.find(R"("wiring": "X1:5",)"), std::string::npos);
         EXPECT_NE(out.find(R"({"name": "C1.07", "id": 48, "raw": 1500)"), std::string::npos);
         EXPECT_NE(out.find(R"("checked": true, "history": [1000,1200]})"), std::string::npos);
         // The unknown row keeps its display: no dictionary row can recompute it.
-        EXPECT_NE(out.find(R"({"name": "Z9.99", "id": 4000, "raw": 7, "display": "from a future version"})"), std::string::npos);
+        EXPECT_NE(
+            out.find(
+                R"({"name": "Z9.99", "id": 4000, "raw": 7, "display": "from a future version"})"),
+            std::string::npos);
         ParamFile again = parsed(out);
         if (set)
             again.modules[0].values[0].display.clear();
@@ -202,5 +240,6 @@ TEST(ParamFile, IsoUtc)
     using namespace std::chrono;
     const sys_days day = year{2024} / May / 2;
     EXPECT_EQ(isoUtc(day + 9h + 30min + 5s + 700ms), "2024-05-02T09:30:05Z");
-    EXPECT_EQ(isoUtc(sys_days{year{1999} / December / 31} + 23h + 59min + 59s), "1999-12-31T23:59:59Z");
+    EXPECT_EQ(isoUtc(sys_days{year{1999} / December / 31} + 23h + 59min + 59s),
+              "1999-12-31T23:59:59Z");
 }

@@ -12,7 +12,8 @@ namespace {
 Bytes frameBytes(std::uint8_t command, Bytes data, bool response = false)
 {
     const Address a = longAddress(0xE3F0, 0x123456);
-    Frame f = response ? makeResponse(a, command, 0, 0, std::move(data)) : makeRequest(a, command, std::move(data));
+    Frame f = response ? makeResponse(a, command, 0, 0, std::move(data))
+                       : makeRequest(a, command, std::move(data));
     return *encodeFrame(f);
 }
 
@@ -20,7 +21,8 @@ std::vector<DeframerEvent> feedAll(Deframer &d, const Bytes &bytes, std::size_t 
 {
     std::vector<DeframerEvent> all;
     for (std::size_t i = 0; i < bytes.size(); i += chunk) {
-        const auto part = std::span<const std::uint8_t>(bytes).subspan(i, std::min(chunk, bytes.size() - i));
+        const auto part =
+            std::span<const std::uint8_t>(bytes).subspan(i, std::min(chunk, bytes.size() - i));
         auto events = d.feed(part);
         all.insert(all.end(), events.begin(), events.end());
     }
@@ -29,8 +31,9 @@ std::vector<DeframerEvent> feedAll(Deframer &d, const Bytes &bytes, std::size_t 
 
 std::size_t countFrames(const std::vector<DeframerEvent> &events)
 {
-    return static_cast<std::size_t>(std::count_if(events.begin(), events.end(),
-                                                  [](const DeframerEvent &e) { return e.kind == DeframerEvent::Kind::Frame; }));
+    return static_cast<std::size_t>(
+        std::count_if(events.begin(), events.end(),
+                      [](const DeframerEvent &e) { return e.kind == DeframerEvent::Kind::Frame; }));
 }
 
 } // namespace
@@ -95,9 +98,11 @@ TEST(HartDeframer, FrameHiddenInsideAFalseStartIsFound)
     ASSERT_GE(events.size(), 2u);
     EXPECT_EQ(events[0].error.code, DecodeErrc::BadChecksum);
     EXPECT_EQ(countFrames(events), 1u);
-    EXPECT_EQ(std::find_if(events.begin(), events.end(), [](const DeframerEvent &e) {
-                  return e.kind == DeframerEvent::Kind::Frame;
-              })->frame.command, 1);
+    EXPECT_EQ(
+        std::find_if(events.begin(), events.end(),
+                     [](const DeframerEvent &e) { return e.kind == DeframerEvent::Kind::Frame; })
+            ->frame.command,
+        1);
 }
 
 TEST(HartDeframer, InvalidDelimiterAfterPreamblesIsReported)

@@ -68,7 +68,8 @@ TEST(HartDeviceSpecific, LengthErrors)
     EXPECT_EQ(decodeParamAccess(130, false, Bytes{1, 2}).error().code, DecodeErrc::BadLength);
     EXPECT_EQ(decodeParamAccess(130, true, Bytes{1, 2, 3, 4}).error().code, DecodeErrc::BadLength);
     EXPECT_EQ(decodeParamAccess(130, false, Bytes{1, 2, 3, 4}).error().code, DecodeErrc::TooLong);
-    EXPECT_EQ(decodeParamAccess(12, false, Bytes{1, 2, 3}).error().code, DecodeErrc::UnexpectedCommand);
+    EXPECT_EQ(decodeParamAccess(12, false, Bytes{1, 2, 3}).error().code,
+              DecodeErrc::UnexpectedCommand);
     ParamAccess noValue{131, {1, 2, 3}, std::nullopt};
     EXPECT_EQ(encodeParamAccess(noValue, false).error().code, DecodeErrc::BadValue);
 }

@@ -3,9 +3,8 @@
 #include "hart/describe.h"
 #include "hart/frame.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::hart;
@@ -27,8 +26,10 @@ const Address kSd733 = longAddress(0xE3F0, 0x123456);
 TEST(HartFrame, Section441Example1Frames)
 {
     const Bytes data{0xFA, 0x06, 0x00, 0x01, 0xC2};
-    const Bytes request = withPreambles({0x82, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x05, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x18});
-    const Bytes response = withPreambles({0x86, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x07, 0x00, 0x00, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x1E});
+    const Bytes request = withPreambles(
+        {0x82, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x05, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x18});
+    const Bytes response = withPreambles({0x86, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x07, 0x00,
+                                          0x00, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x1E});
 
     const Frame req = makeRequest(kSd733, 131, data);
     EXPECT_EQ(*encodeFrame(req), request);
@@ -93,7 +94,8 @@ TEST(HartFrame, ExpansionBytesAndPhysicalLayerRoundTrip)
 
 TEST(HartFrame, Section23ByteCountAndChecksumErrors)
 {
-    Bytes wire = withPreambles({0x82, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x05, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x18});
+    Bytes wire = withPreambles(
+        {0x82, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x05, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x18});
     Bytes bad = wire;
     bad.back() ^= 0x01;
     EXPECT_EQ(decodeFrame(bad).error().code, DecodeErrc::BadChecksum);
@@ -104,7 +106,8 @@ TEST(HartFrame, Section23ByteCountAndChecksumErrors)
     longer.push_back(0x00);
     EXPECT_EQ(decodeFrame(longer).error().code, DecodeErrc::TooLong);
     // A response needs the two status bytes in its byte count.
-    EXPECT_EQ(decodeFrame(Bytes{0xFF, 0xFF, 0x06, 0x80, 0x00, 0x01, 0x00, 0x87}).error().code, DecodeErrc::BadLength);
+    EXPECT_EQ(decodeFrame(Bytes{0xFF, 0xFF, 0x06, 0x80, 0x00, 0x01, 0x00, 0x87}).error().code,
+              DecodeErrc::BadLength);
     EXPECT_EQ(decodeFrame(Bytes{0xFF, 0xFF, 0x05, 0x80}).error().code, DecodeErrc::BadValue);
     EXPECT_EQ(decodeFrame(Bytes{0xFF, 0xFF}).error().code, DecodeErrc::Truncated);
     EXPECT_EQ(decodeFrame(Bytes{}).error().code, DecodeErrc::Truncated);
@@ -118,7 +121,8 @@ TEST(HartFrame, Section23ByteCountAndChecksumErrors)
 
 TEST(HartFrame, Section441DescribeExample1Response)
 {
-    const Bytes response = withPreambles({0x86, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x07, 0x00, 0x00, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x1E});
+    const Bytes response = withPreambles({0x86, 0xA3, 0xF0, 0x12, 0x34, 0x56, 0x83, 0x07, 0x00,
+                                          0x00, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x1E});
     const Description d = describeFrame(response);
     ASSERT_TRUE(d.ok()) << d.summary.en;
     EXPECT_EQ(d.field("hart.preambles")->length, 5u);
@@ -158,7 +162,8 @@ TEST(HartFrame, DescribeShowsStatusBitsAndErrors)
     EXPECT_EQ(b.field("hart.param.pnu")->value, "8");
     EXPECT_NE(b.field("hart.checksum")->text.en.find("expected"), std::string::npos);
     // Malformed payload: command 131 with 4 data bytes.
-    const Description p = describeFrame(*encodeFrame(makeRequest(kSd733, 131, {0xFA, 0x06, 0x00, 0x01})));
+    const Description p =
+        describeFrame(*encodeFrame(makeRequest(kSd733, 131, {0xFA, 0x06, 0x00, 0x01})));
     EXPECT_FALSE(p.ok());
     EXPECT_EQ(p.error->code, DecodeErrc::BadLength);
     // Garbage and truncation never crash and say what is wrong.

@@ -11,14 +11,13 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <vector>
-
 #include <unistd.h>
+#include <vector>
 
 namespace vt::test {
 
-inline constexpr std::uint32_t kLinktypeRawIp = 101;        // LINKTYPE_RAW: IPv4/IPv6 packets
-inline constexpr std::uint32_t kLinktypeSocketCan = 227;    // LINKTYPE_CAN_SOCKETCAN
+inline constexpr std::uint32_t kLinktypeRawIp = 101;     // LINKTYPE_RAW: IPv4/IPv6 packets
+inline constexpr std::uint32_t kLinktypeSocketCan = 227; // LINKTYPE_CAN_SOCKETCAN
 
 struct CommandResult
 {
@@ -85,7 +84,8 @@ public:
         }
         std::ofstream out(path, std::ios::binary);
         const dev::Bytes &bytes = w.data();
-        out.write(reinterpret_cast<const char *>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        out.write(reinterpret_cast<const char *>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
         return static_cast<bool>(out);
     }
 
@@ -100,7 +100,8 @@ private:
 };
 
 // IPv4 + UDP around `payload` (checksums 0 = not computed, which tshark accepts).
-inline dev::Bytes ipv4Udp(const dev::Bytes &payload, std::uint16_t sourcePort, std::uint16_t destinationPort)
+inline dev::Bytes ipv4Udp(const dev::Bytes &payload, std::uint16_t sourcePort,
+                          std::uint16_t destinationPort)
 {
     dev::ByteWriter w;
     const auto udpLength = static_cast<std::uint16_t>(8 + payload.size());
@@ -116,8 +117,8 @@ class TempFile
 {
 public:
     explicit TempFile(const std::string &stem)
-        : m_path(std::filesystem::temp_directory_path()
-                 / (stem + "_" + std::to_string(::getpid()) + ".pcap"))
+        : m_path(std::filesystem::temp_directory_path() /
+                 (stem + "_" + std::to_string(::getpid()) + ".pcap"))
     {
     }
     ~TempFile()
@@ -136,7 +137,8 @@ inline std::vector<std::vector<std::string>> tsharkFields(const std::filesystem:
                                                           const std::vector<std::string> &fields,
                                                           const std::string &extraArgs, int *status)
 {
-    std::string cmd = tsharkCommand() + " -n -r '" + file.string() + "' " + extraArgs + " -T fields -E header=n";
+    std::string cmd =
+        tsharkCommand() + " -n -r '" + file.string() + "' " + extraArgs + " -T fields -E header=n";
     for (const std::string &f : fields)
         cmd += " -e " + f;
     const CommandResult r = runCommand(cmd);
@@ -150,7 +152,8 @@ inline std::vector<std::vector<std::string>> tsharkFields(const std::filesystem:
         std::size_t start = 0;
         for (;;) {
             const std::size_t tab = line.find('\t', start);
-            row.push_back(line.substr(start, tab == std::string::npos ? std::string::npos : tab - start));
+            row.push_back(
+                line.substr(start, tab == std::string::npos ? std::string::npos : tab - start));
             if (tab == std::string::npos)
                 break;
             start = tab + 1;

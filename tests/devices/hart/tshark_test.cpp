@@ -23,7 +23,12 @@ constexpr std::uint16_t kHartIpPort = 5094;
 Bytes hartIp(const Bytes &pdu, bool response, std::uint16_t sequence)
 {
     ByteWriter w;
-    w.u8(1).u8(response ? 1 : 0).u8(3).u8(0).u16be(sequence).u16be(static_cast<std::uint16_t>(8 + pdu.size()));
+    w.u8(1)
+        .u8(response ? 1 : 0)
+        .u8(3)
+        .u8(0)
+        .u16be(sequence)
+        .u16be(static_cast<std::uint16_t>(8 + pdu.size()));
     w.bytes(pdu);
     return w.take();
 }
@@ -60,25 +65,58 @@ std::vector<Case> cases()
         {"§4.4.1 example 1 request", makeRequest(sd, 131, {0xFA, 0x06, 0x00, 0x01, 0xC2})},
         {"§4.4.1 example 1 response", makeResponse(sd, 131, 0, 0, {0xFA, 0x06, 0x00, 0x01, 0xC2})},
         {"§4.4.1 example 2 request", makeRequest(sd, 132, {0xEE, 0x08, 0x00})},
-        {"§4.4.1 example 2 response", makeResponse(sd, 132, 0, 0, {0xEE, 0x08, 0x00, 0x00, 0x00, 0x00, 0x50})},
+        {"§4.4.1 example 2 response",
+         makeResponse(sd, 132, 0, 0, {0xEE, 0x08, 0x00, 0x00, 0x00, 0x00, 0x50})},
         {"cmd1 response", makeResponse(sd, 1, 0, 0x40, encodePayload(UnitValue{39, 20.0f}))},
         {"cmd3 response", makeResponse(sd, 3, 0, 0, encodePayload(dv))},
-        {"cmd13 response", makeResponse(sd, 13, 0, 0, encodePayload(TagDescriptorDate{"WAGSD733", "WAG ELECTRONIC", {17, 3, 124}}))},
+        {"cmd13 response", makeResponse(sd, 13, 0, 0,
+                                        encodePayload(TagDescriptorDate{
+                                            "WAGSD733", "WAG ELECTRONIC", {17, 3, 124}}))},
         {"rc 5 with status bits", makeResponse(sd, 131, 5, 0x30)},
     };
 }
 
 const std::vector<std::string> kFields{
-    "hart_ip.pt.command",          "hart_ip.pt.length",        "hart_ip.pt.response_code",
-    "hart_ip.pt.device_status",    "hart_ip.pt.checksum",      "hart_ip.pt.long_address",
-    "hart_ip.pt.short_addr",       "hart_ip.pt.payload",       "hart_ip.pt.rsp.device_id",
-    "hart_ip.pt.rsp.manufacturer_Id", "hart_ip.pt.rsp.expanded_device_type", "hart_ip.pt.rsp.pv_units",
-    "hart_ip.pt.rsp.pv",           "hart_ip.pt.rsp.tag",       "hart_ip.pt.rsp.descriptor",
-    "hart_ip.pt.rsp.year",         "hart_ip.pt.rsp.qv",        "hart_ip.pt.delimiter",
+    "hart_ip.pt.command",
+    "hart_ip.pt.length",
+    "hart_ip.pt.response_code",
+    "hart_ip.pt.device_status",
+    "hart_ip.pt.checksum",
+    "hart_ip.pt.long_address",
+    "hart_ip.pt.short_addr",
+    "hart_ip.pt.payload",
+    "hart_ip.pt.rsp.device_id",
+    "hart_ip.pt.rsp.manufacturer_Id",
+    "hart_ip.pt.rsp.expanded_device_type",
+    "hart_ip.pt.rsp.pv_units",
+    "hart_ip.pt.rsp.pv",
+    "hart_ip.pt.rsp.tag",
+    "hart_ip.pt.rsp.descriptor",
+    "hart_ip.pt.rsp.year",
+    "hart_ip.pt.rsp.qv",
+    "hart_ip.pt.delimiter",
 };
 // Column of each field in kFields.
-enum Col { kCommand, kLength, kRc, kStatus, kChecksum, kLongAddr, kShortAddr, kPayload, kDeviceId, kMfr,
-           kDevType, kPvUnits, kPv, kTag, kDescriptor, kYear, kQv, kDelimiter };
+enum Col {
+    kCommand,
+    kLength,
+    kRc,
+    kStatus,
+    kChecksum,
+    kLongAddr,
+    kShortAddr,
+    kPayload,
+    kDeviceId,
+    kMfr,
+    kDevType,
+    kPvUnits,
+    kPv,
+    kTag,
+    kDescriptor,
+    kYear,
+    kQv,
+    kDelimiter
+};
 
 } // namespace
 
@@ -116,7 +154,8 @@ TEST(HartTshark, Section23FramesMatchWiresharkHartIp)
         const Frame &f = *ours;
         EXPECT_EQ(number(row[kDelimiter]), delimiterOf(f));
         EXPECT_EQ(number(row[kCommand]), f.command);
-        EXPECT_EQ(number(row[kLength]), static_cast<long>(f.data.size() + (f.isResponse() ? 2 : 0)));
+        EXPECT_EQ(number(row[kLength]),
+                  static_cast<long>(f.data.size() + (f.isResponse() ? 2 : 0)));
         EXPECT_EQ(number(row[kChecksum]), wires[i].back());
         if (f.isResponse()) {
             EXPECT_EQ(number(row[kRc]), f.responseCode);

@@ -3,9 +3,8 @@
 #include "hart/describe.h"
 #include "hart/universal.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::hart;
@@ -37,7 +36,8 @@ Identity sd733()
 // §5.1.1 command 0: bytes 0..21 of a HART 7 device.
 TEST(HartUniversal, Section511Command0Identity)
 {
-    const Bytes data{254, 0xE3, 0xF0, 5, 7, 1, 2, 0x08, 0, 0x12, 0x34, 0x56, 5, 4, 0, 3, 0, 0x61, 0x03, 0x61, 0x03, 0x85};
+    const Bytes data{254,  0xE3, 0xF0, 5, 7, 1, 2,    0x08, 0,    0x12, 0x34,
+                     0x56, 5,    4,    0, 3, 0, 0x61, 0x03, 0x61, 0x03, 0x85};
     EXPECT_EQ(encodePayload(sd733()), data);
     auto p = decodeUniversal(0, true, data);
     ASSERT_TRUE(p.ok());
@@ -107,7 +107,8 @@ TEST(HartUniversal, Section512To514FloatsBigEndian)
 
 TEST(HartUniversal, Section518Command9Slots)
 {
-    EXPECT_EQ(std::get<DeviceVariableCodes>(*decodeUniversal(9, false, Bytes{0, 1, 2})).codes, (Bytes{0, 1, 2}));
+    EXPECT_EQ(std::get<DeviceVariableCodes>(*decodeUniversal(9, false, Bytes{0, 1, 2})).codes,
+              (Bytes{0, 1, 2}));
     DeviceVariables dv;
     dv.extendedStatus = 0x02;
     dv.slots = {{0, 64, 49, 12.5f, 0xC0}, {1, 0, 57, 99.0f, 0xC0}};
@@ -123,17 +124,26 @@ TEST(HartUniversal, Section515To522OtherCommands)
     EXPECT_EQ(encodePayload(lc), (Bytes{3, 0}));
     EXPECT_EQ(std::get<LoopConfiguration>(*decodeUniversal(6, false, Bytes{3, 0})), lc);
     EXPECT_EQ(std::get<LoopConfiguration>(*decodeUniversal(6, false, Bytes{3})).loopCurrentMode, 1);
-    EXPECT_EQ(std::get<VariableClassifications>(*decodeUniversal(8, true, Bytes{64, 0, 0, 0})).codes[0], 64);
-    EXPECT_EQ(std::get<Message>(*decodeUniversal(12, true, encodePayload(Message{"HELLO WORLD"}))).text, "HELLO WORLD");
-    EXPECT_EQ(std::get<FinalAssemblyNumber>(*decodeUniversal(16, true, Bytes{0x01, 0x02, 0x03})).number, 0x010203u);
+    EXPECT_EQ(
+        std::get<VariableClassifications>(*decodeUniversal(8, true, Bytes{64, 0, 0, 0})).codes[0],
+        64);
+    EXPECT_EQ(
+        std::get<Message>(*decodeUniversal(12, true, encodePayload(Message{"HELLO WORLD"}))).text,
+        "HELLO WORLD");
+    EXPECT_EQ(
+        std::get<FinalAssemblyNumber>(*decodeUniversal(16, true, Bytes{0x01, 0x02, 0x03})).number,
+        0x010203u);
     const LongTag lt{"Wandfluh AG – Ölventil"}; // '–' is not Latin-1 → '?'
     const Bytes ltBytes = encodePayload(lt);
     ASSERT_EQ(ltBytes.size(), 32u);
-    EXPECT_EQ(std::get<LongTag>(*decodeUniversal(22, true, ltBytes)).text, "Wandfluh AG ? Ölventil");
-    EXPECT_EQ(std::get<ConfigChangeCounter>(*decodeUniversal(38, false, Bytes{})).counter, std::nullopt);
+    EXPECT_EQ(std::get<LongTag>(*decodeUniversal(22, true, ltBytes)).text,
+              "Wandfluh AG ? Ölventil");
+    EXPECT_EQ(std::get<ConfigChangeCounter>(*decodeUniversal(38, false, Bytes{})).counter,
+              std::nullopt);
     EXPECT_EQ(std::get<ConfigChangeCounter>(*decodeUniversal(38, true, Bytes{0, 7})).counter, 7);
     EXPECT_EQ(decodeUniversal(38, true, Bytes{0}).error().code, DecodeErrc::BadLength);
-    const AdditionalStatus st = std::get<AdditionalStatus>(*decodeUniversal(48, true, Bytes(9, 0x01)));
+    const AdditionalStatus st =
+        std::get<AdditionalStatus>(*decodeUniversal(48, true, Bytes(9, 0x01)));
     EXPECT_EQ(st.bytes.size(), 9u);
     EXPECT_EQ(st.operatingMode(), 1);
     EXPECT_EQ(decodeUniversal(4, false, {}).error().code, DecodeErrc::UnexpectedCommand);
@@ -160,7 +170,8 @@ TEST(HartUniversal, DescribeCommand0Response)
     for (const FieldSpan &fs : d.fields)
         EXPECT_TRUE(fs.text.complete()) << fs.key;
     // A truncated identity is an error, shown as far as it goes.
-    const Description t = describeFrame(*encodeFrame(makeResponse(shortAddress(0), 0, 0, 0, Bytes(5, 1))));
+    const Description t =
+        describeFrame(*encodeFrame(makeResponse(shortAddress(0), 0, 0, 0, Bytes(5, 1))));
     EXPECT_FALSE(t.ok());
     EXPECT_NE(t.field("hart.cmd0.min_request_preambles"), nullptr);
 }

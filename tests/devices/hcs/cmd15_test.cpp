@@ -53,7 +53,9 @@ TEST(HcsCmd15, RoundTripsEveryFieldOfEveryModule)
 {
     CyclicRequest q{0xA5, {}};
     for (int i = 0; i < 8; ++i)
-        q.modules.push_back({static_cast<std::uint8_t>(0x80 | i), static_cast<std::int16_t>(-32768 + i), static_cast<std::int16_t>(32767 - i)});
+        q.modules.push_back({static_cast<std::uint8_t>(0x80 | i),
+                             static_cast<std::int16_t>(-32768 + i),
+                             static_cast<std::int16_t>(32767 - i)});
     auto bytes = encode(q, Family::Opat);
     ASSERT_TRUE(bytes.ok());
     EXPECT_EQ(bytes->size(), 43u);

@@ -9,7 +9,8 @@ TEST(HcsCorpus, SeedsAreTheWorkedExamples)
 {
     for (const Example &ex : allExamples()) {
         vt::dev::Bytes seed;
-        seed.push_back(static_cast<std::uint8_t>((ex.family == Family::Opat ? 1 : 0) | (ex.direction == Direction::Response ? 2 : 0)));
+        seed.push_back(static_cast<std::uint8_t>((ex.family == Family::Opat ? 1 : 0) |
+                                                 (ex.direction == Direction::Response ? 2 : 0)));
         seed.insert(seed.end(), ex.bytes.begin(), ex.bytes.end());
         vt::test::checkOrWriteSeed("fuzz_hcs_telegram", ex.name, seed);
     }

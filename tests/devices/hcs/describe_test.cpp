@@ -1,12 +1,10 @@
 // hcs::describe(): the worked examples' fields named as the manuals name them, in both languages,
 // with the CMD 15 meaning that belongs to the software version and mode.
+#include "hcs/describe.h"
 #include "worked_examples.h"
 
-#include "hcs/describe.h"
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::hcs;
@@ -38,7 +36,8 @@ TEST(HcsDescribe, OpatSec2_7_WriteC107NamesEveryField)
         return std::nullopt;
     };
     o.parameters.cook = [](std::uint16_t, std::uint16_t raw) -> std::optional<LocalText> {
-        return LocalText{std::to_string(raw / 1000) + ".000 V", std::to_string(raw / 1000) + ",000 V"};
+        return LocalText{std::to_string(raw / 1000) + ".000 V",
+                         std::to_string(raw / 1000) + ",000 V"};
     };
     const Description d = describe(kOpat27Write, o);
     ASSERT_TRUE(d.ok());
@@ -109,7 +108,8 @@ TEST(HcsDescribe, OpatSec3_3_CyclicErrorUsesTheCmd15Table)
     ASSERT_NE(exce, nullptr);
     EXPECT_TRUE(contains(exce->text.en, "timeout slave, address wrong or not installed"));
     const Description dma = describe(kDma43CyclicError, opts(Family::Dma, Direction::Response));
-    EXPECT_TRUE(contains(dma.field("EXCE")->text.de, "Timeout Slave, Adresse falsch oder nicht installiert"));
+    EXPECT_TRUE(contains(dma.field("EXCE")->text.de,
+                         "Timeout Slave, Adresse falsch oder nicht installiert"));
 }
 
 TEST(HcsDescribe, OpatSec3_4_1_DefaultProfileIsStatedAndNamesD111)
@@ -124,7 +124,8 @@ TEST(HcsDescribe, OpatSec3_4_1_DefaultProfileIsStatedAndNamesD111)
     const FieldSpan *v1 = d.field("DAT.2");
     ASSERT_NE(v1, nullptr);
     EXPECT_EQ(v1->value, "1000");
-    EXPECT_TRUE(contains(v1->text.en, "VALUE1 = d1.11 actual value, feedback value (branch 1): 1.000 V"));
+    EXPECT_TRUE(
+        contains(v1->text.en, "VALUE1 = d1.11 actual value, feedback value (branch 1): 1.000 V"));
     EXPECT_TRUE(contains(v1->text.de, "d1.11 Aktueller Istwert (Zweig 1): 1,000 V"));
     const FieldSpan *v2 = d.field("DAT.3");
     ASSERT_NE(v2, nullptr);
@@ -171,7 +172,8 @@ TEST(HcsDescribe, DmaSec4_4_2_RequestUsesA101AndA201)
     const Description d = describe(kDma442Request, opts(Family::Dma, Direction::Request));
     ASSERT_TRUE(d.ok());
     EXPECT_EQ(d.field("DAT3.2")->value, "-3000");
-    // DMA Profibus Anleitung R2.9: VALUE2 of mode 1 is A2.01 (not A1.02 as the Profinet example prints).
+    // DMA Profibus Anleitung R2.9: VALUE2 of mode 1 is A2.01 (not A1.02 as the Profinet example
+    // prints).
     EXPECT_TRUE(contains(d.field("DAT1.3")->text.en, "A2.01"));
 }
 
@@ -180,13 +182,15 @@ TEST(HcsDescribe, VersionAndModeChangeWhatTheValuesMean)
     DescribeOptions o = opts(Family::Opat, Direction::Response);
     o.profile = Profile::OpatV34Mode6;
     Description d = describe(kOpat341Response, o);
-    EXPECT_TRUE(contains(d.field("DAT.3")->text.en, "VALUE2 = d2.11 actual value, feedback value (branch 2)"));
+    EXPECT_TRUE(contains(d.field("DAT.3")->text.en,
+                         "VALUE2 = d2.11 actual value, feedback value (branch 2)"));
     EXPECT_FALSE(contains(d.field("profile")->text.en, "assumed"));
     o.family = Family::Dma;
     o.profile = profileFor(Family::Dma, 32, 8);
     d = describe(kDma441Request, DescribeOptions{o.family, Direction::Request, o.profile});
     EXPECT_TRUE(contains(d.field("DAT1.3")->text.en, "A2.01 set value input (bus) for branch 2"));
-    d = describe(kDma441Request, DescribeOptions{Family::Dma, Direction::Request, Profile::DmaV32Mode6});
+    d = describe(kDma441Request,
+                 DescribeOptions{Family::Dma, Direction::Request, Profile::DmaV32Mode6});
     EXPECT_TRUE(contains(d.field("DAT1.3")->text.de, "A2.02 Istwert Eingang (Bus) für Zweig 2"));
 }
 
@@ -194,7 +198,8 @@ TEST(HcsDescribe, ControlBitsPerVersion)
 {
     // Control 0x91 = BUS_DISABLE + Din_2 + Din_1.
     const Bytes q{0x10, 0x01, 0x0F, 0x91, 0x00, 0x00, 0x00, 0x00};
-    Description d = describe(q, DescribeOptions{Family::Dma, Direction::Request, Profile::DmaV32Mode34});
+    Description d =
+        describe(q, DescribeOptions{Family::Dma, Direction::Request, Profile::DmaV32Mode34});
     ASSERT_NE(d.field("DAT1.1.Din_1"), nullptr);
     ASSERT_NE(d.field("DAT1.1.Din_2"), nullptr);
     EXPECT_FALSE(contains(d.field("DAT1.1.Din_2")->text.en, "reserved"));

@@ -1,9 +1,8 @@
 // DMA Profinet manual (Rev R1.2) §3.3–§4.4.2 and DMA Profibus Anleitung (Rev R3.1) §3.3–§4.4.2
 // worked examples: the two manuals print identical bytes, so each test covers both sections.
-#include "worked_examples.h"
-
 #include "hcs/cmd15.h"
 #include "hcs/telegram.h"
+#include "worked_examples.h"
 
 #include <gtest/gtest.h>
 
@@ -70,7 +69,8 @@ TEST(HcsDma, ProfinetSec3_8_ProfibusSec3_8_SetValues)
         const Bytes &bytes;
         std::int16_t value;
     };
-    for (const Case &c : {Case{kDma38Zero, 0}, Case{kDma38Five, 5000}, Case{kDma38Max, 9999}, Case{kDma38Min, -9999}}) {
+    for (const Case &c : {Case{kDma38Zero, 0}, Case{kDma38Five, 5000}, Case{kDma38Max, 9999},
+                          Case{kDma38Min, -9999}}) {
         const WriteRequest q{0x12, 0x01, 0x0027, asRaw(c.value)};
         EXPECT_EQ(encode(q), c.bytes);
         auto d = decodeRequest(c.bytes, kDma);
@@ -116,9 +116,14 @@ TEST(HcsDma, ProfinetSec4_4_2_ProfibusSec4_4_2_ThreeModules)
     auto dq = decodeCyclicRequest(kDma442Request, kDma);
     ASSERT_TRUE(dq.ok());
     EXPECT_EQ(*dq, q);
-    // The tables number the response bytes 0,1,2,3,3,4,5,6,7 (byte 3 twice); the telegram has 9 bytes.
-    const CyclicResponse expected[] = {{0x23, 1, 0x4000, 0, 270}, {0x24, 2, 0x4000, 0, 540}, {0x25, 3, 0x4000, 810, 0}, {0x26, 1, 0x4000, 0, 270}};
-    const Bytes *frames[] = {&kDma442Response1, &kDma442Response2, &kDma442Response3, &kDma442Response1Again};
+    // The tables number the response bytes 0,1,2,3,3,4,5,6,7 (byte 3 twice); the telegram has 9
+    // bytes.
+    const CyclicResponse expected[] = {{0x23, 1, 0x4000, 0, 270},
+                                       {0x24, 2, 0x4000, 0, 540},
+                                       {0x25, 3, 0x4000, 810, 0},
+                                       {0x26, 1, 0x4000, 0, 270}};
+    const Bytes *frames[] = {&kDma442Response1, &kDma442Response2, &kDma442Response3,
+                             &kDma442Response1Again};
     for (int i = 0; i < 4; ++i) {
         EXPECT_EQ(encode(expected[i]), *frames[i]);
         auto d = decodeCyclicResponse(*frames[i], kDma);

@@ -31,10 +31,16 @@ TEST(HcsNodeRules, NotesForWhatTheNodeRefuses)
     EXPECT_TRUE(nodeRuleNotes(Request{ReadRequest{1, 1, 7, 8}}, Family::Dma).empty());
     EXPECT_EQ(nodeRuleNotes(Request{ReadRequest{1, 1, 7, 9}}, Family::Dma).size(), 1u);
     EXPECT_EQ(nodeRuleNotes(Request{ReadRequest{1, 1, 7, 0}}, Family::Dma).size(), 1u);
-    EXPECT_EQ(nodeRuleNotes(Request{WriteRequest{1, 0, 7, 0}}, Family::Dma).size(), 1u);  // DMA SADR 1..32
-    EXPECT_TRUE(nodeRuleNotes(Request{WriteRequest{1, 0, 7, 0}}, Family::Opat).empty());  // OPAT master
-    EXPECT_EQ(nodeRuleNotes(Request{WriteRequest{1, 8, 7, 0}}, Family::Opat).size(), 1u); // OPAT 0..7
-    EXPECT_EQ(nodeRuleNotes(Response{ReadResponse{1, 1, std::vector<std::uint16_t>(9)}}, Family::Dma).size(), 1u);
+    EXPECT_EQ(nodeRuleNotes(Request{WriteRequest{1, 0, 7, 0}}, Family::Dma).size(),
+              1u); // DMA SADR 1..32
+    EXPECT_TRUE(
+        nodeRuleNotes(Request{WriteRequest{1, 0, 7, 0}}, Family::Opat).empty()); // OPAT master
+    EXPECT_EQ(nodeRuleNotes(Request{WriteRequest{1, 8, 7, 0}}, Family::Opat).size(),
+              1u); // OPAT 0..7
+    EXPECT_EQ(
+        nodeRuleNotes(Response{ReadResponse{1, 1, std::vector<std::uint16_t>(9)}}, Family::Dma)
+            .size(),
+        1u);
     EXPECT_EQ(nodeRuleNotes(Response{CyclicResponse{1, 6, 0, 0, 0}}, Family::Dma).size(), 1u);
     EXPECT_EQ(nodeRuleNotes(Response{ExceptionResponse{1, 1, 3, 7}}, Family::Dma).size(), 1u);
     EXPECT_TRUE(nodeRuleNotes(Response{ExceptionResponse{1, 1, 3, 7}}, Family::Opat).empty());

@@ -1,8 +1,7 @@
 // OPAT manual (Rev R2.1) worked examples, byte-exact in both directions (§2.3–§3.4.2).
-#include "worked_examples.h"
-
 #include "hcs/cmd15.h"
 #include "hcs/telegram.h"
+#include "worked_examples.h"
 
 #include <gtest/gtest.h>
 
@@ -96,7 +95,8 @@ TEST(HcsOpat, Sec2_8_SetValuesViaBus)
         std::int16_t value;
     };
     // 0.000 V, 5.000 V = 0x1388, 9.999 V = 0x270F, -9.999 V = 0xD8F1.
-    for (const Case &c : {Case{kOpat28Zero, 0}, Case{kOpat28Five, 5000}, Case{kOpat28Max, 9999}, Case{kOpat28Min, -9999}}) {
+    for (const Case &c : {Case{kOpat28Zero, 0}, Case{kOpat28Five, 5000}, Case{kOpat28Max, 9999},
+                          Case{kOpat28Min, -9999}}) {
         const WriteRequest q{0x12, 0x00, 0x0027, asRaw(c.value)};
         EXPECT_EQ(encode(q), c.bytes);
         auto d = decodeWriteRequest(c.bytes, kOpat);
@@ -155,8 +155,12 @@ TEST(HcsOpat, Sec3_4_2_MasterAndTwoSlavesRequest)
 TEST(HcsOpat, Sec3_4_2_MultiplexedResponses)
 {
     // The node answers master, slave 1, slave 2, master again as TADR changes 0x23..0x26.
-    const CyclicResponse expected[] = {{0x23, 0, 0x4000, 1000, 0}, {0x24, 1, 0x4000, 2000, 0}, {0x25, 2, 0x4000, -3000, 0}, {0x26, 0, 0x4000, 1000, 0}};
-    const Bytes *frames[] = {&kOpat342ResponseMaster, &kOpat342ResponseSlave1, &kOpat342ResponseSlave2, &kOpat342ResponseMasterAgain};
+    const CyclicResponse expected[] = {{0x23, 0, 0x4000, 1000, 0},
+                                       {0x24, 1, 0x4000, 2000, 0},
+                                       {0x25, 2, 0x4000, -3000, 0},
+                                       {0x26, 0, 0x4000, 1000, 0}};
+    const Bytes *frames[] = {&kOpat342ResponseMaster, &kOpat342ResponseSlave1,
+                             &kOpat342ResponseSlave2, &kOpat342ResponseMasterAgain};
     for (int i = 0; i < 4; ++i) {
         EXPECT_EQ(encode(expected[i]), *frames[i]);
         auto d = decodeCyclicResponse(*frames[i], kOpat);

@@ -1,12 +1,10 @@
 // Truncated, padded and garbage telegrams give typed errors at the right offset; decoding,
 // describing and re-encoding are total on arbitrary input and agree with each other.
-#include "worked_examples.h"
-
 #include "hcs/describe.h"
 #include "hcs/telegram.h"
+#include "worked_examples.h"
 
 #include <gtest/gtest.h>
-
 #include <random>
 
 using namespace vt::dev;
@@ -15,7 +13,8 @@ using namespace vt::test::hcs_examples;
 
 namespace {
 
-Result<std::monostate, DecodeError> decodeAny(std::span<const std::uint8_t> bytes, Family family, Direction direction, bool padding = false)
+Result<std::monostate, DecodeError> decodeAny(std::span<const std::uint8_t> bytes, Family family,
+                                              Direction direction, bool padding = false)
 {
     const DecodeOptions o{family, padding};
     if (direction == Direction::Request) {

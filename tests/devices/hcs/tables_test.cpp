@@ -23,11 +23,13 @@ TEST(HcsTables, OpatSec2_3_Sec2_6_Sec3_3_ExceptionCodes1To12)
     }
     EXPECT_EQ(exceptionText(Family::Opat, kCmdRead, 3)->en, "CNT == 0 or CNT > 16 (0x10)");
     EXPECT_EQ(exceptionText(Family::Opat, kCmdWrite, 3)->en, "wrong data value");
-    EXPECT_EQ(exceptionText(Family::Opat, kCmdRead, 6)->en, "internal checksum error (CAN connection)");
+    EXPECT_EQ(exceptionText(Family::Opat, kCmdRead, 6)->en,
+              "internal checksum error (CAN connection)");
     // §3.3 differs in 5 and 6.
     EXPECT_EQ(exceptionText(Family::Opat, kCmdCyclic, 5)->en, "timeout (CAN connection)");
     EXPECT_EQ(exceptionText(Family::Opat, kCmdCyclic, 6)->en, "internal checksum error (Modbus)");
-    EXPECT_EQ(exceptionText(Family::Opat, kCmdCyclic, 12)->en, "two or more slaves have the same slave address");
+    EXPECT_EQ(exceptionText(Family::Opat, kCmdCyclic, 12)->en,
+              "two or more slaves have the same slave address");
 }
 
 TEST(HcsTables, DmaProfinetSec3_3_Sec3_6_Sec4_3_ExceptionCodes)
@@ -90,9 +92,11 @@ TEST(HcsTables, ProfilesCoverEveryDocumentedVersionAndMode)
     for (const ProfileInfo &p : allProfiles()) {
         EXPECT_EQ(profileByKey(p.key), p.profile);
         EXPECT_EQ(&profileInfo(p.profile), &p);
-        for (const LocalText *t : {&p.title, &p.request1.text, &p.request2.text, &p.response1.text, &p.response2.text})
+        for (const LocalText *t :
+             {&p.title, &p.request1.text, &p.request2.text, &p.response1.text, &p.response2.text})
             EXPECT_TRUE(t->complete()) << p.key;
-        for (const auto &bits : {controlBits(p.profile), statusHighBits(p.profile), statusLowBits(p.profile), statusLowBits(p.profile, true)})
+        for (const auto &bits : {controlBits(p.profile), statusHighBits(p.profile),
+                                 statusLowBits(p.profile), statusLowBits(p.profile, true)})
             for (const BitMeaning &b : bits)
                 EXPECT_TRUE(b.text.complete()) << p.key << " " << b.name;
     }
@@ -111,8 +115,8 @@ TEST(HcsTables, BitsPerVersion)
                 mask = static_cast<std::uint8_t>(mask | b.mask);
         return mask;
     };
-    // DMA Profibus Anleitung §4.5.2 (V15): only BUS_DISABLE; §4.5.4 (V32): Din_1, TST_CMP, Din_2, BUS_DISABLE;
-    // DMA Profinet manual §4.5.3 (V51): Din_2 reserved.
+    // DMA Profibus Anleitung §4.5.2 (V15): only BUS_DISABLE; §4.5.4 (V32): Din_1, TST_CMP, Din_2,
+    // BUS_DISABLE; DMA Profinet manual §4.5.3 (V51): Din_2 reserved.
     EXPECT_EQ(used(controlBits(Profile::DmaV15Mode1)), 0x80);
     EXPECT_EQ(used(controlBits(Profile::DmaV32Mode34)), 0x95);
     EXPECT_EQ(used(controlBits(Profile::DmaV51Mode34)), 0x85);
@@ -123,7 +127,8 @@ TEST(HcsTables, BitsPerVersion)
     EXPECT_EQ(statusLowBits(Profile::OpatV34Mode34)[1].name, "Dout_1");
     EXPECT_EQ(statusLowBits(Profile::OpatV34Mode34, true)[1].name, "DKOMP_1");
     EXPECT_EQ(statusLowBits(Profile::OpatV34Mode34, true)[6].name, "Dout_2");
-    EXPECT_EQ(statusLowBits(Profile::DmaV32Mode34, true)[1].name, "Dout_1"); // DMA: no alternative order
+    EXPECT_EQ(statusLowBits(Profile::DmaV32Mode34, true)[1].name,
+              "Dout_1"); // DMA: no alternative order
 }
 
 TEST(HcsTables, DecodeStatusSplitsErrorNumberAndSignals)

@@ -1,9 +1,8 @@
 // Streaming de-framers: frames split over many reads, several frames per read, garbage between
 // frames (RTU resynchronises by CRC), and the bounded MBAP length for TCP.
-#include "modbus_vectors.h"
-
 #include "modbus/deframer.h"
 #include "modbus/rtu.h"
+#include "modbus_vectors.h"
 
 #include <gtest/gtest.h>
 
@@ -61,7 +60,8 @@ TEST(ModbusRtuDeframer, GarbageBeforeAFrame)
 
 TEST(ModbusRtuDeframer, GarbageThatLooksLikeALongFrameHeader)
 {
-    // "01 03 FA" announces a 255-byte FC 3 response; the real answer behind it must not wait for that.
+    // "01 03 FA" announces a 255-byte FC 3 response; the real answer behind it must not wait for
+    // that.
     RtuDeframer d(Direction::Response);
     const Bytes garbage{0x01, 0x03, 0xFA};
     auto frames = d.feed(garbage);
@@ -127,7 +127,8 @@ TEST(ModbusRtuDeframer, DirectionDecidesTheLayout)
 
 TEST(ModbusRtuDeframer, LongestResponseByteByByte)
 {
-    const Bytes big = encodeRtu(RtuResponse{1, ReadResponse{std::vector<std::uint16_t>(125, 0x0103)}}).value();
+    const Bytes big =
+        encodeRtu(RtuResponse{1, ReadResponse{std::vector<std::uint16_t>(125, 0x0103)}}).value();
     RtuDeframer d(Direction::Response);
     std::vector<Bytes> got;
     for (std::uint8_t b : big)
@@ -156,7 +157,8 @@ TEST(ModbusTcpDeframer, SplitAndMultipleFrames)
 TEST(ModbusTcpDeframer, OversizedLengthLatchesUntilReset)
 {
     TcpDeframer d;
-    const Bytes huge{0x00, 0x01, 0x00, 0x00, 0x01, 0x05, 0x01}; // length 261: ADU would be 267 bytes
+    const Bytes huge{0x00, 0x01, 0x00, 0x00,
+                     0x01, 0x05, 0x01}; // length 261: ADU would be 267 bytes
     EXPECT_TRUE(d.feed(concat({kTcpReadD107, huge})).size() == 1u);
     ASSERT_TRUE(d.error());
     EXPECT_EQ(d.error()->code, DecodeErrc::BadLength);

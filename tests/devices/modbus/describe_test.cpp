@@ -1,12 +1,10 @@
-// modbus::describeRtu / describeTcp: fields named for the inspector, registers as HCS parameter IDs,
-// exception codes with their HCS meaning, in both languages.
+// modbus::describeRtu / describeTcp: fields named for the inspector, registers as HCS parameter
+// IDs, exception codes with their HCS meaning, in both languages.
+#include "modbus/describe.h"
 #include "modbus_vectors.h"
 
-#include "modbus/describe.h"
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::modbus;
@@ -73,7 +71,8 @@ TEST(ModbusDescribe, ExceptionWithHcsMeaning)
     const Description d = describeRtu(kRtuReadWrongId, o);
     ASSERT_TRUE(d.ok());
     EXPECT_TRUE(contains(d.field("pdu.function")->text.en, "exception response to function 3"));
-    EXPECT_TRUE(contains(d.field("pdu.exception")->text.en, "illegal data address — HCS: wrong ID"));
+    EXPECT_TRUE(
+        contains(d.field("pdu.exception")->text.en, "illegal data address — HCS: wrong ID"));
     o.family = hcs::Family::Opat;
     const Description w = describeRtu(kRtuWriteWrongData, o);
     EXPECT_TRUE(contains(w.field("pdu.exception")->text.de, "HCS: Falscher Datenwert"));
@@ -113,7 +112,8 @@ TEST(ModbusDescribe, TcpHeaderFields)
 
 TEST(ModbusDescribe, TruncatedTcpDescribesTheHeader)
 {
-    const Description d = describeTcp(std::span<const std::uint8_t>(kTcpReadD107).first(9), opts(Direction::Request));
+    const Description d =
+        describeTcp(std::span<const std::uint8_t>(kTcpReadD107).first(9), opts(Direction::Request));
     ASSERT_FALSE(d.ok());
     EXPECT_EQ(d.error->code, DecodeErrc::Truncated);
     EXPECT_EQ(d.error->offset, 9u);

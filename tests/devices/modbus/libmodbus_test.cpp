@@ -1,29 +1,24 @@
 // Cross-check against libmodbus, a real Modbus peer: libmodbus talks to our codec over a pty (RTU)
 // and a loopback socket (TCP), in both roles. Every wait is a poll() with a 2 s bound; no sleeps.
-#include "modbus_vectors.h"
-
 #include "modbus/deframer.h"
 #include "modbus/exceptions.h"
 #include "modbus/rtu.h"
 #include "modbus/tcp.h"
-
-#include <gtest/gtest.h>
-
-#include <modbus.h>
+#include "modbus_vectors.h"
+#include "pty_support.h"
 
 #include <arpa/inet.h>
-#include <fcntl.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdlib>
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <modbus.h>
+#include <netinet/in.h>
+#include <poll.h>
 #include <string>
+#include <sys/socket.h>
 #include <thread>
-
-#include "pty_support.h"
+#include <unistd.h>
 
 using namespace vt::dev;
 using namespace vt::dev::modbus;
@@ -37,8 +32,7 @@ using vt::test::Pty;
 using vt::test::writeAll;
 
 // Reads until `deframer` yields one frame or the bound expires.
-template <typename Deframer>
-std::optional<Bytes> readFrame(int fd, Deframer &deframer)
+template<typename Deframer> std::optional<Bytes> readFrame(int fd, Deframer &deframer)
 {
     for (;;) {
         pollfd p{fd, POLLIN, 0};
@@ -48,7 +42,8 @@ std::optional<Bytes> readFrame(int fd, Deframer &deframer)
         const ssize_t n = read(fd, buf, sizeof buf);
         if (n <= 0)
             return std::nullopt;
-        auto frames = deframer.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)));
+        auto frames =
+            deframer.feed(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)));
         if (!frames.empty())
             return frames.front();
     }
@@ -149,9 +144,11 @@ TEST(ModbusLibmodbus, RtuServerAnswersOurRequests)
         RtuResponse expected;
     };
     const Case cases[] = {
-        {{1, ReadRequest{0x0007, 7}}, {1, ReadResponse{{0x0107, 0x0108, 0x0109, 0x010A, 0x010B, 0x010C, 0x010D}}}},
+        {{1, ReadRequest{0x0007, 7}},
+         {1, ReadResponse{{0x0107, 0x0108, 0x0109, 0x010A, 0x010B, 0x010C, 0x010D}}}},
         {{1, WriteRequest{0x0030, 1000}}, {1, WriteResponse{0x0030, 1000}}},
-        {{1, ReadRequest{0x003E, 4}}, {1, ExceptionResponse{3, 2}}}, // past the map: illegal data address
+        {{1, ReadRequest{0x003E, 4}},
+         {1, ExceptionResponse{3, 2}}}, // past the map: illegal data address
     };
     for (const Case &c : cases) {
         ASSERT_TRUE(writeAll(pty.fd(), encodeRtu(c.request).value()));
@@ -203,7 +200,9 @@ TEST(ModbusLibmodbus, TcpClientReadsOurResponse)
             auto q = decodeTcpRequest(*frame);
             if (q.ok()) {
                 request = *q;
-                writeAll(conn, encodeTcp(TcpResponse{q->transaction, q->unit, ReadResponse{{0x0133, 0xFFFF}}}).value());
+                writeAll(conn, encodeTcp(TcpResponse{q->transaction, q->unit,
+                                                     ReadResponse{{0x0133, 0xFFFF}}})
+                                   .value());
             }
         }
         close(conn);

@@ -30,9 +30,12 @@ inline const Bytes kRtuWriteWrongData{0x01, 0x86, 0x03, 0x02, 0x61};
 // ARCHITECTURE.md "Monitor": the d-block 0x07..0x0D in one request (7 registers).
 inline const Bytes kRtuReadDBlock{0x01, 0x03, 0x00, 0x07, 0x00, 0x07, 0xB5, 0xC9};
 // Modbus TCP, transaction 1, unit 1: the same read and its answer.
-inline const Bytes kTcpReadD107{0x00, 0x01, 0x00, 0x00, 0x00, 0x06, 0x01, 0x03, 0x00, 0x07, 0x00, 0x01};
-inline const Bytes kTcpReadD107Response{0x00, 0x01, 0x00, 0x00, 0x00, 0x05, 0x01, 0x03, 0x02, 0x01, 0x33};
-inline const Bytes kTcpWriteC107{0x00, 0x02, 0x00, 0x00, 0x00, 0x06, 0x01, 0x06, 0x00, 0x30, 0x03, 0xE8};
+inline const Bytes kTcpReadD107{0x00, 0x01, 0x00, 0x00, 0x00, 0x06,
+                                0x01, 0x03, 0x00, 0x07, 0x00, 0x01};
+inline const Bytes kTcpReadD107Response{0x00, 0x01, 0x00, 0x00, 0x00, 0x05,
+                                        0x01, 0x03, 0x02, 0x01, 0x33};
+inline const Bytes kTcpWriteC107{0x00, 0x02, 0x00, 0x00, 0x00, 0x06,
+                                 0x01, 0x06, 0x00, 0x30, 0x03, 0xE8};
 inline const Bytes kTcpReadWrongId{0x00, 0x03, 0x00, 0x00, 0x00, 0x03, 0x01, 0x83, 0x02};
 
 struct Vector
@@ -47,11 +50,16 @@ inline std::vector<Vector> rtuVectors()
     const auto Q = Direction::Request;
     const auto A = Direction::Response;
     return {
-        {"classic-read10", Q, kClassicRead10},         {"serial-line-spec-read", Q, kSerialLineSpecRead},
-        {"read-d107", Q, kRtuReadD107},                {"read-d107-response", A, kRtuReadD107Response},
-        {"write-c107", Q, kRtuWriteC107},              {"write-c107-response", A, kRtuWriteC107},
-        {"write-minus9999", Q, kRtuWriteMinus9999},    {"read-wrong-id", A, kRtuReadWrongId},
-        {"write-wrong-data", A, kRtuWriteWrongData},   {"read-d-block", Q, kRtuReadDBlock},
+        {"classic-read10", Q, kClassicRead10},
+        {"serial-line-spec-read", Q, kSerialLineSpecRead},
+        {"read-d107", Q, kRtuReadD107},
+        {"read-d107-response", A, kRtuReadD107Response},
+        {"write-c107", Q, kRtuWriteC107},
+        {"write-c107-response", A, kRtuWriteC107},
+        {"write-minus9999", Q, kRtuWriteMinus9999},
+        {"read-wrong-id", A, kRtuReadWrongId},
+        {"write-wrong-data", A, kRtuWriteWrongData},
+        {"read-d-block", Q, kRtuReadDBlock},
     };
 }
 

@@ -1,13 +1,11 @@
 // Modbus RTU: CRC-16/MODBUS, FC 3 / FC 6 ADUs for the HCS worked examples, exceptions, and typed
 // errors at the right offset.
-#include "modbus_vectors.h"
-
 #include "modbus/crc.h"
 #include "modbus/exceptions.h"
 #include "modbus/rtu.h"
+#include "modbus_vectors.h"
 
 #include <gtest/gtest.h>
-
 #include <string_view>
 
 using namespace vt::dev;
@@ -63,7 +61,8 @@ TEST(ModbusRtu, ExceptionsCarryTheHcsMeaning)
     const RtuResponse wrongId{1, ExceptionResponse{3, 2}};
     EXPECT_EQ(encodeRtu(wrongId).value(), kRtuReadWrongId);
     EXPECT_EQ(decodeRtuResponse(kRtuReadWrongId).value(), wrongId);
-    EXPECT_EQ(decodeRtuResponse(kRtuWriteWrongData).value(), (RtuResponse{1, ExceptionResponse{6, 3}}));
+    EXPECT_EQ(decodeRtuResponse(kRtuWriteWrongData).value(),
+              (RtuResponse{1, ExceptionResponse{6, 3}}));
     // ARCHITECTURE.md: FC|0x80 + code = the HCS EXCE for CMD = FC.
     EXPECT_EQ(hcsMeaning(3, 2, hcs::Family::Dma)->en, "wrong ID");
     EXPECT_EQ(hcsMeaning(3, 3, hcs::Family::Dma)->en, "CNT == 0 or CNT > 16 (0x10)");
@@ -73,7 +72,8 @@ TEST(ModbusRtu, ExceptionsCarryTheHcsMeaning)
     EXPECT_FALSE(hcsMeaning(3, 7, hcs::Family::Dma));
     EXPECT_EQ(exceptionName(2)->en, "illegal data address");
     EXPECT_EQ(exceptionText(3, 2, hcs::Family::Dma).en, "illegal data address — HCS: wrong ID");
-    EXPECT_EQ(exceptionText(3, 2, hcs::Family::Dma).de, "unzulässige Datenadresse — HCS: Falsche ID");
+    EXPECT_EQ(exceptionText(3, 2, hcs::Family::Dma).de,
+              "unzulässige Datenadresse — HCS: Falsche ID");
     EXPECT_FALSE(exceptionName(7));
     EXPECT_EQ(exceptionText(3, 99, hcs::Family::Dma).en, "exception 99 (not a standard code)");
 }
@@ -90,7 +90,8 @@ TEST(ModbusRtu, CodecAcceptsModbusLimitHcsLimitIsSeparate)
     EXPECT_EQ(tooMany.error().code, DecodeErrc::BadValue);
     EXPECT_EQ(tooMany.error().offset, 4u);
     EXPECT_FALSE(encodeRtu(RtuRequest{1, ReadRequest{0, 0}}).ok());
-    // The longest FC 3 answer: 125 registers = 255-byte ADU (≤ 256, Modbus over Serial Line §2.5.1).
+    // The longest FC 3 answer: 125 registers = 255-byte ADU (≤ 256, Modbus over Serial Line
+    // §2.5.1).
     const RtuResponse big{1, ReadResponse{std::vector<std::uint16_t>(125, 0xBEEF)}};
     auto bytes = encodeRtu(big);
     ASSERT_TRUE(bytes.ok());
@@ -126,7 +127,8 @@ TEST(ModbusRtu, TypedErrorsAtTheRightOffset)
     // An exception is not a request.
     EXPECT_EQ(decodeRtuRequest(kRtuReadWrongId).error().code, DecodeErrc::UnexpectedCommand);
     // Quantity 0 with a valid CRC: BadValue at the quantity (byte 4).
-    const Bytes zero = encodeRtu(RtuRequest{1, WriteRequest{0, 0}}).value(); // borrow a valid frame …
+    const Bytes zero =
+        encodeRtu(RtuRequest{1, WriteRequest{0, 0}}).value(); // borrow a valid frame …
     Bytes q0{0x01, 0x03, 0x00, 0x07, 0x00, 0x00};
     const std::uint16_t c = crc16(q0);
     q0.push_back(static_cast<std::uint8_t>(c & 0xFF));

@@ -1,7 +1,6 @@
 // Modbus TCP: MBAP header (Implementation Guide §3.1.3) around the same PDUs, bounded lengths.
-#include "modbus_vectors.h"
-
 #include "modbus/tcp.h"
+#include "modbus_vectors.h"
 
 #include <gtest/gtest.h>
 
@@ -19,8 +18,10 @@ TEST(ModbusTcp, DmaSec3_7_ReadAndWriteRoundTrip)
     EXPECT_EQ(decodeTcpResponse(kTcpReadD107Response).value(), a);
     const TcpRequest w{2, 1, WriteRequest{0x0030, 1000}};
     EXPECT_EQ(encodeTcp(w).value(), kTcpWriteC107);
-    EXPECT_EQ(decodeTcpResponse(kTcpWriteC107).value(), (TcpResponse{2, 1, WriteResponse{0x0030, 1000}}));
-    EXPECT_EQ(decodeTcpResponse(kTcpReadWrongId).value(), (TcpResponse{3, 1, ExceptionResponse{3, 2}}));
+    EXPECT_EQ(decodeTcpResponse(kTcpWriteC107).value(),
+              (TcpResponse{2, 1, WriteResponse{0x0030, 1000}}));
+    EXPECT_EQ(decodeTcpResponse(kTcpReadWrongId).value(),
+              (TcpResponse{3, 1, ExceptionResponse{3, 2}}));
 }
 
 TEST(ModbusTcp, MbapChecks)
@@ -33,7 +34,8 @@ TEST(ModbusTcp, MbapChecks)
     proto[3] = 1;
     EXPECT_EQ(decodeMbap(proto).error().code, DecodeErrc::BadValue);
     EXPECT_EQ(decodeMbap(proto).error().offset, 2u);
-    for (std::uint16_t len : {std::uint16_t{0}, std::uint16_t{1}, std::uint16_t{255}, std::uint16_t{0xFFFF}}) {
+    for (std::uint16_t len :
+         {std::uint16_t{0}, std::uint16_t{1}, std::uint16_t{255}, std::uint16_t{0xFFFF}}) {
         Bytes b = kTcpReadD107;
         b[4] = static_cast<std::uint8_t>(len >> 8);
         b[5] = static_cast<std::uint8_t>(len & 0xFF);

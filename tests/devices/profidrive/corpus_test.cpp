@@ -14,7 +14,8 @@ TEST(ProfidriveCorpus, SeedsAreTheSec5_6Example)
         const Bytes &bytes;
     };
     const Bytes t1(kSec56Request.begin(), kSec56Request.begin() + 4);
-    for (const Seed &s : {Seed{"sec5.6-request", 0, kSec56Request}, Seed{"sec5.6-response-master", 1, kSec56ResponseMaster},
+    for (const Seed &s : {Seed{"sec5.6-request", 0, kSec56Request},
+                          Seed{"sec5.6-response-master", 1, kSec56ResponseMaster},
                           Seed{"sec5.6-response-slave", 1, kSec56ResponseSlave},
                           Seed{"sec5.6-response-cable-fracture", 1, kSec56ResponseCableFracture},
                           Seed{"sec5.6-telegram1-only", 2, t1}}) {

@@ -1,15 +1,12 @@
 // OPAT manual §5.6: PROFIdrive telegram 1 and CMD 15 in one process image, byte-exact both ways.
-#include "worked_examples.h"
-
+#include "hcs/status_bits.h"
 #include "profidrive/describe.h"
 #include "profidrive/mixed.h"
 #include "profidrive/stw1_zsw1.h"
-
-#include "hcs/status_bits.h"
-
-#include <gtest/gtest.h>
+#include "worked_examples.h"
 
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::profidrive;
@@ -44,10 +41,12 @@ TEST(ProfidriveMixed, Sec5_6_SendTelegram)
 
 TEST(ProfidriveMixed, Sec5_6_ResponsesFromMasterAndSlave)
 {
-    const MixedResponse master{{0x4237, static_cast<std::int16_t>(0xF39A)}, hcs::CyclicResponse{0x12, 0, 0x0400, -998, 3750}};
+    const MixedResponse master{{0x4237, static_cast<std::int16_t>(0xF39A)},
+                               hcs::CyclicResponse{0x12, 0, 0x0400, -998, 3750}};
     EXPECT_EQ(encode(master), kSec56ResponseMaster);
     EXPECT_EQ(decodeMixedResponse(kSec56ResponseMaster).value(), master);
-    const MixedResponse slave{{0x4237, static_cast<std::int16_t>(0xF99A)}, hcs::CyclicResponse{0x13, 1, 0x0404, 557, 0x1800}};
+    const MixedResponse slave{{0x4237, static_cast<std::int16_t>(0xF99A)},
+                              hcs::CyclicResponse{0x13, 1, 0x0404, 557, 0x1800}};
     EXPECT_EQ(encode(slave), kSec56ResponseSlave);
     EXPECT_EQ(decodeMixedResponse(kSec56ResponseSlave).value(), slave);
     // The slave's VALUE2 (d1.10, internal set value) is the 0x1800 the PLC sent it.
@@ -155,7 +154,8 @@ TEST(ProfidriveDescribe, Telegram1AloneAndLayouts)
 
 TEST(ProfidriveDescribe, EveryExampleCompleteInBothLanguages)
 {
-    for (const Bytes *b : {&kSec56Request, &kSec56ResponseMaster, &kSec56ResponseSlave, &kSec56ResponseCableFracture}) {
+    for (const Bytes *b : {&kSec56Request, &kSec56ResponseMaster, &kSec56ResponseSlave,
+                           &kSec56ResponseCableFracture}) {
         const Direction dir = b == &kSec56Request ? Direction::Request : Direction::Response;
         const Description d = describe(*b, opts(dir));
         EXPECT_TRUE(d.ok());

@@ -1,8 +1,7 @@
 // PROFIdrive standard telegram 1 on the OPAT (OPAT manual §5): words, bits and N2 normalisation.
-#include "worked_examples.h"
-
 #include "profidrive/stw1_zsw1.h"
 #include "profidrive/telegram1.h"
+#include "worked_examples.h"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +16,9 @@ TEST(ProfidriveTelegram1, Sec5_6_SetpointWordsRoundTrip)
     EXPECT_EQ(encode(s), first4);
     EXPECT_EQ(decodeSetpoint(first4).value(), s);
     // §5.2.1: "For using the set value Bit 0,1,2,3,4,5,6 and 10 must be set".
-    EXPECT_EQ(stw1::kOpatRun, stw1::kOn | stw1::kNoCoastStop | stw1::kNoQuickStop | stw1::kEnableOperation |
-                                  stw1::kEnableRampGenerator | stw1::kUnfreezeRampGenerator | stw1::kEnableSetpoint |
+    EXPECT_EQ(stw1::kOpatRun, stw1::kOn | stw1::kNoCoastStop | stw1::kNoQuickStop |
+                                  stw1::kEnableOperation | stw1::kEnableRampGenerator |
+                                  stw1::kUnfreezeRampGenerator | stw1::kEnableSetpoint |
                                   stw1::kControlByPlc);
 }
 

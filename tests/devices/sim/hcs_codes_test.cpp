@@ -31,13 +31,18 @@ TEST(HcsSimCodes, NamesMatchBothFamiliesTables)
         EXPECT_EQ(text(f, 6, exce::kWrongData), "wrong data value");
         EXPECT_EQ(text(f, 15, exce::kWrongData), "wrong data value");
         EXPECT_EQ(text(f, 6, exce::kWriteFailed), "writing of ID failed");
-        EXPECT_EQ(text(f, 3, exce::kSlaveTimeout).rfind("timeout slave, address wrong or not installed", 0), 0u);
+        EXPECT_EQ(text(f, 3, exce::kSlaveTimeout)
+                      .rfind("timeout slave, address wrong or not installed", 0),
+                  0u);
         EXPECT_EQ(text(f, 15, exce::kInvalidSlaveCount), "invalid number of connected slaves");
-        EXPECT_EQ(text(f, 15, exce::kCyclicSlaveTimeout), "timeout slave, address wrong or not installed");
+        EXPECT_EQ(text(f, 15, exce::kCyclicSlaveTimeout),
+                  "timeout slave, address wrong or not installed");
         EXPECT_NE(text(f, 15, exce::kBufferTooSmall).find("too small"), std::string::npos);
     }
-    EXPECT_EQ(text(Family::Opat, 15, exce::kDuplicateAddress), "two or more slaves have the same slave address");
-    EXPECT_EQ(text(Family::Opat, 3, exce::kDuplicateAddress), "two or more slaves have the same slave address");
+    EXPECT_EQ(text(Family::Opat, 15, exce::kDuplicateAddress),
+              "two or more slaves have the same slave address");
+    EXPECT_EQ(text(Family::Opat, 3, exce::kDuplicateAddress),
+              "two or more slaves have the same slave address");
     EXPECT_EQ(text(Family::Dma, 3, exce::kChecksum), "internal checksum error (Modbus)");
     EXPECT_EQ(text(Family::Dma, 15, exce::kChecksum), "internal checksum error (Modbus)");
 }

@@ -2,9 +2,8 @@
 // §3.4.1: "up to 25ms per parameter … cycle time … greater than 30ms"), power cycle, hardware
 // enable / bus disable, the module state word (ID 0xB0), error states with their numbers
 // (DMA Profinet manual §4.5.1.1, OPAT manual §7 ERR), and the module's CMD 15 share.
-#include "hcs_sim_support.h"
-
 #include "hcs/status_bits.h"
+#include "hcs_sim_support.h"
 #include "sim/hcs_codes.h"
 
 using namespace vt::dev;
@@ -32,7 +31,7 @@ TEST(HcsSimModule, EepromWriteTakes25msAndRefusesASecondWriteMeanwhile)
 
     ASSERT_TRUE(m.write(c107, 1000).ok()); // DMA Profinet manual §3.7: C1.07 = 1.000 V
     EXPECT_TRUE(m.eepromBusy());
-    EXPECT_EQ(m.storage().raw(c107), 1000); // the card works with it at once …
+    EXPECT_EQ(m.storage().raw(c107), 1000);    // the card works with it at once …
     EXPECT_EQ(m.storage().committed(c107), 0); // … the EEPROM has it 25 ms later
     EXPECT_EQ(m.write(c108, 500).exception, exce::kWriteFailed);
     EXPECT_EQ(m.storage().raw(c108), 0);
@@ -92,7 +91,8 @@ TEST(HcsSimModule, StatusWordFollowsHardwareEnableAndBusDisable)
     EXPECT_EQ(m.statusWord(), hcs::kStatusHwEnable);
     m.setBusDisable(true);
     EXPECT_EQ(m.read(b0, 1).values.at(0), hcs::kStatusHwEnable | hcs::kStatusBusDisable);
-    // "The special function byte will be set to internal 0x00 when the hardware enable is inactive."
+    // "The special function byte will be set to internal 0x00 when the hardware enable is
+    // inactive."
     m.setHardwareEnable(false);
     EXPECT_EQ(m.statusWord(), 0);
     EXPECT_FALSE(m.busDisable());
@@ -113,7 +113,8 @@ TEST(HcsSimModule, OutputsOffWhileBusDisabled)
     ASSERT_EQ(m.applyCyclic({0x00, 1000, 0}), exce::kNone);
     clock.advance(100'000);
     const int on = m.storage().get("d1.07") + m.storage().get("d1.08");
-    EXPECT_NEAR(on, 270, 3) << "1.000 V of 2.7 A (E1.03 default) = 0.270 A, as DMA Profinet manual §4.4.1";
+    EXPECT_NEAR(on, 270, 3)
+        << "1.000 V of 2.7 A (E1.03 default) = 0.270 A, as DMA Profinet manual §4.4.1";
     ASSERT_EQ(m.applyCyclic({hcs::kControlBusDisable, 1000, 0}), exce::kNone);
     clock.advance(100'000);
     EXPECT_EQ(m.storage().get("d1.07") + m.storage().get("d1.08"), 0);
@@ -137,12 +138,14 @@ TEST(HcsSimModule, DmaErrorLatchesWithItsNumberUntilAcknowledged)
     plant->setSolenoidFault(true, SolenoidFault::None);
     clock.advance(100'000); // the short's current decays with the solenoid's time constant
     EXPECT_EQ(m.statusWord(), 0x0C03) << "latched until acknowledged";
-    EXPECT_EQ(m.storage().get("d1.07") + m.storage().get("d1.08"), 0) << "outputs disabled in error";
+    EXPECT_EQ(m.storage().get("d1.07") + m.storage().get("d1.08"), 0)
+        << "outputs disabled in error";
     m.setBusDisable(true);
     m.setBusDisable(false); // "Setting and resetting of the Bits (0x80) BUS_DISABLE"
     EXPECT_EQ(m.statusWord(), hcs::kStatusHwEnable);
     clock.advance(100'000);
-    EXPECT_NEAR(m.storage().get("d1.07") + m.storage().get("d1.08"), 1350, 5) << "5.000 V of 2.7 A again";
+    EXPECT_NEAR(m.storage().get("d1.07") + m.storage().get("d1.08"), 1350, 5)
+        << "5.000 V of 2.7 A again";
 }
 
 TEST(HcsSimModule, OpatErrorShowsInErrAndIsAcknowledgedByTheEnable)

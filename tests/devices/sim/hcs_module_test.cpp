@@ -2,10 +2,9 @@
 // row reads its dictionary default, out-of-range writes get EXCE 3, writes to read-only / not
 // active / unknown IDs get the family's "wrong ID" (2), reads keep the "1..8 at once" rule
 // (OPAT manual §2.1 / §2.3, DMA Profinet manual §3.1 / §3.3 / §3.6). Device simulator issue.
-#include "hcs_sim_support.h"
-
 #include "dict/param_meta.h"
 #include "hcs/exceptions.h"
+#include "hcs_sim_support.h"
 #include "sim/hcs_codes.h"
 
 using namespace vt::dev;
@@ -35,7 +34,8 @@ TEST(HcsSimModule, EveryReadableRowReadsItsDictionaryDefault)
         for (const ParamMeta *row : rows) {
             const ReadOutcome one = module.read(static_cast<std::uint16_t>(*row->id), 1);
             ASSERT_TRUE(one.ok()) << v.name() << " " << row->name << " EXCE " << int(one.exception);
-            EXPECT_EQ(one.values.at(0), expectedFreshWord(*row, module)) << v.name() << " " << row->name;
+            EXPECT_EQ(one.values.at(0), expectedFreshWord(*row, module))
+                << v.name() << " " << row->name;
         }
         // The same through blocks of up to 8 consecutive IDs, as the session reads them.
         for (const hcs::ReadBlock &b : readBlocks(rows)) {
@@ -43,7 +43,8 @@ TEST(HcsSimModule, EveryReadableRowReadsItsDictionaryDefault)
             ASSERT_TRUE(block.ok()) << v.name() << " block at " << b.firstId;
             ASSERT_EQ(block.values.size(), b.count);
             for (std::uint16_t i = 0; i < b.count; ++i)
-                EXPECT_EQ(block.values[i], expectedFreshWord(*module.storage().meta(b.firstId + i), module));
+                EXPECT_EQ(block.values[i],
+                          expectedFreshWord(*module.storage().meta(b.firstId + i), module));
         }
     }
 }
@@ -53,9 +54,9 @@ TEST(HcsSimModule, IdentityRowsCarryVersionModeAndAddress)
     SimClock clock;
     HcsModuleConfig c = configFor({"opat", "31", 6}, 5);
     HcsModule slave(clock, c);
-    EXPECT_EQ(slave.read(0, 1).values.at(0), 3100);                   // Vers
-    EXPECT_EQ(slave.storage().get("E00"), 6);                         // mode
-    EXPECT_EQ(slave.storage().get("E22"), 5);                         // DIP switch (V31)
+    EXPECT_EQ(slave.read(0, 1).values.at(0), 3100); // Vers
+    EXPECT_EQ(slave.storage().get("E00"), 6);       // mode
+    EXPECT_EQ(slave.storage().get("E22"), 5);       // DIP switch (V31)
     EXPECT_EQ(slave.address(), 5);
     EXPECT_EQ(slave.profile(), hcs::Profile::OpatV34Mode6);
     c.versionRaw = 3112;
@@ -77,13 +78,15 @@ TEST(HcsSimModule, OutOfRangeWritesGetWrongDataValue)
                     continue;
                 const std::int32_t before = module.storage().raw(*row.id);
                 const WriteOutcome out = module.write(static_cast<std::uint16_t>(*row.id), *word);
-                EXPECT_EQ(out.exception, exce::kWrongData) << v.name() << " " << row.name << " = " << *word;
+                EXPECT_EQ(out.exception, exce::kWrongData)
+                    << v.name() << " " << row.name << " = " << *word;
                 EXPECT_EQ(module.storage().raw(*row.id), before) << v.name() << " " << row.name;
                 ++checked;
             }
         }
         EXPECT_GT(checked, 50) << v.name();
-        EXPECT_EQ(hcs::exceptionText(module.family(), hcs::kCmdWrite, exce::kWrongData)->en, "wrong data value");
+        EXPECT_EQ(hcs::exceptionText(module.family(), hcs::kCmdWrite, exce::kWrongData)->en,
+                  "wrong data value");
     }
 }
 
@@ -101,20 +104,25 @@ TEST(HcsSimModule, ReadOnlyNotActiveAndUnknownIdsGetWrongId)
             if (applies && row.access == Access::Read) {
                 const std::int32_t before = module.storage().raw(*row.id);
                 // Write the value it holds: the access rule answers before the range check.
-                EXPECT_EQ(module.write(id, module.storage().word(*row.id)).exception, exce::kWrongId)
+                EXPECT_EQ(module.write(id, module.storage().word(*row.id)).exception,
+                          exce::kWrongId)
                     << v.name() << " " << row.name;
                 EXPECT_EQ(module.storage().raw(*row.id), before);
                 ++readOnly;
-            } else if (!applies || row.access == Access::Inactive || row.access == Access::NotImplemented) {
-                EXPECT_EQ(module.write(id, 0).exception, exce::kWrongId) << v.name() << " " << row.name;
-                EXPECT_EQ(module.read(id, 1).exception, exce::kWrongId) << v.name() << " " << row.name;
+            } else if (!applies || row.access == Access::Inactive ||
+                       row.access == Access::NotImplemented) {
+                EXPECT_EQ(module.write(id, 0).exception, exce::kWrongId)
+                    << v.name() << " " << row.name;
+                EXPECT_EQ(module.read(id, 1).exception, exce::kWrongId)
+                    << v.name() << " " << row.name;
                 ++inactive;
             }
         }
         EXPECT_GT(readOnly, 10) << v.name();
         EXPECT_EQ(module.write(0x3FF, 0).exception, exce::kWrongId);
         EXPECT_EQ(module.read(0x3FF, 1).exception, exce::kWrongId);
-        EXPECT_EQ(hcs::exceptionText(module.family(), hcs::kCmdWrite, exce::kWrongId)->en, "wrong ID");
+        EXPECT_EQ(hcs::exceptionText(module.family(), hcs::kCmdWrite, exce::kWrongId)->en,
+                  "wrong ID");
         if (v.family == "opat" || v.family.rfind("dma-pn", 0) == 0) {
             EXPECT_GT(inactive, 10) << v.name();
         }
@@ -128,7 +136,8 @@ TEST(HcsSimModule, ReadsOneToEightIdsAtOnce)
     EXPECT_EQ(module.read(7, 0).exception, exce::kBadCount);
     EXPECT_EQ(module.read(7, 9).exception, exce::kBadCount);
     EXPECT_EQ(module.read(7, 8).values.size(), 8u);
-    EXPECT_EQ(hcs::exceptionText(hcs::Family::Dma, hcs::kCmdRead, exce::kBadCount)->en, "CNT == 0 or CNT > 16 (0x10)");
+    EXPECT_EQ(hcs::exceptionText(hcs::Family::Dma, hcs::kCmdRead, exce::kBadCount)->en,
+              "CNT == 0 or CNT > 16 (0x10)");
 }
 
 TEST(HcsSimModule, BlockOverAMissingIdIsRefusedUnlessLenient)
@@ -156,5 +165,6 @@ TEST(HcsSimModule, SignedAndUnsignedWordsFollowTheRowType)
     ASSERT_TRUE(module.write(static_cast<std::uint16_t>(*a101->id), 0xD8F1).ok());
     EXPECT_EQ(module.storage().raw(*a101->id), -9999);
     EXPECT_EQ(module.read(static_cast<std::uint16_t>(*a101->id), 1).values.at(0), 0xD8F1);
-    EXPECT_EQ(module.write(static_cast<std::uint16_t>(*a101->id), 0xD8F0).exception, exce::kWrongData); // -10000
+    EXPECT_EQ(module.write(static_cast<std::uint16_t>(*a101->id), 0xD8F0).exception,
+              exce::kWrongData); // -10000
 }

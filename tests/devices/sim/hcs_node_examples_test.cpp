@@ -6,7 +6,6 @@
 // and recorded telegrams say 0x04 (docs/protocol-notes/hcs-modbus-profidrive.md §5), which the
 // simulator sends: withTableStatus() makes that one repair to the manual's bytes.
 #include "../hcs/worked_examples.h"
-
 #include "hcs/telegram.h"
 #include "sim/node_config.h"
 
@@ -73,7 +72,8 @@ TEST(NodeCmd15Examples, DmaProfinetSec4_4_1_SingleModule)
     clock.advance(kCycleUs);
     const Bytes later = answer(*n, withTadr(kDma441Request, 0x24));
     EXPECT_EQ(later, expectedCyclic(withTadr(kDma441Response, 0x24), n->module(0)));
-    EXPECT_NEAR(value(later, 5) + value(later, 7), value(kDma441Response, 5) + value(kDma441Response, 7), 3)
+    EXPECT_NEAR(value(later, 5) + value(later, 7),
+                value(kDma441Response, 5) + value(kDma441Response, 7), 3)
         << "0.270 A in total; the manual shows it on solenoid B, the plant drives A for a positive "
            "value (docs/SIMULATOR.md)";
 }
@@ -84,7 +84,8 @@ TEST(NodeCmd15Examples, DmaProfinetSec4_4_2_ThreeModulesMultiplexed)
     auto n = node(clock, "dma-pn-v13", 3);
     ASSERT_TRUE(n);
     // "module 1 answers first", then 2, 3 and 1 again as TADR changes 0x23 → 0x26.
-    const Bytes *manual[] = {&kDma442Response1, &kDma442Response2, &kDma442Response3, &kDma442Response1Again};
+    const Bytes *manual[] = {&kDma442Response1, &kDma442Response2, &kDma442Response3,
+                             &kDma442Response1Again};
     const std::uint8_t sadr[] = {1, 2, 3, 1};
     for (std::size_t i = 0; i < 4; ++i) {
         const auto tadr = static_cast<std::uint8_t>(0x23 + i);
@@ -93,7 +94,8 @@ TEST(NodeCmd15Examples, DmaProfinetSec4_4_2_ThreeModulesMultiplexed)
         EXPECT_EQ(a.at(1), sadr[i]);
         EXPECT_EQ(a, expectedCyclic(*manual[i], n->module(sadr[i] - 1u))) << "answer " << i;
         if (i > 0) { // the plant has had a cycle to drive the current
-            EXPECT_NEAR(value(a, 5) + value(a, 7), value(*manual[i], 5) + value(*manual[i], 7), 3) << "answer " << i;
+            EXPECT_NEAR(value(a, 5) + value(a, 7), value(*manual[i], 5) + value(*manual[i], 7), 3)
+                << "answer " << i;
         }
         clock.advance(kCycleUs);
     }
@@ -126,8 +128,8 @@ TEST(NodeCmd15Examples, OpatSec3_4_2_MasterAndTwoSlavesMultiplexed)
     ASSERT_TRUE(n);
     // "the OPAT-master … will respond first … slave 1 … slave 2 … Than it starts again with the
     // master address 0."
-    const Bytes *manual[] = {&kOpat342ResponseMaster, &kOpat342ResponseSlave1, &kOpat342ResponseSlave2,
-                             &kOpat342ResponseMasterAgain};
+    const Bytes *manual[] = {&kOpat342ResponseMaster, &kOpat342ResponseSlave1,
+                             &kOpat342ResponseSlave2, &kOpat342ResponseMasterAgain};
     const std::uint8_t sadr[] = {0, 1, 2, 0};
     const std::int16_t setValue[] = {1000, 2000, -3000, 1000};
     for (std::size_t i = 0; i < 4; ++i) {
@@ -154,14 +156,16 @@ TEST(NodeCmd15Examples, ErrorExamplesModuleThreeNotInstalled)
     ASSERT_TRUE(dma && opat);
     // DMA Profinet manual §3.3 / §3.6: SADR 3 not installed → 0x83 / 0x86, EXCE 5.
     EXPECT_EQ(answer(*dma, hcs::encode(hcs::ReadRequest{0x23, 3, 0x0007, 1})), kDma33ReadError);
-    EXPECT_EQ(answer(*dma, hcs::encode(hcs::WriteRequest{0x23, 3, 0x0030, 1000})), kDma36WriteError);
+    EXPECT_EQ(answer(*dma, hcs::encode(hcs::WriteRequest{0x23, 3, 0x0030, 1000})),
+              kDma36WriteError);
     // §4.3: "Module 3 is not installed and SNUM in the master telegram is set to 3" → EXCE 8.
     auto snum3 = hcs::encode(hcs::CyclicRequest{0x23, {{}, {}, {}}}, hcs::Family::Dma);
     ASSERT_TRUE(snum3.ok());
     EXPECT_EQ(answer(*dma, *snum3), kDma43CyclicError);
     // OPAT manual §2.3 / §2.6 / §3.3: the same with slave 3 of a master with slaves 1 and 2.
     EXPECT_EQ(answer(*opat, hcs::encode(hcs::ReadRequest{0x23, 3, 0x0007, 1})), kOpat23ReadError);
-    EXPECT_EQ(answer(*opat, hcs::encode(hcs::WriteRequest{0x23, 3, 0x0030, 1000})), kOpat26WriteError);
+    EXPECT_EQ(answer(*opat, hcs::encode(hcs::WriteRequest{0x23, 3, 0x0030, 1000})),
+              kOpat26WriteError);
     auto opatSnum3 = hcs::encode(hcs::CyclicRequest{0x23, {{}, {}, {}, {}}}, hcs::Family::Opat);
     ASSERT_TRUE(opatSnum3.ok());
     EXPECT_EQ(answer(*opat, *opatSnum3), kOpat33CyclicError);

@@ -23,7 +23,8 @@ std::unique_ptr<HcsNode> node(SimClock &clock, const char *family, std::size_t m
 
 Bytes cyclic(hcs::Family family, std::uint8_t tadr, std::size_t modules, std::int16_t value = 0)
 {
-    hcs::CyclicRequest q{tadr, std::vector<hcs::ModuleSetpoints>(modules, hcs::ModuleSetpoints{0, value, 0})};
+    hcs::CyclicRequest q{
+        tadr, std::vector<hcs::ModuleSetpoints>(modules, hcs::ModuleSetpoints{0, value, 0})};
     return hcs::encode(q, family).value();
 }
 
@@ -82,28 +83,35 @@ TEST(NodeRules, Cmd15AddressesAndNodeExceptions)
     // A telegram cut short: "output buffer too small", SADR 0 (DMA Profinet manual §4.3 code 9).
     Bytes cut = cyclic(hcs::Family::Dma, 3, 3);
     cut.resize(13);
-    EXPECT_EQ(exceptionOf(dma->process(cut), hcs::Family::Dma), (hcs::ExceptionResponse{3, 0, 15, exce::kBufferTooSmall}));
+    EXPECT_EQ(exceptionOf(dma->process(cut), hcs::Family::Dma),
+              (hcs::ExceptionResponse{3, 0, 15, exce::kBufferTooSmall}));
     // The same with a configured output image of 13 bytes ("CMD15 2fold 9B-I 13B-O").
     HcsNodeOptions o;
     o.outputBufferBytes = 13;
     dma->setOptions(o);
-    EXPECT_EQ(exceptionOf(dma->process(cyclic(hcs::Family::Dma, 4, 3)), hcs::Family::Dma).code, exce::kBufferTooSmall);
+    EXPECT_EQ(exceptionOf(dma->process(cyclic(hcs::Family::Dma, 4, 3)), hcs::Family::Dma).code,
+              exce::kBufferTooSmall);
     dma->setOptions({});
     // Duplicate E22: modules 2 and 3 both at 2 → the DMA node's internal Modbus answers collide.
     dma->module(2).setAddress(2);
     EXPECT_EQ(exceptionOf(dma->process(cyclic(hcs::Family::Dma, 5, 3)), hcs::Family::Dma),
               (hcs::ExceptionResponse{5, 2, 15, exce::kChecksum}));
-    EXPECT_EQ(exceptionOf(dma->process(hcs::encode(hcs::ReadRequest{6, 2, 0, 1})), hcs::Family::Dma).code, exce::kChecksum);
+    EXPECT_EQ(
+        exceptionOf(dma->process(hcs::encode(hcs::ReadRequest{6, 2, 0, 1})), hcs::Family::Dma).code,
+        exce::kChecksum);
     dma->module(2).setAddress(3);
-    EXPECT_EQ(exceptionOf(dma->process(cyclic(hcs::Family::Dma, 7, 2)), hcs::Family::Dma).code, exce::kInvalidSlaveCount);
+    EXPECT_EQ(exceptionOf(dma->process(cyclic(hcs::Family::Dma, 7, 2)), hcs::Family::Dma).code,
+              exce::kInvalidSlaveCount);
     EXPECT_EQ(dma->process(cyclic(hcs::Family::Dma, 8, 3))->bytes.size(), 9u);
     // A module switched off is missing: "all slaves must be active (connected to the power
     // supply) … Otherwise … the node-module will respond with a timeout error" (§1.3).
     dma->module(1).setPowered(false);
     EXPECT_EQ(exceptionOf(dma->process(cyclic(hcs::Family::Dma, 9, 3)), hcs::Family::Dma),
               (hcs::ExceptionResponse{9, 2, 15, exce::kCyclicSlaveTimeout}));
-    EXPECT_EQ(exceptionOf(dma->process(hcs::encode(hcs::ReadRequest{10, 2, 0, 1})), hcs::Family::Dma).code,
-              exce::kSlaveTimeout);
+    EXPECT_EQ(
+        exceptionOf(dma->process(hcs::encode(hcs::ReadRequest{10, 2, 0, 1})), hcs::Family::Dma)
+            .code,
+        exce::kSlaveTimeout);
 }
 
 TEST(NodeRules, OpatDuplicateSlaveAddressesGet12)
@@ -113,10 +121,13 @@ TEST(NodeRules, OpatDuplicateSlaveAddressesGet12)
     opat->module(2).setAddress(1); // two slaves on DIP switch 1
     EXPECT_EQ(exceptionOf(opat->process(cyclic(hcs::Family::Opat, 1, 3)), hcs::Family::Opat),
               (hcs::ExceptionResponse{1, 1, 15, exce::kDuplicateAddress}));
-    EXPECT_EQ(exceptionOf(opat->process(hcs::encode(hcs::ReadRequest{2, 1, 0, 1})), hcs::Family::Opat),
-              (hcs::ExceptionResponse{2, 1, 3, exce::kDuplicateAddress}));
-    EXPECT_EQ(exceptionOf(opat->process(hcs::encode(hcs::WriteRequest{3, 1, 0x30, 1})), hcs::Family::Opat).code,
-              exce::kDuplicateAddress);
+    EXPECT_EQ(
+        exceptionOf(opat->process(hcs::encode(hcs::ReadRequest{2, 1, 0, 1})), hcs::Family::Opat),
+        (hcs::ExceptionResponse{2, 1, 3, exce::kDuplicateAddress}));
+    EXPECT_EQ(
+        exceptionOf(opat->process(hcs::encode(hcs::WriteRequest{3, 1, 0x30, 1})), hcs::Family::Opat)
+            .code,
+        exce::kDuplicateAddress);
     // The master is not affected for CMD 3.
     EXPECT_EQ(opat->process(hcs::encode(hcs::ReadRequest{4, 0, 0, 1}))->bytes.size(), 6u);
 }
@@ -129,14 +140,20 @@ TEST(NodeRules, ModuleExceptionsReachTheTelegram)
     EXPECT_EQ(exceptionOf(n->process(hcs::encode(hcs::ReadRequest{1, 1, 0, 9})), hcs::Family::Dma),
               (hcs::ExceptionResponse{1, 1, 3, exce::kBadCount}));
     // CMD 6 to d1.07 (read only) → 0x86 EXCE 2; C1.07 = 10.000 V (max 9.999 V) → EXCE 3.
-    EXPECT_EQ(exceptionOf(n->process(hcs::encode(hcs::WriteRequest{2, 1, 0x07, 0})), hcs::Family::Dma).code, exce::kWrongId);
-    EXPECT_EQ(exceptionOf(n->process(hcs::encode(hcs::WriteRequest{3, 1, 0x30, 10000})), hcs::Family::Dma).code,
-              exce::kWrongData);
+    EXPECT_EQ(
+        exceptionOf(n->process(hcs::encode(hcs::WriteRequest{2, 1, 0x07, 0})), hcs::Family::Dma)
+            .code,
+        exce::kWrongId);
+    EXPECT_EQ(
+        exceptionOf(n->process(hcs::encode(hcs::WriteRequest{3, 1, 0x30, 10000})), hcs::Family::Dma)
+            .code,
+        exce::kWrongData);
     // CMD 15 VALUE1 out of range → 0x8F EXCE 3 from that module.
     EXPECT_EQ(exceptionOf(n->process(cyclic(hcs::Family::Dma, 4, 1, 12000)), hcs::Family::Dma),
               (hcs::ExceptionResponse{4, 1, 15, exce::kWrongData}));
     // An unknown command → EXCE 1 "command not supported"; an all-zero image → silence.
-    EXPECT_EQ(n->process(Bytes{5, 1, 0x10, 0, 0, 0, 0})->bytes, (Bytes{5, 1, 0x90, exce::kCommandNotSupported}));
+    EXPECT_EQ(n->process(Bytes{5, 1, 0x10, 0, 0, 0, 0})->bytes,
+              (Bytes{5, 1, 0x90, exce::kCommandNotSupported}));
     EXPECT_FALSE(n->process(Bytes(42, 0)));
     EXPECT_FALSE(n->process(Bytes{1, 2}));
 }
@@ -157,7 +174,9 @@ TEST(NodeRules, DmaModulesBeyondFiveOnlyByCmd3And6)
     // E22 written over the bus moves the module.
     ASSERT_EQ(n->process(hcs::encode(hcs::WriteRequest{4, 7, 0xA3, 9}))->bytes.size(), 7u);
     EXPECT_EQ(n->module(1).address(), 9);
-    EXPECT_EQ(exceptionOf(n->process(hcs::encode(hcs::ReadRequest{5, 7, 0, 1})), hcs::Family::Dma).code, exce::kSlaveTimeout);
+    EXPECT_EQ(
+        exceptionOf(n->process(hcs::encode(hcs::ReadRequest{5, 7, 0, 1})), hcs::Family::Dma).code,
+        exce::kSlaveTimeout);
 }
 
 TEST(NodeRules, DelayedEepromWriteIsAnsweredLater)
@@ -218,5 +237,6 @@ TEST(NodeRules, MakeNodeByFamily)
     const auto &set = builtinDictionaries();
     ASSERT_TRUE(set.ok());
     EXPECT_EQ(simulatedFamilies(*set),
-              (std::vector<std::string>{"dma-pb-v15", "dma-pb-v22", "dma-pb-v32", "dma-pn-v13", "dma-pn-v51", "opat"}));
+              (std::vector<std::string>{"dma-pb-v15", "dma-pb-v22", "dma-pb-v32", "dma-pn-v13",
+                                        "dma-pn-v51", "opat"}));
 }

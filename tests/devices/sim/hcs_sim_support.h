@@ -8,9 +8,8 @@
 #include "sim/hcs_module.h"
 #include "sim/hcs_storage.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 #include <vector>
 
@@ -79,7 +78,8 @@ inline std::uint16_t expectedFreshWord(const ParamMeta &row, const HcsModule &mo
     if (row.name == "0xB0")
         return 0x0400; // HW_ENABLE: the enable is wired, as in the manuals' examples
     if (row.defaultValue)
-        return static_cast<std::uint16_t>(static_cast<std::int32_t>(std::lround(*row.defaultValue)));
+        return static_cast<std::uint16_t>(
+            static_cast<std::int32_t>(std::lround(*row.defaultValue)));
     return static_cast<std::uint16_t>(HcsStorage::defaultRaw(row));
 }
 

@@ -7,27 +7,23 @@
 // A pump thread moves bytes between the descriptor and the server with poll() and bounded
 // timeouts; no sleeps.
 #include "hcs_sim_support.h"
-
+#include "pty_support.h"
 #include "sim/hcs_node.h"
 #include "sim/modbus_rtu_server.h"
 #include "sim/modbus_tcp_server.h"
 
-#include <modbus.h>
-
 #include <arpa/inet.h>
-#include <fcntl.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <cerrno>
 #include <cstdlib>
+#include <fcntl.h>
 #include <memory>
+#include <modbus.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
 #include <thread>
-
-#include "pty_support.h"
+#include <unistd.h>
 
 using namespace vt::dev;
 using namespace vt::dev::sim;
@@ -147,7 +143,8 @@ void checkModule(modbus_t *ctx, const HcsModule &module, const std::string &what
     for (const hcs::ReadBlock &b : readBlocks(rows)) {
         std::uint16_t dest[8] = {};
         const int rc = modbus_read_registers(ctx, b.firstId, b.count, dest);
-        ASSERT_EQ(rc, b.count) << what << " block " << b.firstId << "+" << b.count << ": " << modbus_strerror(errno);
+        ASSERT_EQ(rc, b.count) << what << " block " << b.firstId << "+" << b.count << ": "
+                               << modbus_strerror(errno);
         for (std::uint16_t i = 0; i < b.count; ++i) {
             const ParamMeta &row = *module.storage().meta(b.firstId + i);
             EXPECT_EQ(dest[i], expectedFreshWord(row, module)) << what << " " << row.name;
@@ -168,19 +165,26 @@ void checkModule(modbus_t *ctx, const HcsModule &module, const std::string &what
             continue;
         const bool applies = module.storage().meta(*row.id) == &row;
         if (applies && row.access == Access::Read && readOnly < 3) {
-            EXPECT_EQ(modbus_write_register(ctx, *row.id, module.storage().word(*row.id)), -1) << what << " " << row.name;
+            EXPECT_EQ(modbus_write_register(ctx, *row.id, module.storage().word(*row.id)), -1)
+                << what << " " << row.name;
             EXPECT_EQ(errno, EMBXILADD) << what << " " << row.name; // HCS 2 "wrong ID"
             ++readOnly;
         } else if (row.access == Access::Inactive && inactive < 3) {
             EXPECT_EQ(modbus_write_register(ctx, *row.id, 0), -1) << what << " " << row.name;
             EXPECT_EQ(errno, EMBXILADD) << what << " " << row.name;
             ++inactive;
-        } else if (applies && row.access == Access::ReadWrite && row.type == RawType::Int16 && outOfRange < 4 &&
-                   row.max < 32767 && row.min > -32768) {
-            EXPECT_EQ(modbus_write_register(ctx, *row.id, static_cast<std::uint16_t>(static_cast<std::int32_t>(row.max) + 1)), -1)
+        } else if (applies && row.access == Access::ReadWrite && row.type == RawType::Int16 &&
+                   outOfRange < 4 && row.max < 32767 && row.min > -32768) {
+            EXPECT_EQ(modbus_write_register(
+                          ctx, *row.id,
+                          static_cast<std::uint16_t>(static_cast<std::int32_t>(row.max) + 1)),
+                      -1)
                 << what << " " << row.name;
             EXPECT_EQ(errno, EMBXILVAL) << what << " " << row.name; // HCS 3 "wrong data value"
-            EXPECT_EQ(modbus_write_register(ctx, *row.id, static_cast<std::uint16_t>(static_cast<std::int32_t>(row.min) - 1)), -1)
+            EXPECT_EQ(modbus_write_register(
+                          ctx, *row.id,
+                          static_cast<std::uint16_t>(static_cast<std::int32_t>(row.min) - 1)),
+                      -1)
                 << what << " " << row.name;
             EXPECT_EQ(errno, EMBXILVAL) << what << " " << row.name;
             ++outOfRange;
@@ -188,10 +192,12 @@ void checkModule(modbus_t *ctx, const HcsModule &module, const std::string &what
     }
     EXPECT_EQ(readOnly, 3) << what;
     EXPECT_EQ(outOfRange, 4) << what;
-    // A volatile set value (A1.01, "-9.999 V = 0xD8F1", DMA Profinet manual §3.8) is taken and reads back.
+    // A volatile set value (A1.01, "-9.999 V = 0xD8F1", DMA Profinet manual §3.8) is taken and
+    // reads back.
     const ParamMeta *a101 = module.storage().find("A1.01");
     ASSERT_TRUE(a101) << what;
-    ASSERT_EQ(modbus_write_register(ctx, *a101->id, 0xD8F1), 1) << what << ": " << modbus_strerror(errno);
+    ASSERT_EQ(modbus_write_register(ctx, *a101->id, 0xD8F1), 1)
+        << what << ": " << modbus_strerror(errno);
     std::uint16_t back = 0;
     ASSERT_EQ(modbus_read_registers(ctx, *a101->id, 1, &back), 1) << what;
     EXPECT_EQ(back, 0xD8F1) << what;
@@ -204,8 +210,10 @@ void checkModule(modbus_t *ctx, const HcsModule &module, const std::string &what
             HcsStorage::isEeprom(row) && eeprom.size() < 2)
             eeprom.push_back(&row);
     ASSERT_EQ(eeprom.size(), 2u) << what;
-    EXPECT_EQ(modbus_write_register(ctx, *eeprom[0]->id, module.storage().word(*eeprom[0]->id)), 1) << what;
-    EXPECT_EQ(modbus_write_register(ctx, *eeprom[1]->id, module.storage().word(*eeprom[1]->id)), -1) << what;
+    EXPECT_EQ(modbus_write_register(ctx, *eeprom[0]->id, module.storage().word(*eeprom[0]->id)), 1)
+        << what;
+    EXPECT_EQ(modbus_write_register(ctx, *eeprom[1]->id, module.storage().word(*eeprom[1]->id)), -1)
+        << what;
     EXPECT_EQ(errno, EMBXSFAIL) << what;
 }
 

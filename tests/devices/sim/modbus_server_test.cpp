@@ -57,7 +57,7 @@ TEST(ModbusServerRtu, FramesSplitAnywhereOrRunTogether)
     SimClock clock;
     auto n = node(clock, "dma-pn-v51", 2);
     ModbusRtuServer server(clock, *n);
-    const Bytes read = rtu(1, ReadRequest{0x0000, 1});  // Vers
+    const Bytes read = rtu(1, ReadRequest{0x0000, 1});      // Vers
     const Bytes write = rtu(2, WriteRequest{0x001F, 1000}); // A1.01 of module 2
     // Byte by byte.
     for (std::uint8_t b : read)
@@ -126,11 +126,11 @@ TEST(ModbusServerRtu, HcsExceptions)
 {
     SimClock clock;
     auto n = node(clock, "opat", 2);
-    ModbusRtuServer server(clock, *n); // slave 1 (DIP switch 1) = unit 1
-    server.receive(rtu(1, ReadRequest{0x0000, 9}));   // more than 8 registers
-    server.receive(rtu(1, WriteRequest{0x0007, 0}));   // d1.07: read only
+    ModbusRtuServer server(clock, *n);                   // slave 1 (DIP switch 1) = unit 1
+    server.receive(rtu(1, ReadRequest{0x0000, 9}));      // more than 8 registers
+    server.receive(rtu(1, WriteRequest{0x0007, 0}));     // d1.07: read only
     server.receive(rtu(1, WriteRequest{0x0030, 10000})); // C1.07 above 9.999 V
-    server.receive(rtu(1, ReadRequest{0x0075, 1}));   // FB1M: not active
+    server.receive(rtu(1, ReadRequest{0x0075, 1}));      // FB1M: not active
     server.receive(rtu(1, WriteRequest{0x0030, 1000}));
     server.receive(rtu(1, WriteRequest{0x0031, 1000})); // EEPROM still busy
     const auto a = rtuAnswers(server.drain());
@@ -181,7 +181,7 @@ TEST(ModbusServerTcp, MbapTransactionsGatewayAnswersAndOutOfStep)
     const auto tcp = [](std::uint16_t t, std::uint8_t unit, RequestPdu pdu) {
         return encodeTcp(TcpRequest{t, unit, std::move(pdu)}).value();
     };
-    Bytes in = tcp(0x1234, 0, ReadRequest{0, 1}); // unit 0 = SADR 0, the OPAT master
+    Bytes in = tcp(0x1234, 0, ReadRequest{0, 1});              // unit 0 = SADR 0, the OPAT master
     const Bytes second = tcp(0x1235, 2, ReadRequest{0xA3, 1}); // slave 2's E22
     in.insert(in.end(), second.begin(), second.begin() + 4);
     server.receive(in);
@@ -195,14 +195,16 @@ TEST(ModbusServerTcp, MbapTransactionsGatewayAnswersAndOutOfStep)
     ASSERT_EQ(frames.size(), 4u);
     EXPECT_EQ(decodeTcpResponse(frames[0]).value(), (TcpResponse{0x1234, 0, ReadResponse{{3400}}}));
     EXPECT_EQ(decodeTcpResponse(frames[1]).value(), (TcpResponse{0x1235, 2, ReadResponse{{2}}}));
-    EXPECT_EQ(decodeTcpResponse(frames[2]).value(), (TcpResponse{0x1236, 6, ExceptionResponse{3, exce::kSlaveTimeout}}));
+    EXPECT_EQ(decodeTcpResponse(frames[2]).value(),
+              (TcpResponse{0x1236, 6, ExceptionResponse{3, exce::kSlaveTimeout}}));
     // FC 4 → 0x84, exception 1 "illegal function" (our codec decodes only 0x83 / 0x86).
     EXPECT_EQ(frames[3], (Bytes{0x12, 0x37, 0, 0, 0, 3, 1, 0x84, 0x01}));
     // Duplicate DIP switches behind the gateway: OPAT code 12.
     n->module(2).setAddress(1);
     server.receive(tcp(0x1238, 1, ReadRequest{0, 1}));
     for (const Bytes &frame : deframer.feed(server.drain()))
-        EXPECT_EQ(decodeTcpResponse(frame)->pdu, ResponsePdu(ExceptionResponse{3, exce::kDuplicateAddress}));
+        EXPECT_EQ(decodeTcpResponse(frame)->pdu,
+                  ResponsePdu(ExceptionResponse{3, exce::kDuplicateAddress}));
     // A header that cannot be right (protocol id 1): nothing more until the connection is new.
     Bytes bad = tcp(0x1239, 0, ReadRequest{0, 1});
     bad[3] = 1;

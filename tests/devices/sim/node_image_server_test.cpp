@@ -3,15 +3,13 @@
 // change (§1.4), multiplexed for CMD 15, exception 9 for a CMD 15 telegram longer than the image
 // (DMA Profibus Anleitung §5.1 "CMD15 2fold 9B-I 13B-O").
 #include "../hcs/worked_examples.h"
-
 #include "hcs/telegram.h"
 #include "sim/hcs_codes.h"
 #include "sim/node_config.h"
 #include "sim/node_image_server.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 
 using namespace vt::dev;
 using namespace vt::dev::sim;
@@ -87,5 +85,6 @@ TEST(NodeImageServer, OpatImageCarriesCmd3And6)
     server.receive(image(kOpat27ReadRequest, 43));
     const Bytes a = server.drain();
     ASSERT_EQ(a.size(), 43u);
-    EXPECT_EQ(Bytes(a.begin(), a.begin() + 4), Bytes(kOpat27ReadResponse.begin(), kOpat27ReadResponse.begin() + 4));
+    EXPECT_EQ(Bytes(a.begin(), a.begin() + 4),
+              Bytes(kOpat27ReadResponse.begin(), kOpat27ReadResponse.begin() + 4));
 }

@@ -38,8 +38,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             auto pkw = decodePkw(bytes, o);
             if (pkw.ok()) {
                 auto again = encodePkw(*pkw, o);
-                require(again.ok() && again->size() == size
-                        && std::equal(again->begin(), again->end(), bytes.begin()));
+                require(again.ok() && again->size() == size &&
+                        std::equal(again->begin(), again->end(), bytes.begin()));
                 (void)pkwSummary(*pkw, direction);
             }
             checkDescription(describePkw(bytes, o), size);

@@ -20,13 +20,15 @@ void require(bool condition)
         __builtin_trap();
 }
 
-template <typename T>
-void roundTrip(const Result<T, DecodeError> &t, std::span<const std::uint8_t> bytes, const Options &o)
+template<typename T>
+void roundTrip(const Result<T, DecodeError> &t, std::span<const std::uint8_t> bytes,
+               const Options &o)
 {
     if (!t.ok())
         return;
     auto again = encodeTelegram(*t, o);
-    require(again.ok() && again->size() == bytes.size() && std::equal(again->begin(), again->end(), bytes.begin()));
+    require(again.ok() && again->size() == bytes.size() &&
+            std::equal(again->begin(), again->end(), bytes.begin()));
 }
 
 } // namespace

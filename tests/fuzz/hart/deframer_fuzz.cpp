@@ -42,7 +42,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const std::span<const std::uint8_t> stream(data + 2, size - 2);
     std::size_t at = 0;
     for (unsigned k = 0; at < stream.size(); ++k) {
-        const std::size_t chunk = std::min<std::size_t>(1 + (seed + k * 13u) % 41u, stream.size() - at);
+        const std::size_t chunk =
+            std::min<std::size_t>(1 + (seed + k * 13u) % 41u, stream.size() - at);
         check(d.feed(stream.subspan(at, chunk)));
         at += chunk;
     }

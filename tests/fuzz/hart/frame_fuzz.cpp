@@ -28,7 +28,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     auto frame = decodeFrame(bytes);
     if (frame.ok()) {
         auto again = encodeFrame(*frame);
-        require(again.ok() && again->size() == size && std::equal(again->begin(), again->end(), bytes.begin()));
+        require(again.ok() && again->size() == size &&
+                std::equal(again->begin(), again->end(), bytes.begin()));
     } else {
         require(frame.error().offset <= size);
     }

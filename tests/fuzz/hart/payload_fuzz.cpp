@@ -47,7 +47,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     auto param = decodeParamAccess(command, response, bytes);
     if (param.ok()) {
         auto encoded = encodeParamAccess(*param, response);
-        require(encoded.ok() && std::equal(encoded->begin(), encoded->end(), bytes.begin(), bytes.end()));
+        require(encoded.ok() &&
+                std::equal(encoded->begin(), encoded->end(), bytes.begin(), bytes.end()));
     }
     return 0;
 }

@@ -51,7 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         require(q.ok() == d.ok());
         if (q.ok() && !padding) {
             auto back = encode(*q, family);
-            require(back.ok() && std::equal(back->begin(), back->end(), frame.begin(), frame.end()));
+            require(back.ok() &&
+                    std::equal(back->begin(), back->end(), frame.begin(), frame.end()));
         }
         (void)decodeReadRequest(frame, dop);
         (void)decodeWriteRequest(frame, dop);
@@ -61,7 +62,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         require(a.ok() == d.ok());
         if (a.ok() && !padding) {
             auto back = encode(*a);
-            require(back.ok() && std::equal(back->begin(), back->end(), frame.begin(), frame.end()));
+            require(back.ok() &&
+                    std::equal(back->begin(), back->end(), frame.begin(), frame.end()));
         }
         (void)decodeReadResponse(frame, dop);
         (void)decodeWriteResponse(frame, dop);

@@ -38,7 +38,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     std::size_t framed = 0;
     std::size_t at = 0;
     for (unsigned k = 0; at < stream.size(); ++k) {
-        const std::size_t chunk = std::min<std::size_t>(1 + (seed + k * 7u) % 23u, stream.size() - at);
+        const std::size_t chunk =
+            std::min<std::size_t>(1 + (seed + k * 7u) % 23u, stream.size() - at);
         const auto piece = stream.subspan(at, chunk);
         at += chunk;
         if (tcp) {

@@ -23,8 +23,7 @@ void require(bool condition)
         __builtin_trap();
 }
 
-template <typename R>
-bool sameBytes(const R &encoded, std::span<const std::uint8_t> image)
+template<typename R> bool sameBytes(const R &encoded, std::span<const std::uint8_t> image)
 {
     return std::equal(encoded.begin(), encoded.end(), image.begin(), image.end());
 }
@@ -46,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     for (const FieldSpan &f : d.fields)
         require(f.offset + f.length <= image.size() && f.text.complete());
 
-    const bool mixed = o.layout == Layout::MixedCmd15 || (o.layout == Layout::Auto && image.size() > kTelegram1Size);
+    const bool mixed = o.layout == Layout::MixedCmd15 ||
+                       (o.layout == Layout::Auto && image.size() > kTelegram1Size);
     const hcs::DecodeOptions dop{o.node.family, false};
     if (o.direction == Direction::Request) {
         if (mixed) {
@@ -61,7 +61,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             require(s.ok() == d.ok());
             if (s.ok()) {
                 require(sameBytes(encode(*s), image));
-                require(std::isfinite(n2ToVolts(s->nsollA)) && voltsToN2(n2ToVolts(s->nsollA)) == s->nsollA);
+                require(std::isfinite(n2ToVolts(s->nsollA)) &&
+                        voltsToN2(n2ToVolts(s->nsollA)) == s->nsollA);
             }
         }
     } else {

@@ -1,10 +1,9 @@
 // CurveBinding (issue #7 "Linearisation"): document values reach the curve model, a curve edit
 // is one undoable document edit, and undo puts the curve back.
+#include "dict/dictionary_loader.h"
 #include "model/curve/lcurve_table_model.h"
 #include "model/params/curve_binding.h"
 #include "model/params/parameter_document.h"
-
-#include "dict/dictionary_loader.h"
 
 #include <gtest/gtest.h>
 

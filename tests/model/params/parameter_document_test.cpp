@@ -1,9 +1,8 @@
 // ParameterDocument (issue #7): the three value layers, undoable edits refused out of range
 // with the limits named, the rows a safe write sends, and files that keep what they do not map.
-#include "model/params/parameter_document.h"
-
 #include "dict/dictionary_loader.h"
 #include "files/param_file.h"
+#include "model/params/parameter_document.h"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +12,18 @@ namespace {
 using model::Layer;
 using model::ParameterDocument;
 
-const dev::DictionarySet &dictionaries() { return *dev::builtinDictionaries(); }
-const dev::Dictionary &dma() { return *dictionaries().find("dma-pn-v51"); }
-const dev::ParamMeta *row(const char *name) { return dma().find(name); }
+const dev::DictionarySet &dictionaries()
+{
+    return *dev::builtinDictionaries();
+}
+const dev::Dictionary &dma()
+{
+    return *dictionaries().find("dma-pn-v51");
+}
+const dev::ParamMeta *row(const char *name)
+{
+    return dma().find(name);
+}
 
 TEST(ParameterDocument, NewFileHoldsTheDictionaryDefaults)
 {
@@ -41,7 +49,8 @@ TEST(ParameterDocument, EditIsUndoableAndRefusedOutOfRangeWithTheLimits)
 
     const auto refused = doc.edit(0, row("C1.07"), 1e7);
     ASSERT_TRUE(refused);
-    EXPECT_NE(refused->en.find("9.999"), std::string::npos) << refused->en; // the upper limit in volts
+    EXPECT_NE(refused->en.find("9.999"), std::string::npos)
+        << refused->en; // the upper limit in volts
     EXPECT_NE(refused->de.find("9,999"), std::string::npos) << refused->de;
     EXPECT_EQ(doc.value(0, row("C1.07")), dev::RawValue{1000.0});
 

@@ -1,11 +1,10 @@
 // The editor's item models (issue #7): QAbstractItemModelTester on the tree, its filter and the
 // compare model; typed input in either language; metadata roles for the delegates.
+#include "dict/dictionary_loader.h"
 #include "model/params/compare_model.h"
 #include "model/params/param_roles.h"
 #include "model/params/parameter_filter_model.h"
 #include "model/params/parameter_tree_model.h"
-
-#include "dict/dictionary_loader.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
@@ -16,10 +15,17 @@ namespace {
 
 using model::ParameterTreeModel;
 
-const dev::DictionarySet &dictionaries() { return *dev::builtinDictionaries(); }
-const dev::Dictionary &dma() { return *dictionaries().find("dma-pn-v51"); }
+const dev::DictionarySet &dictionaries()
+{
+    return *dev::builtinDictionaries();
+}
+const dev::Dictionary &dma()
+{
+    return *dictionaries().find("dma-pn-v51");
+}
 
-QModelIndex findName(const QAbstractItemModel &m, const QString &name, const QModelIndex &parent = {})
+QModelIndex findName(const QAbstractItemModel &m, const QString &name,
+                     const QModelIndex &parent = {})
 {
     for (int r = 0; r < m.rowCount(parent); ++r) {
         const QModelIndex i = m.index(r, 0, parent);
@@ -48,10 +54,12 @@ TEST(ParameterTreeModel, PassesTheModelTesterThroughEditsResetsAndFilters)
 {
     model::ParameterDocument doc;
     ParameterTreeModel tree(doc);
-    QAbstractItemModelTester treeTester(&tree, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    QAbstractItemModelTester treeTester(&tree,
+                                        QAbstractItemModelTester::FailureReportingMode::Fatal);
     model::ParameterFilterModel filter;
     filter.setSourceModel(&tree);
-    QAbstractItemModelTester filterTester(&filter, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    QAbstractItemModelTester filterTester(&filter,
+                                          QAbstractItemModelTester::FailureReportingMode::Fatal);
 
     doc.createNew({&dma(), "51", "3", 3, 2}, dictionaries());
     ASSERT_EQ(tree.rowCount(), 2);
@@ -64,7 +72,8 @@ TEST(ParameterTreeModel, PassesTheModelTesterThroughEditsResetsAndFilters)
     QStringList blocks;
     for (int r = 0; r < tree.rowCount(tree.moduleIndex(0)); ++r)
         blocks << tree.index(r, 0, tree.moduleIndex(0)).data().toString();
-    EXPECT_EQ(blocks, (QStringList{"d", "C", "E", "A", "L", "r", "S", "system"})); // no B (PROFIdrive) on PROFINET
+    EXPECT_EQ(blocks, (QStringList{"d", "C", "E", "A", "L", "r", "S",
+                                   "system"})); // no B (PROFIdrive) on PROFINET
 
     const QModelIndex value = c107.siblingAtColumn(ParameterTreeModel::ColValue);
     EXPECT_TRUE(tree.flags(value) & Qt::ItemIsEditable);
@@ -117,12 +126,14 @@ TEST(ParameterTreeModel, GermanInputUsesTheDecimalComma)
     EXPECT_TRUE(tree.setData(value, QStringLiteral("1,5")));
     EXPECT_EQ(doc.value(0, dma().find("C1.07")), dev::RawValue{1500.0});
     EXPECT_EQ(value.data().toString(), "1,500 V");
-    EXPECT_EQ(tree.headerData(ParameterTreeModel::ColValue, Qt::Horizontal).toString(), "Value"); // no catalogue loaded
+    EXPECT_EQ(tree.headerData(ParameterTreeModel::ColValue, Qt::Horizontal).toString(),
+              "Value"); // no catalogue loaded
 
     QSignalSpy refused(&tree, &ParameterTreeModel::editRefused);
     EXPECT_FALSE(tree.setData(value, QStringLiteral("12")));
     ASSERT_EQ(refused.size(), 1);
-    EXPECT_TRUE(refused.at(0).at(1).toString().contains(QStringLiteral("9,999"))) << refused.at(0).at(1).toString().toStdString();
+    EXPECT_TRUE(refused.at(0).at(1).toString().contains(QStringLiteral("9,999")))
+        << refused.at(0).at(1).toString().toStdString();
     EXPECT_EQ(doc.value(0, dma().find("C1.07")), dev::RawValue{1500.0});
 }
 
@@ -131,7 +142,8 @@ TEST(CompareModel, ListsDifferencesAndTakesTheChosenOnes)
     model::ParameterDocument doc;
     doc.createNew({&dma(), "51", "3", 3, 1}, dictionaries());
     model::CompareModel compare(doc);
-    QAbstractItemModelTester tester(&compare, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    QAbstractItemModelTester tester(&compare,
+                                    QAbstractItemModelTester::FailureReportingMode::Fatal);
 
     dev::files::ParamFile other = doc.toParamFile("test");
     compare.compareWithFile(other, QStringLiteral("same.vtpar"));
@@ -142,7 +154,8 @@ TEST(CompareModel, ListsDifferencesAndTakesTheChosenOnes)
             v.raw = 2000.0;
     compare.compareWithFile(other, QStringLiteral("other.vtpar"));
     ASSERT_EQ(compare.rowCount(), 2);
-    EXPECT_TRUE(compare.setData(compare.index(0, model::CompareModel::ColTake), Qt::Checked, Qt::CheckStateRole));
+    EXPECT_TRUE(compare.setData(compare.index(0, model::CompareModel::ColTake), Qt::Checked,
+                                Qt::CheckStateRole));
     EXPECT_EQ(compare.applyTaken(), 1);
     EXPECT_EQ(compare.rowCount(), 1);
     doc.undoStack()->undo();

@@ -5,9 +5,8 @@
 #include "model/params/device_jobs.h"
 #include "model/params/param_file_io.h"
 #include "model/params/parameter_tree_model.h"
-#include "session_fixture.h"
-
 #include "model/session/connection.h"
+#include "session_fixture.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -37,7 +36,8 @@ Connected connect(const std::string &family)
     EXPECT_TRUE(opened.wait(kWaitMs));
     for (int address : c.connection->moduleAddresses()) {
         std::optional<model::IdentifyResult> result;
-        c.connection->access().identify(address, [&](const model::IdentifyResult &r) { result = r; });
+        c.connection->access().identify(address,
+                                        [&](const model::IdentifyResult &r) { result = r; });
         EXPECT_TRUE(waitFor(result));
         if (result && result->ok)
             c.modules.push_back(result->module);
@@ -82,7 +82,8 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("press.vtpar"));
-    ASSERT_FALSE(model::saveParamFile(path, doc.toParamFile("ValveTune test"), dictionaries(), dev::Language::English));
+    ASSERT_FALSE(model::saveParamFile(path, doc.toParamFile("ValveTune test"), dictionaries(),
+                                      dev::Language::English));
     doc.markSaved(path);
 
     auto reread = model::readParamFile(path, dev::Language::English);
@@ -113,7 +114,9 @@ TEST(ParamsDevice, ReadFileRefusesOversizeAndGarbage)
     const auto result = model::readParamFile(garbage, dev::Language::English);
     ASSERT_FALSE(result.ok());
     EXPECT_FALSE(result.error().isEmpty());
-    EXPECT_FALSE(model::readParamFile(dir.filePath(QStringLiteral("missing.vtpar")), dev::Language::English).ok());
+    EXPECT_FALSE(
+        model::readParamFile(dir.filePath(QStringLiteral("missing.vtpar")), dev::Language::English)
+            .ok());
 }
 
 } // namespace

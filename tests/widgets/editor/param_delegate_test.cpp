@@ -1,12 +1,11 @@
 // ParamDelegate (issue #7): the editor a row gets follows its metadata — no editor for read-only
 // rows, the enum labels as a list, bits as a checklist, the range and unit shown on a number
 // field — and committing goes through the model, which refuses out-of-range input.
+#include "dict/dictionary_loader.h"
 #include "model/params/param_roles.h"
 #include "model/params/parameter_tree_model.h"
 #include "widgets/editor/param_delegate.h"
 #include "widgets/editor/parameter_editor.h"
-
-#include "dict/dictionary_loader.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -15,7 +14,6 @@
 #include <QStyleOptionViewItem>
 #include <QTextBrowser>
 #include <QTreeView>
-
 #include <gtest/gtest.h>
 
 namespace vt::test {
@@ -32,8 +30,14 @@ struct DelegateFixture : ::testing::Test
     QWidget parent;
 
     void SetUp() override { doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries()); }
-    QModelIndex value(const char *name) { return tree.indexOf(0, dma.find(name), ParameterTreeModel::ColValue); }
-    QWidget *editorFor(const char *name) { return delegate.createEditor(&parent, QStyleOptionViewItem(), value(name)); }
+    QModelIndex value(const char *name)
+    {
+        return tree.indexOf(0, dma.find(name), ParameterTreeModel::ColValue);
+    }
+    QWidget *editorFor(const char *name)
+    {
+        return delegate.createEditor(&parent, QStyleOptionViewItem(), value(name));
+    }
 };
 
 TEST_F(DelegateFixture, ReadOnlyRowsGetNoEditor)
@@ -78,7 +82,8 @@ TEST_F(DelegateFixture, BitFieldsAreAChecklist)
     for (const std::string &family : dev::builtinDictionaries()->families()) {
         const dev::Dictionary *d = dev::builtinDictionaries()->find(family);
         for (const dev::ParamMeta &row : d->params)
-            if (!bits && row.writable() && !row.bits.empty() && row.enums.empty() && row.access == dev::Access::ReadWrite) {
+            if (!bits && row.writable() && !row.bits.empty() && row.enums.empty() &&
+                row.access == dev::Access::ReadWrite) {
                 dict = d;
                 bits = &row;
             }
@@ -87,12 +92,15 @@ TEST_F(DelegateFixture, BitFieldsAreAChecklist)
         GTEST_SKIP() << "no writable bit-field row in the built-in dictionaries";
     model::ParameterDocument other;
     ParameterTreeModel otherTree(other);
-    const std::string mode = !bits->modes.empty() ? bits->modes.front()
-                             : dict->modes.empty() ? std::string() : dict->modes.front();
-    other.createNew({dict, dict->versions.empty() ? std::string() : dict->versions.front(), mode, -1, 1},
-                    *dev::builtinDictionaries());
+    const std::string mode = !bits->modes.empty()  ? bits->modes.front()
+                             : dict->modes.empty() ? std::string()
+                                                   : dict->modes.front();
+    other.createNew(
+        {dict, dict->versions.empty() ? std::string() : dict->versions.front(), mode, -1, 1},
+        *dev::builtinDictionaries());
     const QModelIndex index = otherTree.indexOf(0, bits, ParameterTreeModel::ColValue);
-    auto *list = qobject_cast<QListWidget *>(delegate.createEditor(&parent, QStyleOptionViewItem(), index));
+    auto *list =
+        qobject_cast<QListWidget *>(delegate.createEditor(&parent, QStyleOptionViewItem(), index));
     ASSERT_NE(list, nullptr) << bits->name;
     EXPECT_EQ(list->count(), static_cast<int>(bits->bits.size()));
     list->item(0)->setCheckState(Qt::Checked);
@@ -109,7 +117,8 @@ TEST(ParameterEditorWidget, RefusalIsShownUnderTheTreeAndFiltersHideRows)
     editor.show();
     doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries());
     ASSERT_TRUE(editor.selectParameter(0, dma.find("C1.07")));
-    const QModelIndex source = editor.treeModel()->indexOf(0, dma.find("C1.07"), ParameterTreeModel::ColValue);
+    const QModelIndex source =
+        editor.treeModel()->indexOf(0, dma.find("C1.07"), ParameterTreeModel::ColValue);
     EXPECT_FALSE(editor.treeModel()->setData(source, QStringLiteral("99")));
     EXPECT_TRUE(editor.messageLabel()->isVisible());
     EXPECT_TRUE(editor.messageLabel()->text().contains(QStringLiteral("9.999")));
