@@ -1,4 +1,4 @@
-// The live monitor's redraw cost (issue #8 benchmark): MonitorPlot loads 5 channels × 100 000
+// The live monitor's redraw cost: MonitorPlot loads 5 channels × 100 000
 // samples from a SampleStore and replots offscreen at a fixed size, with min/max decimation to
 // about one pair per pixel against the same data handed to QCustomPlot whole (its own adaptive
 // sampling on, as shipped, and off), in the same run. Results: docs/PERFORMANCE.md.

@@ -1,7 +1,7 @@
-// What does min/max decimation (STYLE.md rule 10, issue #8) cost against handing the plot a
+// What does min/max decimation (STYLE.md rule 10) cost against handing the plot a
 // plain copy of the range? 5 channels × 100 000 rows (8.3 min at 200 Hz) in a wrapped ring,
 // decimated to 1 000 buckets (a wide plot, one min/max pair per pixel) per channel.
-#include "model/sample_store.h"
+#include "model/monitor/sample_store.h"
 
 #include <benchmark/benchmark.h>
 #include <cmath>

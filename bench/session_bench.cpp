@@ -1,4 +1,4 @@
-// End-to-end benchmarks of the session engine (issue #6), each against a baseline in the same run:
+// End-to-end benchmarks of the session engine, each against a baseline in the same run:
 //  1. Read all parameters of a DMA-2 module from valvetune-sim on a pseudo-terminal: ValveTune's
 //     Session (SerialLink → Modbus RTU adapter) against a libmodbus master reading the same
 //     register blocks from the same simulator. Reported: time per read-all and the ratio.
@@ -10,8 +10,8 @@
 #include "access/hcs_rows.h"
 #include "access/modbus_adapter.h"
 #include "dict/dictionary_loader.h"
+#include "model/monitor/monitor_scheduler.h"
 #include "model/session/device_access.h"
-#include "model/session/monitor_scheduler.h"
 #include "model/session/session.h"
 #include "model/session/sim_endpoint.h"
 #include "transports/serial_link.h"

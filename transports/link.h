@@ -1,7 +1,8 @@
 // Link: the one narrow interface every byte mover implements (serial, TCP, CAN, in-process
 // simulator, fault injection). A link moves whole frames or raw byte chunks; it knows nothing
-// of protocols. Owned by the session that opened it; lives on the thread it was created on and
-// is used only from there (blocking links run their I/O on a worker behind queued signals).
+// of protocols. Owned by the model::Connection that made it (a FaultLink owns the link it wraps);
+// the Session only uses it. Lives on the thread it was created on and is used only from there
+// (blocking links run their I/O on a worker behind queued signals).
 #pragma once
 
 #include <QByteArray>

@@ -1,4 +1,4 @@
-// valvetune-cli fold: the module-fold PLC plan (issue #9) without the GUI.
+// valvetune-cli fold: the module-fold PLC plan without the GUI.
 //   fold plan --node opat|dma-pb|dma-pn --modules N [--product NUMBER] [--lang en|de]
 // prints what the PLC programmer configures for a node with N modules in all (OPAT: the master
 // plus N-1 CAN slaves): GSD file and module, output/input lengths and the byte map per module.
@@ -131,7 +131,7 @@ int runPlan(QStringList rest, Context &ctx)
     if (product)
         plan.productNumber = product->toStdString();
     const auto config = model::buildPlcConfig(plan);
-    if (!config.ok()) // an impossible plan is a usage error that says why (issue #9)
+    if (!config.ok()) // an impossible plan is a usage error that says why
         return ctx.fail(kExitUsage, "fold plan: " + config.error().in(lang));
 
     if (ctx.json)

@@ -7,7 +7,7 @@
 #include "commands.h"
 #include "device_run.h"
 #include "dict/cooking.h"
-#include "model/session/monitor_scheduler.h"
+#include "model/monitor/monitor_scheduler.h"
 
 #include <QElapsedTimer>
 #include <QTimer>

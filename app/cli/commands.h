@@ -19,7 +19,7 @@ int runWrite(const QStringList &args, Context &ctx);
 int runDiff(const QStringList &args, Context &ctx);
 int runMonitor(const QStringList &args, Context &ctx);
 
-// Module-fold PLC plan (issue #9): cmd_fold.cpp.
+// Module-fold PLC plan: cmd_fold.cpp.
 int runFold(const QStringList &args, Context &ctx);
 
 } // namespace vt::cli

@@ -1,7 +1,7 @@
 #include "workspace.h"
 
-#include "model/session/monitor_scheduler.h"
-#include "model/session/telegram_recorder.h"
+#include "model/monitor/monitor_scheduler.h"
+#include "model/telegrams/telegram_recorder.h"
 
 namespace vt::app {
 

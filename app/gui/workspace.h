@@ -6,7 +6,7 @@
 
 #include "model/params/parameter_document.h"
 #include "model/session/connection.h"
-#include "model/telegram_log.h"
+#include "model/telegrams/telegram_log.h"
 
 #include <QObject>
 #include <memory>

@@ -1,4 +1,4 @@
-// CSV export of one module's values (issue #7, "Export CSV"), for spreadsheets and commissioning
+// CSV export of one module's values, for spreadsheets and commissioning
 // reports: name, label, value, unit, raw, range, access. English files use ',' between fields and
 // '.' as decimal sign, German ones ';' and ',' (what spreadsheets expect in each locale); the
 // header comment states both. One-way: files are read back from .vtpar, never from CSV. Pure,

@@ -1,8 +1,7 @@
 // Parameter files (.vtpar, docs/FILE-FORMAT.md): the in-memory document and its JSON codec.
 // Raw values are authoritative, display texts are for people and never read back, and keys and
-// rows this version does not know are kept and written back unchanged (issue #7: nothing is
-// dropped on save). Pure functions; a ParamFile is a plain value owned by its caller (any thread,
-// one at a time).
+// rows this version does not know are kept and written back unchanged. Pure functions; a ParamFile
+// is a plain value owned by its caller (any thread, one at a time).
 #pragma once
 
 #include "core/local_text.h"

@@ -1,6 +1,5 @@
-// Mapping a module of a parameter file onto a dictionary (issue #7: a file from another version
-// opens with a clear report of what did not map). Every file row gets a status and, unless it
-// mapped plainly, a reason in both languages; dictionary rows the file does not set are listed
+// Mapping a module of a parameter file onto a dictionary. Every file row gets a status and, unless
+// it mapped plainly, a reason in both languages; dictionary rows the file does not set are listed
 // too. The report is what the GUI's "what did not map" dialog and the CLI print. Pure, any
 // thread; the report points into the dictionary, which must outlive it (builtinDictionaries()
 // does).

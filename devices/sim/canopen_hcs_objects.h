@@ -2,7 +2,7 @@
 // is object 0x2000 + n, sub-index 0, unless the row names its own `canopen` object
 // (ARCHITECTURE.md "CAN", docs/DICTIONARY.md). Values are the 16-bit words of the HCS telegrams
 // (int8/int16 rows sign-extended). Any image that is a ParamSource/ParamSink plugs in (the
-// colleague's HcsStorage is both); `lookup` says which rows the module has (version and mode).
+// HcsStorage is both); `lookup` says which rows the module has (version and mode).
 // Owner: whoever builds the simulator; single-threaded. Dictionary and image must outlive it.
 #pragma once
 

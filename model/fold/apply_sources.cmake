@@ -1,4 +1,4 @@
-# Applying a fold plan to a node and the PLC test bench (issue #9 part B).
+# Applying a fold plan to a node and the PLC test bench.
 target_sources(vt_model PRIVATE
     ${CMAKE_CURRENT_LIST_DIR}/fold_apply_moves.h ${CMAKE_CURRENT_LIST_DIR}/fold_apply_moves.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fold_apply.h ${CMAKE_CURRENT_LIST_DIR}/fold_apply.cpp

@@ -53,26 +53,23 @@ void FoldApply::start()
 {
     if (isRunning())
         return;
-    m_todo.clear();
+    std::vector<std::size_t> all;
     for (std::size_t i = 0; i < m_modules.size(); ++i)
-        m_todo.push_back(i);
-    m_guided = false;
-    m_cancelled = false;
-    ++m_generation;
-    m_phase = Phase::Options;
-    m_cursor = 0;
-    QTimer::singleShot(0, this, [this, g = m_generation] {
-        if (alive(g))
-            nextOptions();
-    });
+        all.push_back(i);
+    begin(std::move(all), false);
 }
 
 void FoldApply::applyModule(std::size_t index)
 {
     if (isRunning() || index >= m_modules.size())
         return;
-    m_todo = {index};
-    m_guided = true;
+    begin({index}, true);
+}
+
+void FoldApply::begin(std::vector<std::size_t> todo, bool guided)
+{
+    m_todo = std::move(todo);
+    m_guided = guided;
     m_cancelled = false;
     ++m_generation;
     m_phase = Phase::Options;

@@ -1,4 +1,4 @@
-// FoldApply: puts a FoldPlan onto a live node (issue #9 step 6) — each module's bus options
+// FoldApply: puts a FoldPlan onto a live node — each module's bus options
 // written with WriteJob (range-checked, paced, read back), DMA addresses (E22) changed in an order
 // that never gives two modules the same address, then a scan that identifies every address the
 // plan expects. For a point-to-point serial line the wizard runs one module at a time
@@ -67,6 +67,8 @@ signals:
 private:
     enum class Phase { Idle, Options, Addresses, Scan };
 
+    // Starts the option writes over `todo`; guided: one module on a point-to-point line.
+    void begin(std::vector<std::size_t> todo, bool guided);
     void nextOptions();
     void identifyThenWrite(std::size_t index);
     void writeOptions(std::size_t index);

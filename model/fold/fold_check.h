@@ -1,4 +1,4 @@
-// Checks of a FoldPlan before it is applied or handed to the PLC programmer (issue #9 step 5):
+// Checks of a FoldPlan before it is applied or handed to the PLC programmer:
 // duplicate addresses, ranges against the dictionaries, CMD 15 limits, SNUM, mixed modes.
 #pragma once
 

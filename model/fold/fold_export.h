@@ -1,4 +1,4 @@
-// Printable PLC sheets of a fold plan (issue #9 step 7): HTML for the browser/printer, PDF
+// Printable PLC sheets of a fold plan: HTML for the browser/printer, PDF
 // rendered offscreen through QTextDocument + QPdfWriter (QtGui only), and CSV of the byte maps.
 #pragma once
 

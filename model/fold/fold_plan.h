@@ -1,6 +1,6 @@
 // FoldPlan: what one multi-module node (a "fold") should look like — node type, its modules with
 // software version, mode, address and bus options — as a plain value the wizard, the CLI, the
-// checks, the PLC configuration and the plan file share (issue #9). Qt-free (strings are UTF-8)
+// checks, the PLC configuration and the plan file share. Qt-free (strings are UTF-8)
 // so the plan file parser can be fuzzed like the devices/ codecs.
 #pragma once
 

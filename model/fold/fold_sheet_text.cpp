@@ -1,4 +1,4 @@
-// foldSheetText: the plain-text PLC sheet printed by `valvetune-cli fold plan` (issue #9 CLI).
+// foldSheetText: the plain-text PLC sheet printed by `valvetune-cli fold plan`.
 #include "core/hex.h"
 #include "fold_export.h"
 

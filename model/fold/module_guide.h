@@ -1,4 +1,4 @@
-// What the technician does at the node for a fold plan (issue #9 steps 3 and 6): which module
+// What the technician does at the node for a fold plan: which module
 // gets which address and how (DMA: E22 left to right; OPAT: the master is SADR 0, the slaves by
 // rotary switch), the E24 "126 = set by the master" rule with its power-cycle note, and the
 // cable instruction of a point-to-point apply. Texts in both languages; any thread.

@@ -1,4 +1,4 @@
-# Fold plan logic (issue #9 part A): plan value, checks, PLC configuration, plan file, exports.
+# Fold plan logic: plan value, checks, PLC configuration, plan file, exports.
 target_sources(vt_model PRIVATE
     ${CMAKE_CURRENT_LIST_DIR}/fold_plan.h ${CMAKE_CURRENT_LIST_DIR}/fold_plan.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fold_check.h ${CMAKE_CURRENT_LIST_DIR}/fold_check.cpp

@@ -1,4 +1,4 @@
-// The PLC side of a fold plan (issue #9 step 7): which GSD/GSDML file and module to install, the
+// The PLC side of a fold plan: which GSD/GSDML file and module to install, the
 // CMD 15 output and input images byte by byte per module, control/status bits per module mode and
 // an example telegram built with the CMD 15 codec. Pure value, built from a FoldPlan.
 #pragma once

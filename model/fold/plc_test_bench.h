@@ -1,6 +1,6 @@
 // PlcTestBench: what a PLC programmer does in the manuals' S7 examples, done from the PC — CMD 15
 // sent cyclically over a node image link with per-module set values and a toggling TADR, each
-// multiplexed answer decoded and filed under the module that gave it (issue #9, step 8).
+// multiplexed answer decoded and filed under the module that gave it.
 // Owner: the fold wizard or a test; GUI thread (the session's), which must outlive the bench.
 #pragma once
 

@@ -1,11 +1,10 @@
-// Linked navigation between the telegram log and the parameters (issue #8 "from a parameter in
-// the editor jump to its last frames; from a frame jump to its parameter"). A request names its
+// Linked navigation between the telegram log and the parameters. A request names its
 // parameters; an answer belongs to the request of its module just before it.
 // Pure functions over a TelegramLog; GUI thread (the log's).
 #pragma once
 
 #include "hcs/types.h"
-#include "model/telegram_log.h"
+#include "model/telegrams/telegram_log.h"
 
 #include <QList>
 #include <QStringList>

@@ -1,4 +1,4 @@
-// The monitor's CSV export (issue #8): the samples of every monitored module in one SampleStore
+// The monitor's CSV export: the samples of every monitored module in one SampleStore
 // CSV (SampleStore's format, docs/MONITOR.md), with the tuning journal's markers. Modules poll on
 // their own, so their rows are merged in time order and each row leaves the other modules' cells
 // empty. GUI thread (reads the stores).

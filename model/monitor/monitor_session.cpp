@@ -1,7 +1,7 @@
 #include "monitor_session.h"
 
+#include "model/monitor/monitor_recording.h"
 #include "model/session/connection.h"
-#include "model/session/monitor_recording.h"
 
 #include <algorithm>
 #include <cmath>

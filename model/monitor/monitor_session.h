@@ -1,14 +1,14 @@
-// MonitorSession: the live monitor's model (issue #8) — which d-values of which modules are
+// MonitorSession: the live monitor's model — which d-values of which modules are
 // polled, at what rate, into one bounded SampleStore per module (display units), plus the tuning
 // journal of parameter writes on the same time axis (Session::elapsedNs, in seconds).
 // Owner: the MonitorView; GUI thread. It owns the MonitorScheduler it creates and stops it on
 // clearConnection(); the stores survive a disconnect so the recording can still be exported.
 #pragma once
 
+#include "model/monitor/monitor_scheduler.h"
+#include "model/monitor/sample_store.h"
 #include "model/monitor/tuning_journal.h"
-#include "model/sample_store.h"
 #include "model/session/device_access.h"
-#include "model/session/monitor_scheduler.h"
 
 #include <QObject>
 #include <map>
@@ -19,7 +19,7 @@ namespace vt::model {
 
 class Connection;
 
-// The default plot (issue #8): desired and actual value, solenoid currents A, B and total —
+// The default plot: desired and actual value, solenoid currents A, B and total —
 // d1.10, d1.11, d1.07, d1.08, d1.09 where the dictionary has them, else defaultMonitorRows().
 std::vector<const dev::ParamMeta *> defaultPlotRows(const dev::Dictionary &dictionary);
 // Every readable d-value of the module's version and mode (the channel chooser's list).

@@ -1,4 +1,4 @@
-// SetValueStep: the monitor's step test (issue #8) — writes a bus set value A1.01 / A2.01 so an
+// SetValueStep: the monitor's step test — writes a bus set value A1.01 / A2.01 so an
 // engineer can watch the controller answer. The bus set value is always active once written,
 // but the analogue set value is added to it unless E17 = 2 (DMA Profinet manual ID 0x1F: "For
 // switching off of the analogue set-value, set E17 = 2"; OPAT manual §5.3: "If only the set value

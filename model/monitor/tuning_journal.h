@@ -1,10 +1,10 @@
-// TuningJournal: the monitor's record of parameter writes (issue #8 "tuning journal"), one
+// TuningJournal: the monitor's record of parameter writes, one
 // marker per value that reached the device, on the samples' time axis ("C1.07 0.800 V → 1.000 V").
 // A plain value owned by the MonitorSession; GUI thread only.
 #pragma once
 
 #include "core/local_text.h"
-#include "model/sample_store.h"
+#include "model/monitor/sample_store.h"
 #include "model/session/write_record.h"
 
 #include <QCoreApplication>

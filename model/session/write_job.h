@@ -1,4 +1,4 @@
-// WriteJob: the safe write of issue #6 — every value range-checked against the dictionary before
+// WriteJob: the safe write — every value range-checked against the dictionary before
 // anything is sent, only changed values, one at a time paced by the dictionary's write_pacing
 // (DMA Profinet manual §3.4.1: ≥ 30 ms), each read back and compared. A job stopped by a lost
 // link keeps a precise WriteRecord and resume() finishes it: rows whose write may have arrived

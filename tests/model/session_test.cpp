@@ -1,10 +1,10 @@
 // The session engine against the built-in simulator (issue #6 "Session"): identify, read all in
 // blocks of ≤ 8 consecutive IDs, priorities, timeouts and retries, link loss.
 #include "dict/cooking.h"
-#include "model/session/monitor_recording.h"
-#include "model/session/monitor_scheduler.h"
-#include "model/session/telegram_recorder.h"
-#include "model/telegram_log.h"
+#include "model/monitor/monitor_recording.h"
+#include "model/monitor/monitor_scheduler.h"
+#include "model/telegrams/telegram_log.h"
+#include "model/telegrams/telegram_recorder.h"
 #include "session_fixture.h"
 
 #include <QSignalSpy>

@@ -1,4 +1,4 @@
-// FoldWizard: sets up a multi-module HCS node and produces its PLC configuration (issue #9):
+// FoldWizard: sets up a multi-module HCS node and produces its PLC configuration:
 // node type, modules (scanned or planned), addresses, bus options, checks, apply to the node,
 // PLC sheet with exports and the .vtfold plan file, and a CMD 15 test bench. The plan
 // (model::FoldPlan) is the wizard's one state; every page reads and edits it.

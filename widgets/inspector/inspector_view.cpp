@@ -8,7 +8,7 @@
 #include "inspect/logged_frame.h"
 #include "model/inspect/frame_links.h"
 #include "model/session/connection.h"
-#include "model/telegram_log_model.h"
+#include "model/telegrams/telegram_log_model.h"
 #include "model/text_language.h"
 
 #include <QCheckBox>

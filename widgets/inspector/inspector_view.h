@@ -1,4 +1,4 @@
-// InspectorView: the telegram inspector (issue #8) — the live list of every frame in and out with
+// InspectorView: the telegram inspector — the live list of every frame in and out with
 // filters, pause, clear and save; the selected frame's field tree and hex view; a decode box for
 // pasted frames and a composer that sends on the current link; linked navigation between frames
 // and parameters. Owner: the main window; GUI thread only. The log and the connection are not
@@ -6,7 +6,7 @@
 #pragma once
 
 #include "model/session/device_access.h"
-#include "model/telegram_log.h"
+#include "model/telegrams/telegram_log.h"
 
 #include <QPointer>
 #include <QWidget>

@@ -4,7 +4,7 @@
 // It draws only when told (refresh()); the MonitorView coalesces. GUI thread.
 #pragma once
 
-#include "model/sample_store.h"
+#include "model/monitor/sample_store.h"
 
 #include <QString>
 #include <optional>

@@ -1,4 +1,4 @@
-// MonitorView: the live monitor dock (issue #8) — polls chosen d-values of the connected modules
+// MonitorView: the live monitor dock — polls chosen d-values of the connected modules
 // into bounded stores (model::MonitorSession) and plots them with coalesced redraws (≤ 25/s,
 // only while visible), rate and window controls, pause, zoom/pan, a cursor read-out, the tuning
 // journal's write markers, a set value step, and CSV / PNG / PDF export. GUI thread.

@@ -1,4 +1,4 @@
-// StepControl: the monitor's set value step (issue #8) — pick a module and its bus set value
+// StepControl: the monitor's set value step — pick a module and its bus set value
 // (A1.01 / A2.01), a value in display units, and write it through model::SetValueStep, which
 // checks E17 first. A refusal is shown inline with the manuals' reason and an offer to set
 // E17 = 2. GUI thread.

@@ -3,7 +3,7 @@
 // text), and linked navigation in both directions.
 #include "canopen/can_frame.h"
 #include "model/inspect/field_tree_model.h"
-#include "model/telegram_log_model.h"
+#include "model/telegrams/telegram_log_model.h"
 #include "sim_connection.h"
 #include "widgets/inspector/compose_panel.h"
 #include "widgets/inspector/frame_detail.h"

@@ -4,8 +4,8 @@
 
 #include "dict/dictionary_loader.h"
 #include "model/session/connection.h"
-#include "model/session/telegram_recorder.h"
-#include "model/telegram_log.h"
+#include "model/telegrams/telegram_log.h"
+#include "model/telegrams/telegram_recorder.h"
 
 #include <QSignalSpy>
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
-// Puts a MonitorScheduler's samples of one module into a bounded SampleStore (issue #6 "samples
-// go to a bounded store"), cooked to display units (raw × scale) so the plot and the CSV export
-// read what the engineer reads. Same thread as the scheduler; the store must outlive the
-// connection (disconnect it, or destroy the scheduler, before the store goes).
+// Puts a MonitorScheduler's samples of one module into a bounded SampleStore, cooked to display
+// units (raw × scale) so the plot and the CSV export read what the engineer reads. Same thread as
+// the scheduler; the store must outlive the connection (disconnect it, or destroy the scheduler,
+// before the store goes).
 #pragma once
 
 #include "core/local_text.h"
-#include "model/sample_store.h"
-#include "model/session/monitor_scheduler.h"
+#include "model/monitor/monitor_scheduler.h"
+#include "model/monitor/sample_store.h"
 
 namespace vt::model {
 

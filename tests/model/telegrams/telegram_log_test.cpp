@@ -1,7 +1,7 @@
 // TelegramLog: issue #6 (bounded log of every frame, monotonic time, link) and the store side
 // of issue #8 (inspector: filters, pause, clear, CSV and text export).
 #include "modbus/crc.h"
-#include "model/telegram_log.h"
+#include "model/telegrams/telegram_log.h"
 
 #include <QBuffer>
 #include <QSignalSpy>

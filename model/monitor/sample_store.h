@@ -1,4 +1,4 @@
-// SampleStore: the live monitor's bounded ring of polled values (issue #8) — one shared
+// SampleStore: the live monitor's bounded ring of polled values — one shared
 // timestamp per row, because the session polls a module's d-block in one request — with
 // min/max decimation for the plot and time markers for the tuning journal's parameter writes.
 // Owner: the monitor's session owner; GUI thread only (no locking; the session appends there).

@@ -1,7 +1,7 @@
 // TelegramRecorder: puts every frame a Session sends and receives, and every attempt that timed
-// out, into a TelegramLog with the link and protocol it used (issue #6 "Every frame in and out
-// goes to a bounded telegram log"). Owner: the connection; same thread as the session and the
-// log, which must both outlive it (it disconnects when either goes).
+// out, into a TelegramLog with the link and protocol it used. Owner: the GUI's Workspace (one per
+// connection); same thread as the session and the log, which must both outlive it (it
+// disconnects when either goes).
 #pragma once
 
 #include <QObject>

@@ -1,5 +1,5 @@
-// TelegramLog: the bounded record of every frame in and out of a session (issue #6) that the
-// telegram inspector lists, filters and saves (issue #8). Owner: the session's owner (app);
+// TelegramLog: the bounded record of every frame in and out of a session that the
+// telegram inspector lists, filters and saves. Owner: the session's owner (app);
 // GUI thread only — appends, reads and signals all happen on the thread the log lives on.
 #pragma once
 
@@ -129,7 +129,7 @@ public:
     // Emits the pending trimmed()/appended() now instead of on the coalescing timer.
     void flush();
 
-    // Saving (issue #8). CSV keeps machine keys (stable for scripts), the text dump is for people.
+    // Saving. CSV keeps machine keys (stable for scripts), the text dump is for people.
     // Both write only records the filter accepts; false (and *error) on a write error.
     bool writeCsv(QIODevice &out, const SummaryOptions &options = {},
                   const TelegramFilter &filter = {}, QString *error = nullptr) const;

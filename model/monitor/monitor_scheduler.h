@@ -2,7 +2,9 @@
 // request for d1.07..d1.13 on HCS: ARCHITECTURE.md "Monitor"), at monitor priority so user
 // actions go first, and reports each sample and the rate actually achieved. A poll is never
 // queued behind its own predecessor: when the link cannot keep up, samples are skipped and
-// the achieved rate says so. Owner: the connection; same thread as the DeviceAccess.
+// the achieved rate says so. Owner: whoever polls — a MonitorSession for the monitor, the GUI's
+// Workspace for the editor's live display values; same thread as the DeviceAccess, which must
+// outlive it.
 #pragma once
 
 #include "model/session/device_access.h"

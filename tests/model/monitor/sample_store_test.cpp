@@ -1,6 +1,6 @@
 // SampleStore: issue #8 — a ring sized for ≥ 1 h at 200 Hz for 5 channels with a stated,
 // fixed memory footprint, and min/max decimation to about one pair per pixel.
-#include "model/sample_store.h"
+#include "model/monitor/sample_store.h"
 
 #include <QBuffer>
 #include <QLocale>

@@ -1,7 +1,7 @@
 #include "telegram_recorder.h"
 
 #include "model/session/session.h"
-#include "model/telegram_log.h"
+#include "model/telegrams/telegram_log.h"
 #include "transports/link.h"
 
 namespace vt::model {

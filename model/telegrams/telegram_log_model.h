@@ -1,4 +1,4 @@
-// TelegramLogModel: the telegram inspector's table over a TelegramLog (issue #8), with the
+// TelegramLogModel: the telegram inspector's table over a TelegramLog, with the
 // inspector's filters built in. Follows the log incrementally: new records become rows at the
 // bottom, records the ring drops leave from the top. Owner: the inspector; GUI thread only
 // (the thread of its log). The log must outlive the model.

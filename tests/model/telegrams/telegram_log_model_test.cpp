@@ -1,6 +1,6 @@
 // TelegramLogModel: the inspector's table (issue #8) follows the bounded log row by row —
 // appended at the bottom, dropped from the top — and filters by module, protocol and errors.
-#include "model/telegram_log_model.h"
+#include "model/telegrams/telegram_log_model.h"
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
