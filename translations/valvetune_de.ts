@@ -653,6 +653,10 @@
         <source>not readable over %1</source>
         <translation>über %1 nicht lesbar</translation>
     </message>
+    <message>
+        <source>the module did not identify itself</source>
+        <translation>das Modul hat sich nicht zu erkennen gegeben</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::FieldTreeModel</name>
@@ -1232,18 +1236,6 @@
         <translation>unbekannter Parameter</translation>
     </message>
     <message>
-        <source>%1 expects %2</source>
-        <translation>%1 erwartet %2</translation>
-    </message>
-    <message>
-        <source>text</source>
-        <translation>Text</translation>
-    </message>
-    <message>
-        <source>a number</source>
-        <translation>eine Zahl</translation>
-    </message>
-    <message>
         <source>%1 is not writable</source>
         <translation>%1 ist nicht beschreibbar</translation>
     </message>
@@ -1310,6 +1302,14 @@
     <message>
         <source>not sent</source>
         <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1 expects text</source>
+        <translation>%1 erwartet einen Text</translation>
+    </message>
+    <message>
+        <source>%1 expects a number</source>
+        <translation>%1 erwartet eine Zahl</translation>
     </message>
 </context>
 <context>
