@@ -834,6 +834,29 @@
         <source>Revert to file</source>
         <translation>Auf Dateiwerte zurücksetzen</translation>
     </message>
+    <message>
+        <source>No such parameter.</source>
+        <translation>Diesen Parameter gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>%1 is read only.</source>
+        <translation>%1 ist nur lesbar.</translation>
+    </message>
+    <message>
+        <source>%1 takes a text.</source>
+        <translation>%1 nimmt einen Text.</translation>
+    </message>
+    <message>
+        <source>%1 takes a number.</source>
+        <translation>%1 nimmt eine Zahl.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 takes at most %n character(s).</source>
+        <translation>
+            <numerusform>%1 nimmt höchstens %n Zeichen.</numerusform>
+            <numerusform>%1 nimmt höchstens %n Zeichen.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>vt::model::ParameterTreeModel</name>
@@ -922,6 +945,10 @@
     <message>
         <source>Branch %1</source>
         <translation>Zweig %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
