@@ -761,6 +761,37 @@
     </message>
 </context>
 <context>
+    <name>vt::model::LCurve</name>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>%1 is not active on this device</source>
+        <translation>%1 ist in diesem Gerät nicht aktiv</translation>
+    </message>
+    <message>
+        <source>%1 is fixed by the device at %2</source>
+        <translation>%1 ist vom Gerät fest auf %2 gesetzt</translation>
+    </message>
+    <message>
+        <source>%1 has no point %2</source>
+        <translation>%1 hat keinen Punkt %2</translation>
+    </message>
+    <message>
+        <source>%1: not a number</source>
+        <translation>%1: keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1 must be above %2 (%3)</source>
+        <translation>%1 muss größer als %2 (%3) sein</translation>
+    </message>
+    <message>
+        <source>%1 must be below %2 (%3)</source>
+        <translation>%1 muss kleiner als %2 (%3) sein</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::LCurveTableModel</name>
     <message>
         <source>P%1</source>
@@ -785,6 +816,10 @@
     <message>
         <source>%1 y (%2)</source>
         <translation>%1 y (%2)</translation>
+    </message>
+    <message>
+        <source>no such point</source>
+        <translation>kein solcher Punkt</translation>
     </message>
 </context>
 <context>
