@@ -2,10 +2,14 @@
 // rendered offscreen through QTextDocument + QPdfWriter (QtGui only), and CSV of the byte maps.
 #pragma once
 
+// clang-format off
+// First: devices/hcs/status_bits.h (via plc_config.h) has a member named `signals`, which Qt's
+// keyword macro would rewrite once a Qt header defined it.
+#include "plc_config.h"
+// clang-format on
 #include "core/local_text.h"
 #include "fold_check.h"
 #include "fold_plan.h"
-#include "plc_config.h"
 
 #include <QString>
 #include <optional>
