@@ -653,6 +653,10 @@
         <source>not readable over %1</source>
         <translation>über %1 nicht lesbar</translation>
     </message>
+    <message>
+        <source>the module did not identify itself</source>
+        <translation>das Modul hat sich nicht zu erkennen gegeben</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::FieldTreeModel</name>
@@ -757,6 +761,283 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldCheck</name>
+    <message>
+        <source>The plan has no modules.</source>
+        <translation>Der Plan enthält keine Module.</translation>
+    </message>
+    <message>
+        <source>%1 modules: an OPAT node has the master and at most 7 CAN slaves (rotary switch 1 … 7; OPAT manual §1.4).</source>
+        <translation>%1 Module: Ein OPAT-Knoten hat den Master und höchstens 7 CAN-Slaves (Drehschalter 1 … 7; OPAT-Handbuch §1.4).</translation>
+    </message>
+    <message>
+        <source>%1 modules: a DMA node addresses at most 32 modules (E22 = 1 … 32; DMA Profibus Anleitung §1.5, DMA Profinet manual §1.5).</source>
+        <translation>%1 Module: Ein DMA-Knoten adressiert höchstens 32 Module (E22 = 1 … 32; DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5).</translation>
+    </message>
+    <message>
+        <source>%1 DMA modules: CMD 15 reaches E22 = 1 … 5 only. Modules above 5 can be reached by CMD 3 / CMD 6 only and cannot be part of the cyclic PLC image (DMA Profibus Anleitung §1.5, DMA Profinet manual §1.5). Plan at most 5 modules for CMD 15.</source>
+        <translation>%1 DMA-Module: CMD 15 erreicht nur E22 = 1 … 5. Module über 5 sind nur mit CMD 3 / CMD 6 erreichbar und können nicht Teil des zyklischen SPS-Abbilds sein (DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5). Für CMD 15 höchstens 5 Module planen.</translation>
+    </message>
+    <message>
+        <source>The product number &quot;%1&quot; does not decide the GSD file: HCS0220.GSD is assumed. Product numbers 5 xxx xxx x1 … x4 use hcs0220.gsd, 5 005 xxx x5 use hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</source>
+        <translation>Die Produktnummer &quot;%1&quot; legt die GSD-Datei nicht fest: HCS0220.GSD wird angenommen. Produktnummern 5 xxx xxx x1 … x4 verwenden hcs0220.gsd, 5 005 xxx x5 verwenden hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</translation>
+    </message>
+    <message>
+        <source>No product number given: HCS0220.GSD is assumed. Product numbers 5 xxx xxx x1 … x4 use hcs0220.gsd, 5 005 xxx x5 use hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</source>
+        <translation>Keine Produktnummer angegeben: HCS0220.GSD wird angenommen. Produktnummern 5 xxx xxx x1 … x4 verwenden hcs0220.gsd, 5 005 xxx x5 verwenden hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</translation>
+    </message>
+    <message>
+        <source>The first module (the one with the PROFIBUS interface) must always have SADR = 0 (OPAT manual §1.4).</source>
+        <translation>Das erste Modul (das mit der PROFIBUS-Schnittstelle) muss immer SADR = 0 haben (OPAT-Handbuch §1.4).</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): CAN slaves take rotary switch positions 1 … 7 only (OPAT manual §1.4, §3.1).</source>
+        <translation>Modul %1 (%2): CAN-Slaves haben nur die Drehschalterstellungen 1 … 7 (OPAT-Handbuch §1.4, §3.1).</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): E22 = 0 switches the module&apos;s bus function off; the node cannot reach it.</source>
+        <translation>Modul %1 (%2): E22 = 0 schaltet die Busfunktion des Moduls ab; der Knoten erreicht es nicht.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): E22 must be 1 … 32.</source>
+        <translation>Modul %1 (%2): E22 muss 1 … 32 sein.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): CMD 15 reaches E22 = 1 … 5 only; this module is reachable by CMD 3 / CMD 6 only (DMA Profibus Anleitung §1.5, DMA Profinet manual §1.5).</source>
+        <translation>Modul %1 (%2): CMD 15 erreicht nur E22 = 1 … 5; dieses Modul ist nur mit CMD 3 / CMD 6 erreichbar (DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5).</translation>
+    </message>
+    <message>
+        <source>Modules %1 share SADR %2: the red LED lights and the master reports exception 12 &quot;two or more slaves have the same slave address&quot; (OPAT manual §1.3.2, §3.3). Set a different rotary switch position.</source>
+        <translation>Module %1 haben dieselbe SADR %2: Die rote LED leuchtet und der Master meldet Exception 12 &quot;zwei oder mehr Slaves haben dieselbe Adresse&quot; (OPAT-Handbuch §1.3.2, §3.3). Anderen Drehschalter-Wert einstellen.</translation>
+    </message>
+    <message>
+        <source>Modules %1 share E22 = %2: the node cannot tell them apart. Set E22 = 1 … n from left to right (DMA Profibus Anleitung §1.3, DMA Profinet manual §1.3).</source>
+        <translation>Module %1 haben dasselbe E22 = %2: Der Knoten kann sie nicht unterscheiden. E22 = 1 … n von links nach rechts setzen (DMA Profibus Anleitung §1.3, DMA-Profinet-Handbuch §1.3).</translation>
+    </message>
+    <message>
+        <source>With %1 modules CMD 15 addresses %2 … %3; a module outside that range gets no set values and the node answers exception 8 &quot;timeout slave, address wrong or not installed&quot; (OPAT manual §3.3, DMA Profinet manual §4.3).</source>
+        <translation>Mit %1 Modulen adressiert CMD 15 %2 … %3; ein Modul außerhalb erhält keine Sollwerte und der Knoten antwortet mit Exception 8 &quot;Timeout Slave, Adresse falsch oder nicht installiert&quot; (OPAT-Handbuch §3.3, DMA-Profinet-Handbuch §4.3).</translation>
+    </message>
+    <message>
+        <source>Set the slaves&apos; rotary switches in rising, consecutive order beginning with 1 (OPAT manual §1.6).</source>
+        <translation>Die Drehschalter der Slaves aufsteigend und lückenlos ab 1 einstellen (OPAT-Handbuch §1.6).</translation>
+    </message>
+    <message>
+        <source>Set E22 = 1 for the module on the left, rising towards the node module (DMA Profibus Anleitung §1.3, DMA Profinet manual §1.3, §4.1).</source>
+        <translation>E22 = 1 für das linke Modul setzen, aufsteigend zum Knotenmodul hin (DMA Profibus Anleitung §1.3, DMA-Profinet-Handbuch §1.3, §4.1).</translation>
+    </message>
+    <message>
+        <source>The PLC sends SNUM = %1 but the node has %2 modules (master + %3 slaves → SNUM = %3).</source>
+        <translation>Die SPS sendet SNUM = %1, der Knoten hat aber %2 Module (Master + %3 Slaves → SNUM = %3).</translation>
+    </message>
+    <message>
+        <source>The PLC sends SNUM = %1 but the node has %2 modules (SNUM = %3).</source>
+        <translation>Die SPS sendet SNUM = %1, der Knoten hat aber %2 Module (SNUM = %3).</translation>
+    </message>
+    <message>
+        <source>An SNUM outside %1 is answered with exception 7 &quot;invalid number of connected slaves&quot;.</source>
+        <translation>Eine SNUM außerhalb %1 wird mit Exception 7 &quot;ungültige Anzahl angeschlossener Slaves&quot; beantwortet.</translation>
+    </message>
+    <message>
+        <source>The node then waits for modules that are not installed: exception 8 &quot;timeout slave, address wrong or not installed&quot;.</source>
+        <translation>Der Knoten wartet dann auf nicht installierte Module: Exception 8 &quot;Timeout Slave, Adresse falsch oder nicht installiert&quot;.</translation>
+    </message>
+    <message>
+        <source>The modules beyond SNUM get no set values and never answer.</source>
+        <translation>Die Module jenseits von SNUM erhalten keine Sollwerte und antworten nie.</translation>
+    </message>
+    <message>
+        <source>SNUM also fixes the telegram length (3 + 5 bytes per module, up to %1); a GSD module that is too short gives exception 9 (OPAT manual §3.1, §3.3; DMA Profinet manual §4.1).</source>
+        <translation>SNUM legt auch die Telegrammlänge fest (3 + 5 Byte je Modul, bis %1); ein zu kurzes GSD-Modul ergibt Exception 9 (OPAT-Handbuch §3.1, §3.3; DMA-Profinet-Handbuch §4.1).</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): software version not known; the layout of the manuals&apos; worked examples is assumed. Scan the node to fill it in.</source>
+        <translation>Modul %1 (%2): Softwareversion unbekannt; das Layout der Beispiele der Handbücher wird angenommen. Den Knoten scannen, um sie einzutragen.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): software V%3 does not belong here; the manual describes %4 for this position.</source>
+        <translation>Modul %1 (%2): Software V%3 gehört nicht hierher; das Handbuch beschreibt %4 für diese Position.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): the manuals define no CMD 15 layout for software V%3 in mode %4.</source>
+        <translation>Modul %1 (%2): Die Handbücher definieren kein CMD-15-Layout für Software V%3 im Modus %4.</translation>
+    </message>
+    <message>
+        <source>The modules run in different modes or software versions. Only the control-byte and status-word bits of each module&apos;s own mode apply; the PLC must read VALUE1/VALUE2 per SADR with that module&apos;s meaning (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
+        <translation>Die Module arbeiten in verschiedenen Modi oder Softwareversionen. Nur die Bits im Steuerbyte und Statuswort entsprechend dem Modus des jeweiligen Moduls sind zu beachten; die SPS muss VALUE1/VALUE2 je SADR mit der Bedeutung dieses Moduls lesen (DMA Profibus Anleitung §6, DMA-Profinet-Handbuch §5).</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): %3 is not a bus option of this module here; it is ignored.</source>
+        <translation>Modul %1 (%2): %3 ist hier keine Busoption dieses Moduls; wird ignoriert.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): %3 does not exist in software V%4; it is ignored.</source>
+        <translation>Modul %1 (%2): %3 gibt es in Software V%4 nicht; wird ignoriert.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): %3 = %4 is outside %5 … %6 (%7).</source>
+        <translation>Modul %1 (%2): %3 = %4 liegt außerhalb %5 … %6 (%7).</translation>
+    </message>
+    <message>
+        <source>E24 = 126: the PROFIBUS master sets the address. Set it before power-up; the address the master assigns then shows in E24 (OPAT manual §1.4).</source>
+        <translation>E24 = 126: Der PROFIBUS-Master vergibt die Adresse. Vor dem Einschalten setzen; die vom Master vergebene Adresse erscheint danach in E24 (OPAT-Handbuch §1.4).</translation>
+    </message>
+    <message>
+        <source>E24 = %1: the new PROFIBUS address becomes active only after a power-down/power-up sequence (OPAT manual §1.4).</source>
+        <translation>E24 = %1: Die neue PROFIBUS-Adresse wird erst nach Aus- und Wiedereinschalten aktiv (OPAT-Handbuch §1.4).</translation>
+    </message>
+    <message>
+        <source>E28 = 0: a lost CAN slave gives error 7 and the master goes to the disabled state (OPAT manual §5.7).</source>
+        <translation>E28 = 0: Ein ausgefallener CAN-Slave ergibt Fehler 7 und der Master geht in den Zustand gesperrt (OPAT-Handbuch §5.7).</translation>
+    </message>
+    <message>
+        <source>E28 = 1: a lost CAN slave sets the error bit, but the master remains in its previous state (OPAT manual §5.7).</source>
+        <translation>E28 = 1: Ein ausgefallener CAN-Slave setzt das Fehlerbit, der Master bleibt aber in seinem bisherigen Zustand (OPAT-Handbuch §5.7).</translation>
+    </message>
+    <message>
+        <source>E28 = 2: error 7 is ignored; the master ignores lost CAN slaves, so a lost slave goes unnoticed by the PLC (OPAT manual §5.7).</source>
+        <translation>E28 = 2: Fehler 7 wird ignoriert; der Master ignoriert ausgefallene CAN-Slaves, die SPS bemerkt einen Ausfall also nicht (OPAT-Handbuch §5.7).</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): E23 = 0 switches the bus telegram timeout off; the module does not react when the PLC stops sending.</source>
+        <translation>Modul %1 (%2): E23 = 0 schaltet die Bus-Telegrammüberwachung ab; das Modul reagiert nicht, wenn die SPS keine Telegramme mehr sendet.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): E17 = 0 keeps the analogue set value input active; set E17 = 2 when the set value comes from the bus only.</source>
+        <translation>Modul %1 (%2): E17 = 0 lässt den analogen Sollwerteingang aktiv; E17 = 2 setzen, wenn der Sollwert nur über den Bus kommt.</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): E26 = 0 disables CAN; the master cannot reach the slaves (OPAT manual §7).</source>
+        <translation>Modul %1 (%2): E26 = 0 sperrt CAN; der Master erreicht die Slaves nicht (OPAT-Handbuch §7).</translation>
+    </message>
+    <message>
+        <source>The modules are given different CAN baud rates (E26): master and slaves must use the same rate or the master loses its slaves (error 7, exception 5 &quot;timeout (CAN connection)&quot;).</source>
+        <translation>Die Module haben verschiedene CAN-Baudraten (E26): Master und Slaves müssen dieselbe Rate verwenden, sonst verliert der Master seine Slaves (Fehler 7, Exception 5 &quot;Timeout (CAN-Verbindung)&quot;).</translation>
+    </message>
+    <message>
+        <source>A CAN baud rate (E26) changed through PROFIBUS becomes active only after a reboot (OPAT manual §7).</source>
+        <translation>Eine über PROFIBUS geänderte CAN-Baudrate (E26) wird erst nach einem Neustart aktiv (OPAT-Handbuch §7).</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::FoldPlanFile</name>
+    <message>
+        <source>The fold plan file is damaged: %1 is not a whole number.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 ist keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 is outside %2 … %3.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 liegt außerhalb %2 … %3.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 is not a text.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 ist kein Text.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 is longer than %2 bytes.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 ist länger als %2 Byte.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 is not opat, dma-pb or dma-pn.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 ist nicht opat, dma-pb oder dma-pn.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 is not a list.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 ist keine Liste.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 has more than %2 entries.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 hat mehr als %2 Einträge.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1 is not an object.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1 ist kein Objekt.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is damaged: %1.</source>
+        <translation>Die Modulplan-Datei ist beschädigt: %1.</translation>
+    </message>
+    <message>
+        <source>The file is larger than %1 KiB; it is not a fold plan.</source>
+        <translation>Die Datei ist größer als %1 KiB; sie ist kein Modulplan.</translation>
+    </message>
+    <message>
+        <source>The file is not valid JSON (a number is out of range).</source>
+        <translation>Die Datei ist kein gültiges JSON (eine Zahl liegt außerhalb des Bereichs).</translation>
+    </message>
+    <message>
+        <source>The file is not valid JSON (byte %1).</source>
+        <translation>Die Datei ist kein gültiges JSON (Byte %1).</translation>
+    </message>
+    <message>
+        <source>The file is nested too deeply to be a fold plan.</source>
+        <translation>Die Datei ist zu tief verschachtelt für einen Modulplan.</translation>
+    </message>
+    <message>
+        <source>The file is not a ValveTune fold plan.</source>
+        <translation>Die Datei ist kein ValveTune-Modulplan.</translation>
+    </message>
+    <message>
+        <source>The fold plan was written by a newer ValveTune (format version %1); this version reads format %2.</source>
+        <translation>Der Modulplan wurde von einem neueren ValveTune geschrieben (Formatversion %1); diese Version liest Format %2.</translation>
+    </message>
+    <message>
+        <source>The fold plan file is incomplete: %1 is missing.</source>
+        <translation>Die Modulplan-Datei ist unvollständig: %1 fehlt.</translation>
+    </message>
+    <message>
+        <source>The fold plan file cannot be written: %1</source>
+        <translation>Die Modulplan-Datei kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>The fold plan file cannot be read: %1</source>
+        <translation>Die Modulplan-Datei kann nicht gelesen werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::LCurve</name>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>%1 is not active on this device</source>
+        <translation>%1 ist in diesem Gerät nicht aktiv</translation>
+    </message>
+    <message>
+        <source>%1 is fixed by the device at %2</source>
+        <translation>%1 ist vom Gerät fest auf %2 gesetzt</translation>
+    </message>
+    <message>
+        <source>%1 has no point %2</source>
+        <translation>%1 hat keinen Punkt %2</translation>
+    </message>
+    <message>
+        <source>%1: not a number</source>
+        <translation>%1: keine Zahl</translation>
+    </message>
+    <message>
+        <source>%1 must be above %2 (%3)</source>
+        <translation>%1 muss größer als %2 (%3) sein</translation>
+    </message>
+    <message>
+        <source>%1 must be below %2 (%3)</source>
+        <translation>%1 muss kleiner als %2 (%3) sein</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::LCurveTableModel</name>
     <message>
         <source>P%1</source>
@@ -781,6 +1062,65 @@
     <message>
         <source>%1 y (%2)</source>
         <translation>%1 y (%2)</translation>
+    </message>
+    <message>
+        <source>no such point</source>
+        <translation>kein solcher Punkt</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ModuleGuide</name>
+    <message>
+        <source>Module %1 (OPAT master, PROFIBUS interface): SADR %2, fixed; no switch to set.</source>
+        <translation>Modul %1 (OPAT-Master, PROFIBUS-Schnittstelle): SADR %2, fest; kein Schalter einzustellen.</translation>
+    </message>
+    <message>
+        <source>Module %1 (OPAT master, PROFIBUS interface): SADR %2 — the master must have SADR 0.</source>
+        <translation>Modul %1 (OPAT-Master, PROFIBUS-Schnittstelle): SADR %2 — der Master muss SADR 0 haben.</translation>
+    </message>
+    <message>
+        <source>Module %1 (OPAT CAN slave): set the rotary switch to %2 (SADR %2).</source>
+        <translation>Modul %1 (OPAT-CAN-Slave): Drehschalter auf %2 stellen (SADR %2).</translation>
+    </message>
+    <message>
+        <source>Module %1 (leftmost): E22 = %2.</source>
+        <translation>Modul %1 (ganz links): E22 = %2.</translation>
+    </message>
+    <message>
+        <source>Module %1: E22 = %2.</source>
+        <translation>Modul %1: E22 = %2.</translation>
+    </message>
+    <message>
+        <source>CMD 15 does not reach it; only CMD 3 / CMD 6.</source>
+        <translation>CMD 15 erreicht es nicht, nur CMD 3 / CMD 6.</translation>
+    </message>
+    <message>
+        <source>The first module, the one with the PROFIBUS interface, is the OPAT master and always has SADR 0. The CAN slaves get SADR 1 to 7 only by their rotary switch; no parameter changes it. Two slaves on the same switch position stop the node (exception 12). (OPAT manual §1.4, §3.1)</source>
+        <translation>Das erste Modul mit der PROFIBUS-Schnittstelle ist der OPAT-Master und hat immer SADR 0. Die CAN-Slaves erhalten SADR 1 bis 7 nur über ihren Drehschalter; kein Parameter ändert ihn. Zwei Slaves mit derselben Schalterstellung legen den Knoten still (Exception 12). (OPAT-Handbuch §1.4, §3.1)</translation>
+    </message>
+    <message>
+        <source>Each DMA-2 module answers to its E22. Number them 1, 2, 3 … from the module on the left to the one next to the bus node. CMD 15 reaches addresses 1 to 5 only; modules with E22 above 5 (up to 32) are reachable with CMD 3 and CMD 6 only. (DMA manuals §1.5, §4.1)</source>
+        <translation>Jedes DMA-2-Modul antwortet auf seinen E22. Von links nach rechts 1, 2, 3 … bis zum Modul neben dem Busknoten nummerieren. CMD 15 erreicht nur die Adressen 1 bis 5; Module mit E22 über 5 (bis 32) sind nur mit CMD 3 und CMD 6 erreichbar. (DMA-Handbücher §1.5, §4.1)</translation>
+    </message>
+    <message>
+        <source>E24 = 126: the PROFIBUS master sets the address over the bus after the next power-up; the address it gives then shows in E24.</source>
+        <translation>E24 = 126: Der PROFIBUS-Master vergibt die Adresse nach dem nächsten Einschalten über den Bus; sie erscheint danach in E24.</translation>
+    </message>
+    <message>
+        <source>E24 = %1: the node&apos;s PROFIBUS address is %1; enter the same address in the PLC&apos;s hardware configuration.</source>
+        <translation>E24 = %1: Die PROFIBUS-Adresse des Knotens ist %1; dieselbe Adresse in der Hardware-Konfiguration der SPS eintragen.</translation>
+    </message>
+    <message>
+        <source>A change of E24 becomes active only after a power-down/power-up of the node.</source>
+        <translation>Eine Änderung von E24 wird erst nach Aus- und Wiedereinschalten des Knotens wirksam.</translation>
+    </message>
+    <message>
+        <source>Connect the service cable to module %1 (SADR %2), then press Next.</source>
+        <translation>Das Servicekabel an Modul %1 (SADR %2) anschließen, dann Weiter drücken.</translation>
+    </message>
+    <message>
+        <source>Connect the service cable to module %1 (E22 will become %2), then press Next.</source>
+        <translation>Das Servicekabel an Modul %1 (E22 wird %2) anschließen, dann Weiter drücken.</translation>
     </message>
 </context>
 <context>
@@ -829,6 +1169,29 @@
     <message>
         <source>Revert to file</source>
         <translation>Auf Dateiwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>No such parameter.</source>
+        <translation>Diesen Parameter gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>%1 is read only.</source>
+        <translation>%1 ist nur lesbar.</translation>
+    </message>
+    <message>
+        <source>%1 takes a text.</source>
+        <translation>%1 nimmt einen Text.</translation>
+    </message>
+    <message>
+        <source>%1 takes a number.</source>
+        <translation>%1 nimmt eine Zahl.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 takes at most %n character(s).</source>
+        <translation>
+            <numerusform>%1 nimmt höchstens %n Zeichen.</numerusform>
+            <numerusform>%1 nimmt höchstens %n Zeichen.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -918,6 +1281,10 @@
     <message>
         <source>Branch %1</source>
         <translation>Zweig %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -1232,18 +1599,6 @@
         <translation>unbekannter Parameter</translation>
     </message>
     <message>
-        <source>%1 expects %2</source>
-        <translation>%1 erwartet %2</translation>
-    </message>
-    <message>
-        <source>text</source>
-        <translation>Text</translation>
-    </message>
-    <message>
-        <source>a number</source>
-        <translation>eine Zahl</translation>
-    </message>
-    <message>
         <source>%1 is not writable</source>
         <translation>%1 ist nicht beschreibbar</translation>
     </message>
@@ -1310,6 +1665,14 @@
     <message>
         <source>not sent</source>
         <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1 expects text</source>
+        <translation>%1 erwartet einen Text</translation>
+    </message>
+    <message>
+        <source>%1 expects a number</source>
+        <translation>%1 erwartet eine Zahl</translation>
     </message>
 </context>
 <context>

@@ -59,6 +59,16 @@
     </message>
 </context>
 <context>
+    <name>vt::model::ParameterDocument</name>
+    <message numerus="yes">
+        <source>%1 takes at most %n character(s).</source>
+        <translation>
+            <numerusform>%1 takes at most %n character.</numerusform>
+            <numerusform>%1 takes at most %n characters.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vt::model::ParameterTreeModel</name>
     <message numerus="yes">
         <source>text, at most %n characters</source>

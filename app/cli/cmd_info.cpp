@@ -34,7 +34,7 @@ int runInfo(const QStringList &argsIn, Context &ctx)
         if (!r.ok) {
             const std::string why = r.failure.status != model::OutcomeStatus::Ok
                                         ? outcomeText(r.failure)
-                                        : str(r.message);
+                                        : str(model::identifyMessage(r, run.lang()));
             code =
                 std::max(code, r.failure.status == model::OutcomeStatus::LinkLost || run.linkLost()
                                    ? int(kExitConnection)
@@ -50,9 +50,9 @@ int runInfo(const QStringList &argsIn, Context &ctx)
         modules.push_back(m);
         if (!ctx.json)
             ctx.out << moduleText(r.module) << " — " << m["title"].get<std::string>() << '\n';
-        if (!r.message.isEmpty())
+        if (!model::identifyMessage(r, run.lang()).isEmpty())
             ctx.err << "valvetune-cli: warning: module " << r.module.address << ": "
-                    << str(r.message) << '\n';
+                    << str(model::identifyMessage(r, run.lang())) << '\n';
     }
     if (ctx.json)
         ctx.out

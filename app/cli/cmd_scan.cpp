@@ -51,11 +51,12 @@ int runScan(const QStringList &argsIn, Context &ctx)
                 ctx.out << moduleText(r.module, "address") << '\n';
         } else if (r.failure.status == model::OutcomeStatus::Ok) {
             // An answer that identifies no known device: something is there.
-            found.push_back(Json{
-                {"address", r.module.address}, {"family", nullptr}, {"error", str(r.message)}});
+            found.push_back(Json{{"address", r.module.address},
+                                 {"family", nullptr},
+                                 {"error", str(model::identifyMessage(r, run.lang()))}});
             if (!ctx.json)
-                ctx.out << "address " << r.module.address
-                        << ": answers, not identified: " << str(r.message) << '\n';
+                ctx.out << "address " << r.module.address << ": answers, not identified: "
+                        << str(model::identifyMessage(r, run.lang())) << '\n';
         }
     }
     if (run.linkLost())

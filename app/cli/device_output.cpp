@@ -118,11 +118,12 @@ int exitCodeOf(const model::Outcome &outcome)
 Json writeItemJson(const model::WriteItem &item, dev::Language lang)
 {
     const dev::ParamMeta &row = *item.row;
+    const QString reason = model::writeReasonText(item, lang);
     return Json{{"name", row.name},
                 {"value", optionalValue(row, item.value, lang)},
                 {"before", optionalValue(row, item.before, lang)},
                 {"status", model::writeStatusKey(item.status)},
-                {"reason", item.reason.isEmpty() ? Json(nullptr) : Json(str(item.reason))},
+                {"reason", reason.isEmpty() ? Json(nullptr) : Json(str(reason))},
                 {"read_back", optionalValue(row, item.readBack, lang)}};
 }
 
@@ -135,8 +136,8 @@ void printWriteItem(std::ostream &out, const model::WriteItem &item, dev::Langua
     out << displayOf(row, item.value, lang);
     if (item.status != model::WriteStatus::Pending) // a dry run lists pending rows
         out << "  " << model::writeStatusKey(item.status);
-    if (!item.reason.isEmpty())
-        out << " (" << str(item.reason) << ')';
+    if (const QString reason = model::writeReasonText(item, lang); !reason.isEmpty())
+        out << " (" << str(reason) << ')';
     out << '\n';
 }
 

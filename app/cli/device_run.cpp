@@ -240,16 +240,16 @@ std::optional<model::ModuleInfo> DeviceRun::identify(int address, int *exitCode)
 {
     const model::IdentifyResult r = identifyEach({address}).front();
     if (r.ok) {
-        if (!r.message.isEmpty())
-            m_ctx.err << "valvetune-cli: warning: module " << address << ": " << str(r.message)
-                      << '\n';
+        if (!model::identifyMessage(r, lang()).isEmpty())
+            m_ctx.err << "valvetune-cli: warning: module " << address << ": "
+                      << str(model::identifyMessage(r, lang())) << '\n';
         return r.module;
     }
     if (r.failure.status != model::OutcomeStatus::Ok)
         *exitCode = failExchange(address, "identify", r.failure);
     else
-        *exitCode = m_ctx.fail(kExitDeviceError,
-                               "module " + std::to_string(address) + ": " + str(r.message));
+        *exitCode = m_ctx.fail(kExitDeviceError, "module " + std::to_string(address) + ": " +
+                                                     str(model::identifyMessage(r, lang())));
     return std::nullopt;
 }
 

@@ -2,6 +2,7 @@
 
 #include "dict/cooking.h"
 
+#include <QCoreApplication>
 #include <cmath>
 
 namespace vt::model {
@@ -35,27 +36,23 @@ std::string formatDisplay(const dev::ParamMeta &meta, double display, dev::Langu
     return dev::formatValue(meta, toRaw(meta, display), lang);
 }
 
-std::optional<dev::LocalText> whyFixed(const dev::ParamMeta &meta)
+LFixedBy whyFixed(const dev::ParamMeta &meta)
 {
     switch (meta.access) {
-    case dev::Access::Read:
-        return dev::LocalText{meta.name + " is read-only", meta.name + " ist schreibgeschützt"};
+    case dev::Access::Read: return LFixedBy::ReadOnly;
     case dev::Access::Inactive:
-    case dev::Access::NotImplemented:
-        return dev::LocalText{meta.name + " is not active on this device",
-                              meta.name + " ist in diesem Gerät nicht aktiv"};
+    case dev::Access::NotImplemented: return LFixedBy::Inactive;
     case dev::Access::ReadWrite:
     case dev::Access::Write: break;
     }
     // DMA Profinet manual §6 and OPAT manual, list of parameters: L1.x0 / L2.x0 (and on the
     // OPAT L1.x8 / L2.x8) have min = max, "(fixed value)".
-    if (meta.min == meta.max) {
-        const std::string en = dev::formatValue(meta, meta.min, dev::Language::English);
-        const std::string de = dev::formatValue(meta, meta.min, dev::Language::German);
-        return dev::LocalText{meta.name + " is fixed by the device at " + en,
-                              meta.name + " ist vom Gerät fest auf " + de + " gesetzt"};
-    }
-    return std::nullopt;
+    return meta.min == meta.max ? LFixedBy::Device : LFixedBy::None;
+}
+
+QString qs(const std::string &text)
+{
+    return QString::fromStdString(text);
 }
 
 LCoordinate makeCoordinate(const dev::ParamMeta &meta)
@@ -67,7 +64,7 @@ LCoordinate makeCoordinate(const dev::ParamMeta &meta)
     c.max = dev::toDisplay(meta, limits.max);
     c.step = displayStep(meta);
     c.decimals = displayDecimals(meta);
-    c.fixedBecause = whyFixed(meta);
+    c.fixedBy = whyFixed(meta);
     return c;
 }
 
@@ -151,46 +148,58 @@ LRange allowedRange(const LCurve &curve, const std::vector<LPointValue> &values,
     return range;
 }
 
-std::optional<dev::LocalText> checkCoordinate(const LCurve &curve,
-                                              const std::vector<LPointValue> &values, int index,
-                                              LAxis axis, double display)
+QString fixedText(const LCoordinate &coord, dev::Language lang)
+{
+    const QString name = coord.row ? qs(coord.row->name) : QString();
+    switch (coord.fixedBy) {
+    case LFixedBy::None: return {};
+    case LFixedBy::ReadOnly:
+        return QCoreApplication::translate("vt::model::LCurve", "%1 is read-only").arg(name);
+    case LFixedBy::Inactive:
+        return QCoreApplication::translate("vt::model::LCurve", "%1 is not active on this device")
+            .arg(name);
+    case LFixedBy::Device:
+        return QCoreApplication::translate("vt::model::LCurve", "%1 is fixed by the device at %2")
+            .arg(name, qs(dev::formatValue(*coord.row, coord.row->min, lang)));
+    }
+    return {};
+}
+
+std::optional<QString> checkCoordinate(const LCurve &curve, const std::vector<LPointValue> &values,
+                                       int index, LAxis axis, double display, dev::Language lang)
 {
     if (index < 0 || index >= static_cast<int>(curve.points.size()))
-        return dev::LocalText{curve.name + " has no point " + std::to_string(index),
-                              curve.name + " hat keinen Punkt " + std::to_string(index)};
+        return QCoreApplication::translate("vt::model::LCurve", "%1 has no point %2")
+            .arg(qs(curve.name))
+            .arg(index);
     const auto i = static_cast<std::size_t>(index);
     const LCoordinate &c = coordinate(curve.points[i], axis);
     const dev::ParamMeta &meta = *c.row;
     if (!std::isfinite(display))
-        return dev::LocalText{meta.name + ": not a number", meta.name + ": keine Zahl"};
+        return QCoreApplication::translate("vt::model::LCurve", "%1: not a number")
+            .arg(qs(meta.name));
     if (c.fixed()) {
         std::optional<double> current;
         if (i < values.size())
             current = axis == LAxis::X ? values[i].x : values[i].y;
         if (current && sameOnRaster(c, *current, display))
             return std::nullopt; // unchanged
-        return c.fixedBecause;
+        return fixedText(c, lang);
     }
     if (auto err = dev::checkRange(meta, toRaw(meta, display)))
-        return err->message;
+        return qs(err->message.in(lang));
     if (axis == LAxis::Y)
         return std::nullopt;
     const LRange range = allowedRange(curve, values, index, axis);
     if (display < range.min - c.step / 2 && index > 0) {
         const dev::ParamMeta &prev = *curve.points[i - 1].x.row;
-        const double prevX = *values[i - 1].x;
-        return dev::LocalText{meta.name + " must be above " + prev.name + " (" +
-                                  formatDisplay(prev, prevX, dev::Language::English) + ")",
-                              meta.name + " muss größer als " + prev.name + " (" +
-                                  formatDisplay(prev, prevX, dev::Language::German) + ") sein"};
+        return QCoreApplication::translate("vt::model::LCurve", "%1 must be above %2 (%3)")
+            .arg(qs(meta.name), qs(prev.name), qs(formatDisplay(prev, *values[i - 1].x, lang)));
     }
     if (display > range.max + c.step / 2 && i + 1 < curve.points.size()) {
         const dev::ParamMeta &next = *curve.points[i + 1].x.row;
-        const double nextX = *values[i + 1].x;
-        return dev::LocalText{meta.name + " must be below " + next.name + " (" +
-                                  formatDisplay(next, nextX, dev::Language::English) + ")",
-                              meta.name + " muss kleiner als " + next.name + " (" +
-                                  formatDisplay(next, nextX, dev::Language::German) + ") sein"};
+        return QCoreApplication::translate("vt::model::LCurve", "%1 must be below %2 (%3)")
+            .arg(qs(meta.name), qs(next.name), qs(formatDisplay(next, *values[i + 1].x, lang)));
     }
     return std::nullopt;
 }

@@ -6,6 +6,7 @@
 #include "core/local_text.h"
 #include "dict/dictionary.h"
 
+#include <QString>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,14 @@
 namespace vt::model {
 
 enum class LAxis { X, Y };
+
+// Why a coordinate cannot be edited.
+enum class LFixedBy {
+    None,
+    Device,   // the device fixes it: min = max, "fixed value"
+    ReadOnly, // the row is read-only
+    Inactive, // the row is not active (or not implemented) on this device
+};
 
 // One coordinate of a point: its dictionary row and limits in display units.
 struct LCoordinate
@@ -22,12 +31,15 @@ struct LCoordinate
     double max = 0;
     double step = 1;  // one raw step in display units (0.001 V)
     int decimals = 0; // display decimals
-    // Set when the coordinate cannot be edited: the device fixes it (min = max, "fixed value"),
-    // or the row is read-only / not active. Says why, in both languages.
-    std::optional<dev::LocalText> fixedBecause;
+    // Set when the coordinate cannot be edited; fixedText() says why.
+    LFixedBy fixedBy = LFixedBy::None;
 
-    bool fixed() const { return fixedBecause.has_value(); }
+    bool fixed() const { return fixedBy != LFixedBy::None; }
 };
+
+// Why `coord` cannot be edited, a sentence that names the row (a fixed value in `lang`'s number
+// format); empty when it can be.
+QString fixedText(const LCoordinate &coord, dev::Language lang);
 
 struct LPoint
 {
@@ -79,9 +91,10 @@ LRange allowedRange(const LCurve &curve, const std::vector<LPointValue> &values,
                     LAxis axis);
 
 // nullopt when coordinate `axis` of point `index` may take `display`; otherwise why not (names the
-// row and the limit). A fixed coordinate refuses any value but its current one.
-std::optional<dev::LocalText> checkCoordinate(const LCurve &curve,
-                                              const std::vector<LPointValue> &values, int index,
-                                              LAxis axis, double display);
+// row and the limit; numbers in `lang`'s format). A fixed coordinate refuses any value but its
+// current one.
+std::optional<QString> checkCoordinate(const LCurve &curve, const std::vector<LPointValue> &values,
+                                       int index, LAxis axis, double display,
+                                       dev::Language lang = dev::Language::English);
 
 } // namespace vt::model

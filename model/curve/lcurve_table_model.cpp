@@ -117,12 +117,12 @@ void LCurveTableModel::setPoint(int curve, int index, std::optional<double> x,
     emitPointChanged(curve, index);
 }
 
-std::optional<dev::LocalText>
-LCurveTableModel::editPoint(int curve, int index, std::optional<double> x, std::optional<double> y)
+std::optional<QString> LCurveTableModel::editPoint(int curve, int index, std::optional<double> x,
+                                                   std::optional<double> y)
 {
     if (!indexOf(curve, index, LAxis::X).isValid()) {
-        dev::LocalText why{"no such point", "kein solcher Punkt"};
-        emit editRefused(curve, index, fromStd(why.in(textLanguage())));
+        const QString why = tr("no such point");
+        emit editRefused(curve, index, why);
         return why;
     }
     const LCurve &c = m_curves[static_cast<std::size_t>(curve)];
@@ -136,8 +136,8 @@ LCurveTableModel::editPoint(int curve, int index, std::optional<double> x, std::
             continue;
         const LCoordinate &coord = coordinate(point, axis);
         const double snapped = snapToStep(coord, *typed);
-        if (auto why = checkCoordinate(c, next, index, axis, snapped)) {
-            emit editRefused(curve, index, fromStd(why->in(textLanguage())));
+        if (auto why = checkCoordinate(c, next, index, axis, snapped, textLanguage())) {
+            emit editRefused(curve, index, *why);
             return why;
         }
         LPointValue &p = next[static_cast<std::size_t>(index)];
@@ -217,7 +217,7 @@ QVariant LCurveTableModel::data(const QModelIndex &index, int role) const
         QString tip =
             fromStd(coord->row->name) + QStringLiteral(": ") + fromStd(coord->row->label.in(lang));
         if (coord->fixed())
-            tip += QLatin1Char('\n') + fromStd(coord->fixedBecause->in(lang));
+            tip += QLatin1Char('\n') + fixedText(*coord, lang);
         return tip;
     }
     case RowMetaRole: return QVariant::fromValue(reinterpret_cast<quintptr>(coord->row));

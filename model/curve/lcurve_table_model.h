@@ -57,8 +57,8 @@ public:
     // A user's edit (table, plot); nullopt leaves a coordinate as it is. Values are snapped to the
     // row's raster and validated; an accepted edit is stored and announced once (rowsEdited, then
     // pointEdited). Returns why it was refused (editRefused is emitted too), nullopt on success.
-    std::optional<dev::LocalText> editPoint(int curve, int index, std::optional<double> x,
-                                            std::optional<double> y);
+    std::optional<QString> editPoint(int curve, int index, std::optional<double> x,
+                                     std::optional<double> y);
     LRange allowedRange(int curve, int index, LAxis axis) const;
 
     QModelIndex indexOf(int curve, int point, LAxis axis) const;

@@ -2,6 +2,7 @@
 
 #include "model/fold/fold_apply_moves.h"
 #include "model/session/write_job.h"
+#include "model/text_language.h"
 
 #include <QTimer>
 #include <algorithm>
@@ -234,8 +235,8 @@ void FoldApply::writeOptions(std::size_t index)
                     if (isOnDevice(item.status))
                         continue;
                     const QString name = QString::fromStdString(item.row ? item.row->name : "");
-                    const QString why =
-                        item.reason.isEmpty() ? writeStatusText(item.status) : item.reason;
+                    const QString reason = writeReasonText(item, textLanguage());
+                    const QString why = reason.isEmpty() ? writeStatusText(item.status) : reason;
                     done.notes << (why.startsWith(name) ? why : tr("%1: %2").arg(name, why));
                 }
                 onOptionsDone(index);

@@ -1,11 +1,15 @@
 // Checks of a FoldPlan before it is applied or handed to the PLC programmer:
-// duplicate addresses, ranges against the dictionaries, CMD 15 limits, SNUM, mixed modes.
+// duplicate addresses, ranges against the dictionaries, CMD 15 limits, SNUM, mixed modes. The
+// checks are Qt-free (the fuzz build has no Qt): a finding names its sentences and their values,
+// and foldFindingText() (fold_check_text.cpp) renders them through tr() when they are shown.
 #pragma once
 
 #include "core/local_text.h"
 #include "fold_plan.h"
 
 #include <vector>
+
+class QString;
 
 namespace vt::dev {
 class DictionarySet;
@@ -34,13 +38,64 @@ enum class FoldCheckCode {
     ProductNumber,     // DMA Profibus: GSD file cannot be decided from the product number
 };
 
+// One sentence of a finding; its %1, %2 … are filled with FoldSentence::args in order.
+enum class FoldText {
+    NoModules,
+    TooManyOpat,            // modules
+    TooManyDma,             // modules
+    Cmd15Limit,             // modules
+    ProductNumberUndecided, // product number
+    ProductNumberMissing,
+    OpatMasterSadr,
+    OpatSlaveSwitch, // module, address
+    E22Off,          // module, address
+    E22Range,        // module, address
+    E22BeyondCmd15,  // module, address
+    DuplicateSadr,   // module list, SADR
+    DuplicateE22,    // module list, E22
+    AddressGap,      // modules, first and last address CMD 15 reaches
+    OpatSwitchOrder,
+    DmaE22Order,
+    SnumOpat,       // SNUM sent, modules, SNUM wanted
+    SnumDma,        // SNUM sent, modules, SNUM wanted
+    SnumRange,      // valid SNUM range
+    SnumWaits,      // the node waits for modules not installed
+    SnumBeyond,     // modules beyond SNUM never answer
+    SnumLength,     // longest telegram
+    VersionUnknown, // module, address
+    VersionNotHere, // module, address, version, versions described
+    NoLayout,       // module, address, version, mode
+    MixedModes,
+    OptionNotBus,       // module, address, option
+    OptionNotInVersion, // module, address, option, version
+    OptionOutOfRange,   // module, address, option, value, min, max, label
+    E24Master,
+    E24Address, // address
+    E28Stop,
+    E28Flag,
+    E28Ignore,
+    E23Off,      // module, address
+    E17Analogue, // module, address
+    E26Off,      // module, address
+    CanBaudDiffers,
+    CanBaudReboot,
+};
+
+struct FoldSentence
+{
+    FoldText text = FoldText::NoModules;
+    std::vector<dev::LocalText> args; // numbers and names the same in both languages
+
+    bool operator==(const FoldSentence &) const = default;
+};
+
 struct FoldFinding
 {
     FoldSeverity severity = FoldSeverity::Info;
     FoldCheckCode code = FoldCheckCode::NoModules;
-    int module = -1;        // index into FoldPlan::modules; -1 = the node as a whole
-    std::string parameter;  // "E22", "E17", … when the finding is about one parameter
-    dev::LocalText message; // full sentence with the manual's reason
+    int module = -1;       // index into FoldPlan::modules; -1 = the node as a whole
+    std::string parameter; // "E22", "E17", … when the finding is about one parameter
+    std::vector<FoldSentence> sentences; // with the manual's reason; foldFindingText() says them
 
     bool operator==(const FoldFinding &) const = default;
 };
@@ -52,6 +107,9 @@ std::vector<FoldFinding> checkFoldPlan(const FoldPlan &plan,
 
 bool hasErrors(const std::vector<FoldFinding> &findings);
 std::string_view foldSeverityKey(FoldSeverity severity); // "info", "warning", "error"
-dev::LocalText foldSeverityText(FoldSeverity severity);
+
+// The finding's sentences and the severity in the language shown now (Qt; fold_check_text.cpp).
+QString foldFindingText(const FoldFinding &finding);
+QString foldSeverityText(FoldSeverity severity);
 
 } // namespace vt::model

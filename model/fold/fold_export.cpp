@@ -133,7 +133,8 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
         for (const FoldFinding &f : sheet.findings)
             h += QStringLiteral("<li class=\"%1\"><b>%2</b>: %3</li>\n")
                      .arg(q(std::string(foldSeverityKey(f.severity))),
-                          esc(foldSeverityText(f.severity).in(lang)), esc(f.message.in(lang)));
+                          foldSeverityText(f.severity).toHtmlEscaped(),
+                          foldFindingText(f).toHtmlEscaped());
         h += QStringLiteral("</ul>\n");
     }
 

@@ -2,10 +2,14 @@
 // rendered offscreen through QTextDocument + QPdfWriter (QtGui only), and CSV of the byte maps.
 #pragma once
 
+// clang-format off
+// First: devices/hcs/status_bits.h (via plc_config.h) has a member named `signals`, which Qt's
+// keyword macro would rewrite once a Qt header defined it.
+#include "plc_config.h"
+// clang-format on
 #include "core/local_text.h"
 #include "fold_check.h"
 #include "fold_plan.h"
-#include "plc_config.h"
 
 #include <QString>
 #include <optional>
@@ -26,7 +30,8 @@ std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, dev::LocalText *why
 // Self-contained HTML 4 document (inline CSS, no scripts, no external files), text escaped.
 // Sections: node and GSD, modules and addresses, findings, output image, input image, per-module
 // bits, example telegram. Numbers are plain (byte offsets, hex), so the sheet reads the same in
-// both languages apart from the words.
+// both languages apart from the words. The findings are worded through tr(), in the language
+// shown (the wizard passes that language as `lang`).
 QString foldSheetHtml(const FoldSheet &sheet, dev::Language lang);
 
 // One row per image byte: direction;offset;module;sadr;field;meaning — ';' separated, fields

@@ -10,31 +10,41 @@
 
 namespace vt::model {
 
-using dev::LocalText;
 using Json = nlohmann::json;
 
 namespace {
 
 constexpr int kMaxDepth = 8; // the format nests 4 deep; anything deeper is not a plan
 
-FoldFileError error(FoldFileErrc code, std::string member, LocalText message,
-                    std::size_t offset = 0)
+FoldFileError error(FoldFileErrc code, std::string member = {},
+                    FoldFileProblem problem = FoldFileProblem::None)
 {
-    return FoldFileError{code, std::move(member), offset, std::move(message)};
+    FoldFileError e;
+    e.code = code;
+    e.member = std::move(member);
+    e.problem = problem;
+    return e;
 }
 
-FoldFileError bad(const std::string &member, const std::string &what_en, const std::string &what_de)
+FoldFileError bad(const std::string &member, FoldFileProblem problem, long long low = 0,
+                  long long high = 0)
 {
-    return error(FoldFileErrc::BadMember, member,
-                 {"The fold plan file is damaged: " + member + " " + what_en + ".",
-                  "Die Modulplan-Datei ist beschädigt: " + member + " " + what_de + "."});
+    FoldFileError e = error(FoldFileErrc::BadMember, member, problem);
+    e.low = low;
+    e.high = high;
+    return e;
 }
 
 FoldFileError missing(const std::string &member)
 {
-    return error(FoldFileErrc::MissingMember, member,
-                 {"The fold plan file is incomplete: " + member + " is missing.",
-                  "Die Modulplan-Datei ist unvollständig: " + member + " fehlt."});
+    return error(FoldFileErrc::MissingMember, member);
+}
+
+FoldFileError io(FoldFileProblem problem, const std::string &path)
+{
+    FoldFileError e = error(FoldFileErrc::Io, {}, problem);
+    e.path = path;
+    return e;
 }
 
 // Nesting depth outside strings, so a hostile "[[[[…" never reaches the recursive parts of the
@@ -80,7 +90,7 @@ public:
         }
         if (!it->is_number_integer()) {
             if (!err)
-                err = bad(path, "is not a whole number", "ist keine ganze Zahl");
+                err = bad(path, FoldFileProblem::NotWholeNumber);
             return std::nullopt;
         }
         long long v = 0;
@@ -94,8 +104,7 @@ public:
         }
         if (v < min || v > max) {
             if (!err)
-                err = bad(path, "is outside " + std::to_string(min) + " … " + std::to_string(max),
-                          "liegt außerhalb " + std::to_string(min) + " … " + std::to_string(max));
+                err = bad(path, FoldFileProblem::OutOfBounds, min, max);
             return std::nullopt;
         }
         return static_cast<int>(v);
@@ -108,14 +117,14 @@ public:
             return {};
         if (!it->is_string()) {
             if (!err)
-                err = bad(path, "is not a text", "ist kein Text");
+                err = bad(path, FoldFileProblem::NotText);
             return {};
         }
         const auto &s = it->get_ref<const std::string &>();
         if (s.size() > kFoldPlanMaxText) {
             if (!err)
-                err = bad(path, "is longer than " + std::to_string(kFoldPlanMaxText) + " bytes",
-                          "ist länger als " + std::to_string(kFoldPlanMaxText) + " Byte");
+                err = bad(path, FoldFileProblem::TooLong, 0,
+                          static_cast<long long>(kFoldPlanMaxText));
             return {};
         }
         return s;
@@ -159,61 +168,43 @@ std::string writeFoldPlan(const FoldPlan &plan)
 dev::Result<FoldPlan, FoldFileError> parseFoldPlan(std::string_view text)
 {
     if (text.size() > kFoldPlanMaxBytes)
-        return error(FoldFileErrc::TooLarge, {},
-                     {"The file is larger than " + std::to_string(kFoldPlanMaxBytes / 1024) +
-                          " KiB; it is not a fold plan.",
-                      "Die Datei ist größer als " + std::to_string(kFoldPlanMaxBytes / 1024) +
-                          " KiB; sie ist kein Modulplan."});
+        return error(FoldFileErrc::TooLarge);
     if (!depthWithin(text, kMaxDepth))
-        return error(FoldFileErrc::WrongFormat, {},
-                     {"The file is nested too deeply to be a fold plan.",
-                      "Die Datei ist zu tief verschachtelt für einen Modulplan."});
+        return error(FoldFileErrc::WrongFormat, {}, FoldFileProblem::TooDeep);
     Json root;
     try {
         root = Json::parse(text.begin(), text.end());
     } catch (const Json::parse_error &e) {
-        return error(FoldFileErrc::NotJson, {},
-                     {"The file is not valid JSON (byte " + std::to_string(e.byte) + ").",
-                      "Die Datei ist kein gültiges JSON (Byte " + std::to_string(e.byte) + ")."},
-                     e.byte);
+        FoldFileError syntax = error(FoldFileErrc::NotJson);
+        syntax.offset = e.byte;
+        return syntax;
     } catch (const Json::exception &) { // e.g. out_of_range: a number beyond double ("1E999999")
-        return error(
-            FoldFileErrc::NotJson, {},
-            {"The file is not valid JSON (a number is out of range).",
-             "Die Datei ist kein gültiges JSON (eine Zahl liegt außerhalb des Bereichs)."});
+        return error(FoldFileErrc::NotJson, {}, FoldFileProblem::NumberTooLarge);
     }
     if (!root.is_object())
-        return error(
-            FoldFileErrc::WrongFormat, {},
-            {"The file is not a ValveTune fold plan.", "Die Datei ist kein ValveTune-Modulplan."});
+        return error(FoldFileErrc::WrongFormat);
     const auto format = root.find("format");
     if (format == root.end() || !format->is_string() ||
         format->get_ref<const std::string &>() != kFoldPlanFormat)
-        return error(
-            FoldFileErrc::WrongFormat, "format",
-            {"The file is not a ValveTune fold plan.", "Die Datei ist kein ValveTune-Modulplan."});
+        return error(FoldFileErrc::WrongFormat, "format");
 
     Reader r;
     const auto version =
         r.integer(root, "formatVersion", "formatVersion", 1, std::numeric_limits<int>::max(), true);
     if (r.err)
         return *r.err;
-    if (*version > kFoldPlanVersion)
-        return error(
-            FoldFileErrc::NewerVersion, "formatVersion",
-            {"The fold plan was written by a newer ValveTune (format version " +
-                 std::to_string(*version) + "); this version reads format " +
-                 std::to_string(kFoldPlanVersion) + ".",
-             "Der Modulplan wurde von einem neueren ValveTune geschrieben (Formatversion " +
-                 std::to_string(*version) + "); diese Version liest Format " +
-                 std::to_string(kFoldPlanVersion) + "."});
+    if (*version > kFoldPlanVersion) {
+        FoldFileError newer = error(FoldFileErrc::NewerVersion, "formatVersion");
+        newer.high = *version;
+        return newer;
+    }
 
     FoldPlan plan;
     const auto node = root.find("node");
     if (node == root.end())
         return missing("node");
     if (!node->is_string() || !foldNodeFromKey(node->get_ref<const std::string &>()))
-        return bad("node", "is not opat, dma-pb or dma-pn", "ist nicht opat, dma-pb oder dma-pn");
+        return bad("node", FoldFileProblem::UnknownNode);
     plan.node = *foldNodeFromKey(node->get_ref<const std::string &>());
     plan.title = r.text(root, "title", "title");
     plan.productNumber = r.text(root, "product_number", "product_number");
@@ -226,15 +217,15 @@ dev::Result<FoldPlan, FoldFileError> parseFoldPlan(std::string_view text)
     if (modules == root.end())
         return missing("modules");
     if (!modules->is_array())
-        return bad("modules", "is not a list", "ist keine Liste");
+        return bad("modules", FoldFileProblem::NotList);
     if (modules->size() > kFoldPlanMaxModules)
-        return bad("modules", "has more than " + std::to_string(kFoldPlanMaxModules) + " entries",
-                   "hat mehr als " + std::to_string(kFoldPlanMaxModules) + " Einträge");
+        return bad("modules", FoldFileProblem::TooManyEntries, 0,
+                   static_cast<long long>(kFoldPlanMaxModules));
     for (std::size_t i = 0; i < modules->size(); ++i) {
         const Json &jm = (*modules)[i];
         const std::string path = "modules[" + std::to_string(i) + "]";
         if (!jm.is_object())
-            return bad(path, "is not an object", "ist kein Objekt");
+            return bad(path, FoldFileProblem::NotObject);
         FoldModule m;
         m.name = r.text(jm, "name", path + ".name");
         m.version = r.integer(jm, "version", path + ".version", 0, 99, false).value_or(0);
@@ -246,7 +237,7 @@ dev::Result<FoldPlan, FoldFileError> parseFoldPlan(std::string_view text)
         const auto options = jm.find("options");
         if (options != jm.end()) {
             if (!options->is_object())
-                return bad(path + ".options", "is not an object", "ist kein Objekt");
+                return bad(path + ".options", FoldFileProblem::NotObject);
             for (const char *name : kOptionNames)
                 setFoldOption(
                     m.options, name,
@@ -263,18 +254,17 @@ dev::Result<FoldPlan, FoldFileError> loadFoldPlanFile(const std::string &path)
 {
     std::error_code ec;
     const auto size = std::filesystem::file_size(std::filesystem::path(path), ec);
-    const LocalText ioText{"The fold plan file cannot be read: " + path,
-                           "Die Modulplan-Datei kann nicht gelesen werden: " + path};
+    const FoldFileError ioError = io(FoldFileProblem::ReadFailed, path);
     if (ec)
-        return error(FoldFileErrc::Io, {}, ioText);
+        return ioError;
     if (size > kFoldPlanMaxBytes)
         return parseFoldPlan(std::string(kFoldPlanMaxBytes + 1, ' ')); // the TooLarge error
     std::ifstream in(std::filesystem::path(path), std::ios::binary);
     if (!in)
-        return error(FoldFileErrc::Io, {}, ioText);
+        return ioError;
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad())
-        return error(FoldFileErrc::Io, {}, ioText);
+        return ioError;
     return parseFoldPlan(text);
 }
 
@@ -283,22 +273,21 @@ std::optional<FoldFileError> saveFoldPlanFile(const FoldPlan &plan, const std::s
     const auto target = std::filesystem::path(path);
     auto temp = target;
     temp += ".tmp";
-    const LocalText ioText{"The fold plan file cannot be written: " + path,
-                           "Die Modulplan-Datei kann nicht geschrieben werden: " + path};
+    const FoldFileError ioError = io(FoldFileProblem::WriteFailed, path);
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         if (!out)
-            return error(FoldFileErrc::Io, {}, ioText);
+            return ioError;
         out << writeFoldPlan(plan);
         out.flush();
         if (!out)
-            return error(FoldFileErrc::Io, {}, ioText);
+            return ioError;
     }
     std::error_code ec;
     std::filesystem::rename(temp, target, ec);
     if (ec) {
         std::filesystem::remove(temp, ec);
-        return error(FoldFileErrc::Io, {}, ioText);
+        return ioError;
     }
     return std::nullopt;
 }

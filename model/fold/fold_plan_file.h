@@ -1,9 +1,9 @@
 // The fold plan file (.vtfold): a FoldPlan as versioned JSON that the wizard and the editor open
 // and save. Qt-free and bounded (size, module count, string length) so a broken or hostile file
-// gives a typed error, never a crash; fuzzed by tests/fuzz/fold/fold_plan_fuzz.cpp.
+// gives a typed error, never a crash; fuzzed by tests/fuzz/fold/fold_plan_fuzz.cpp. The error
+// says what is wrong; foldFileErrorText() (fold_plan_file_text.cpp, Qt) says it to people.
 #pragma once
 
-#include "core/local_text.h"
 #include "core/result.h"
 #include "fold_plan.h"
 
@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+
+class QString;
 
 namespace vt::model {
 
@@ -31,15 +33,39 @@ enum class FoldFileErrc {
     Io,            // the file could not be read or written
 };
 
+// What exactly is wrong, beyond the code.
+enum class FoldFileProblem {
+    None,
+    TooDeep,        // WrongFormat: nested deeper than a plan can be
+    NumberTooLarge, // NotJson: a number beyond double
+    ReadFailed,     // Io
+    WriteFailed,    // Io
+    NotWholeNumber, // BadMember …
+    OutOfBounds,    // low … high
+    NotText,
+    TooLong, // high = the limit in bytes
+    UnknownNode,
+    NotList,
+    TooManyEntries, // high = the limit
+    NotObject,
+};
+
 struct FoldFileError
 {
     FoldFileErrc code = FoldFileErrc::NotJson;
     std::string member;     // JSON path of the offending member, when there is one
     std::size_t offset = 0; // NotJson: byte offset of the syntax error
-    dev::LocalText message; // sentence for the user, both languages
+    FoldFileProblem problem = FoldFileProblem::None;
+    long long low = 0;  // OutOfBounds: the lower bound
+    long long high = 0; // OutOfBounds: the upper bound; TooLong, TooManyEntries: the limit;
+                        // NewerVersion: the file's format version
+    std::string path;   // Io: the file
 
     bool operator==(const FoldFileError &) const = default;
 };
+
+// The error as a sentence for people, in the language shown now (Qt; fold_plan_file_text.cpp).
+QString foldFileErrorText(const FoldFileError &error);
 
 // Pretty-printed JSON ending in a newline; members in a fixed order, options only when set.
 std::string writeFoldPlan(const FoldPlan &plan);

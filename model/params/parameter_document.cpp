@@ -22,11 +22,6 @@ QString moduleIdentity(const dev::Dictionary &dict, const std::string &version,
     return text;
 }
 
-dev::LocalText both(const char *en, const char *de)
-{
-    return dev::LocalText{en, de};
-}
-
 std::string valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev::Language lang)
 {
     if (const auto *text = std::get_if<std::string>(&value))
@@ -231,23 +226,22 @@ std::optional<dev::RawValue> ParameterDocument::value(int module, const dev::Par
     return m_modules[static_cast<std::size_t>(module)].value(row, layer);
 }
 
-std::optional<dev::LocalText> ParameterDocument::edit(int module, const dev::ParamMeta *row,
-                                                      const dev::RawValue &value)
+std::optional<QString> ParameterDocument::edit(int module, const dev::ParamMeta *row,
+                                               const dev::RawValue &value)
 {
     if (module < 0 || module >= moduleCount() || !row)
-        return both("No such parameter.", "Diesen Parameter gibt es nicht.");
+        return tr("No such parameter.");
+    const QString name = QString::fromStdString(row->name);
     if (!row->writable())
-        return both("This parameter is read only.", "Dieser Parameter ist nur lesbar.");
+        return tr("%1 is read only.").arg(name);
     if (row->isString() != dev::isText(value))
-        return row->isString()
-                   ? both("This parameter takes a text.", "Dieser Parameter nimmt einen Text.")
-                   : both("This parameter takes a number.", "Dieser Parameter nimmt eine Zahl.");
+        return row->isString() ? tr("%1 takes a text.").arg(name)
+                               : tr("%1 takes a number.").arg(name);
     if (const auto *text = std::get_if<std::string>(&value)) {
         if (row->length > 0 && text->size() > static_cast<std::size_t>(row->length))
-            return dev::LocalText{"At most " + std::to_string(row->length) + " characters.",
-                                  "Höchstens " + std::to_string(row->length) + " Zeichen."};
+            return tr("%1 takes at most %n character(s).", nullptr, row->length).arg(name);
     } else if (auto error = dev::checkRange(*row, dev::rawNumber(value))) {
-        return error->message;
+        return QString::fromStdString(error->message.in(m_language));
     }
     const auto before = this->value(module, row);
     if (sameValue(before, value))

@@ -66,10 +66,11 @@ public:
     // --- values -------------------------------------------------------------------------------
     std::optional<dev::RawValue> value(int module, const dev::ParamMeta *row,
                                        Layer layer = Layer::Working) const;
-    // A user edit (undoable). Refused, with the reason in both languages, for read-only rows,
-    // values of the wrong type and values out of range (the limits named in display units).
-    std::optional<dev::LocalText> edit(int module, const dev::ParamMeta *row,
-                                       const dev::RawValue &value);
+    // A user edit (undoable). Refused, with a sentence that names the row, for read-only rows,
+    // values of the wrong type and values out of range (the limits named in display units). The
+    // sentence is in the language shown now (the dictionary's words in language()): the editor
+    // shows it at once.
+    std::optional<QString> edit(int module, const dev::ParamMeta *row, const dev::RawValue &value);
     // Several rows as one undo step (Revert, Apply from compare); no checks beyond the row's type.
     struct Change
     {

@@ -17,6 +17,13 @@ QString qs(const std::string &s)
     return QString::fromStdString(s);
 }
 
+// A refusal that names its row as it is; one that does not gets the row's name in front.
+QString naming(const dev::ParamMeta &row, const QString &refusal)
+{
+    const QString name = qs(row.name);
+    return refusal.startsWith(name) ? refusal : ParameterTreeModel::tr("%1: %2").arg(name, refusal);
+}
+
 bool isBitField(const dev::ParamMeta &row)
 {
     return !row.bits.empty() && row.enums.empty();
@@ -458,8 +465,7 @@ bool ParameterTreeModel::setData(const QModelIndex &index, const QVariant &value
         } else {
             auto parsed = dev::parseValue(row, text, lang);
             if (!parsed) {
-                m_lastError =
-                    qs(row.name) + QStringLiteral(": ") + qs(parsed.error().message.in(lang));
+                m_lastError = naming(row, qs(parsed.error().message.in(lang)));
                 emit editRefused(index, m_lastError);
                 return false;
             }
@@ -469,7 +475,7 @@ bool ParameterTreeModel::setData(const QModelIndex &index, const QVariant &value
         return false;
     }
     if (auto error = m_document.edit(node->module, &row, raw)) {
-        m_lastError = qs(row.name) + QStringLiteral(": ") + qs(error->in(lang));
+        m_lastError = naming(row, *error);
         emit editRefused(index, m_lastError);
         return false;
     }

@@ -46,11 +46,6 @@ void merge(dev::access::Identity &into, const dev::access::Identity &from)
         into.text = from.text;
 }
 
-QString fromLocal(const dev::LocalText &text)
-{
-    return QString::fromStdString(text.en);
-}
-
 // "34.03" → "34": dictionary rows list major versions.
 std::string majorVersion(const std::string &version)
 {
@@ -87,21 +82,23 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
                                  ? outcomeStatusText(state->failure.status)
                                  : state->failure.reason;
             if (state->failure.status == OutcomeStatus::DeviceException)
-                result.message = fromLocal(state->failure.reply.exceptionText);
+                result.deviceText = state->failure.reply.exceptionText;
             done(result);
             return;
         }
         const dev::access::Identity &id = state->identity;
-        dev::Result<dev::Identification, dev::LocalText> found = dev::LocalText{
-            "the module did not identify itself", "das Modul hat sich nicht zu erkennen gegeben"};
-        if (id.manufacturer != 0)
-            found = dev::identifyHart(m_dictionaries, id.manufacturer, id.expandedDeviceType);
-        else if (id.capability != 0)
-            found = dev::identifyDsp408(m_dictionaries, id.capability);
-        else if (id.versRaw >= 0)
-            found = dev::identifyHcs(m_dictionaries, id.versRaw, id.mode, m_product);
+        if (id.manufacturer == 0 && id.capability == 0 && id.versRaw < 0) {
+            result.message = tr("the module did not identify itself");
+            done(result);
+            return;
+        }
+        const dev::Result<dev::Identification, dev::LocalText> found =
+            id.manufacturer != 0
+                ? dev::identifyHart(m_dictionaries, id.manufacturer, id.expandedDeviceType)
+            : id.capability != 0 ? dev::identifyDsp408(m_dictionaries, id.capability)
+                                 : dev::identifyHcs(m_dictionaries, id.versRaw, id.mode, m_product);
         if (!found) {
-            result.message = fromLocal(found.error());
+            result.deviceText = found.error();
             done(result);
             return;
         }
@@ -112,7 +109,7 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
         result.module.mode = id.mode;
         result.module.identityText = QString::fromStdString(id.text);
         if (!found->exact)
-            result.message = fromLocal(found->warning);
+            result.deviceText = found->warning;
         done(result);
     };
     if (plan.empty()) {
@@ -232,6 +229,13 @@ readableRows(const dev::Dictionary &dictionary, const std::string &version, cons
             rows.push_back(&row);
     }
     return rows;
+}
+
+QString identifyMessage(const IdentifyResult &result, dev::Language lang)
+{
+    if (!result.deviceText.en.empty())
+        return QString::fromStdString(result.deviceText.in(lang));
+    return result.message;
 }
 
 } // namespace vt::model

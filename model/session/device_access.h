@@ -31,8 +31,15 @@ struct IdentifyResult
     bool ok = false;
     ModuleInfo module;
     Outcome failure; // when !ok and the exchange failed
-    QString message; // when !ok: why (no answer, unknown device …); when ok: a fallback warning
+    // When !ok: why (no answer, unknown device …); when ok: a fallback warning. Either the
+    // application's words (through tr()) or the device's or dictionary's, kept in both languages
+    // in deviceText; identifyMessage() picks one.
+    QString message;
+    dev::LocalText deviceText;
 };
+
+// The result's message in `lang`: deviceText when there is one, otherwise message.
+QString identifyMessage(const IdentifyResult &result, dev::Language lang);
 
 struct RowValue
 {

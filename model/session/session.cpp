@@ -1,5 +1,6 @@
 #include "session.h"
 
+#include "model/text_language.h"
 #include "transports/link.h"
 
 namespace vt::model {
@@ -209,7 +210,7 @@ void Session::onReceived(const QByteArray &bytes)
     const bool refused = reply->status == dev::access::ReplyStatus::DeviceException;
     emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
                        refused ? ReceivedKind::Exception : ReceivedKind::Answer,
-                       refused ? QString::fromStdString(reply->exceptionText.en) : QString());
+                       refused ? localText(reply->exceptionText) : QString());
     if (p.cancelled) {
         finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, std::move(*reply),
                                              p.attempts, true, tr("Cancelled")});

@@ -9,11 +9,6 @@ namespace vt::model {
 
 namespace {
 
-QString local(const dev::LocalText &text)
-{
-    return QString::fromStdString(text.en);
-}
-
 QString valueText(const dev::ParamMeta &row, const dev::RawValue &value)
 {
     if (dev::isText(value))
@@ -66,22 +61,24 @@ void WriteJob::start()
         item.readBack.reset();
         item.exceptionCode = 0;
         item.reason.clear();
+        item.deviceText = {};
         item.status = WriteStatus::Pending;
         if (!item.row) {
             item.status = WriteStatus::RefusedLocally;
             item.reason = tr("unknown parameter");
         } else if (dev::isText(item.value) != item.row->isString()) {
             item.status = WriteStatus::RefusedLocally;
-            item.reason = tr("%1 expects %2")
-                              .arg(QString::fromStdString(item.row->name),
-                                   item.row->isString() ? tr("text") : tr("a number"));
+            item.reason =
+                item.row->isString()
+                    ? tr("%1 expects text").arg(QString::fromStdString(item.row->name))
+                    : tr("%1 expects a number").arg(QString::fromStdString(item.row->name));
         } else if (!item.row->writable()) {
             item.status = WriteStatus::RefusedLocally;
             item.reason = tr("%1 is not writable").arg(QString::fromStdString(item.row->name));
         } else if (!dev::isText(item.value)) {
             if (auto error = dev::checkWrite(*item.row, dev::rawNumber(item.value))) {
                 item.status = WriteStatus::RefusedLocally;
-                item.reason = local(error->message);
+                item.deviceText = error->message;
             }
         }
         if (item.status == WriteStatus::Pending && m_options.skipUnchanged && item.before &&
@@ -184,7 +181,7 @@ void WriteJob::writeItem(int index)
                 return;
             case OutcomeStatus::DeviceException:
                 it.exceptionCode = outcome.reply.exceptionCode;
-                settle(index, WriteStatus::Refused, local(outcome.reply.exceptionText));
+                settle(index, WriteStatus::Refused, {}, outcome.reply.exceptionText);
                 next();
                 return;
             case OutcomeStatus::NotEncodable:
@@ -271,11 +268,13 @@ void WriteJob::probeItem(int index)
         });
 }
 
-void WriteJob::settle(int index, WriteStatus status, const QString &reason)
+void WriteJob::settle(int index, WriteStatus status, const QString &reason,
+                      const dev::LocalText &deviceText)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
     item.status = status;
     item.reason = reason;
+    item.deviceText = deviceText;
     ++m_done;
     emit itemChanged(index);
     emit progress(m_done, static_cast<int>(m_order.size()));
@@ -288,6 +287,7 @@ void WriteJob::stopRemaining(const QString &reason)
         if (item.status == WriteStatus::Pending) {
             item.status = WriteStatus::NotSent;
             item.reason = tr("not sent: the write stopped (%1)").arg(reason);
+            item.deviceText = {};
             emit itemChanged(m_order[k]);
         }
     }
@@ -329,6 +329,13 @@ QString writeStatusText(WriteStatus status)
     case WriteStatus::NotSent: return WriteJob::tr("not sent");
     }
     return {};
+}
+
+QString writeReasonText(const WriteItem &item, dev::Language lang)
+{
+    if (!item.deviceText.en.empty())
+        return QString::fromStdString(item.deviceText.in(lang));
+    return item.reason;
 }
 
 const char *writeStatusKey(WriteStatus status)

@@ -57,7 +57,8 @@ private:
     void verifyItem(int index);
     void probeItem(int index); // resume of an Uncertain row: read before writing
     void stopRemaining(const QString &reason);
-    void settle(int index, WriteStatus status, const QString &reason = {});
+    void settle(int index, WriteStatus status, const QString &reason = {},
+                const dev::LocalText &deviceText = {});
     void done();
     bool readBackEquals(const WriteItem &item, const dev::RawValue &value) const;
 

@@ -3,6 +3,7 @@
 // which may or may not have arrived, which were never sent. A plain value; any thread.
 #pragma once
 
+#include "core/local_text.h"
 #include "dict/param_meta.h"
 #include "dict/raw_value.h"
 
@@ -15,10 +16,10 @@ namespace vt::model {
 enum class WriteStatus {
     Pending,        // not yet attempted
     Unchanged,      // the device already holds the value: nothing sent
-    RefusedLocally, // out of range or not writable: never sent (reason names the limits)
+    RefusedLocally, // out of range or not writable: never sent (the text names the limits)
     Verified,       // written and read back equal
     Written,        // acknowledged, not read back (write-only row)
-    Refused,        // the device answered with an exception (reason = its text)
+    Refused,        // the device answered with an exception (deviceText = its text)
     Mismatch,       // acknowledged, but the read back differs (reason says what came back)
     Uncertain,      // sent without an answer: it may or may not be on the device
     NotSent,        // the job stopped before this row
@@ -32,7 +33,9 @@ struct WriteItem
     WriteStatus status = WriteStatus::Pending;
     std::optional<dev::RawValue> readBack;
     int exceptionCode = 0;
-    QString reason;
+    QString reason;            // the application's words, already through tr()
+    dev::LocalText deviceText; // the device's or the dictionary's words (a refusal, a range
+                               // error), both languages; shown through writeReasonText()
 };
 
 // True for statuses after which the device holds `value` for sure.
@@ -48,6 +51,9 @@ inline bool needsResume(WriteStatus s)
 }
 
 QString writeStatusText(WriteStatus status);
+// Why a row ended as it did, in `lang`: the device's or dictionary's text when there is one,
+// otherwise the application's reason. Empty when there is nothing to say.
+QString writeReasonText(const WriteItem &item, dev::Language lang);
 // "verified", "refused: value out of range" … for the CLI and the result list.
 const char *writeStatusKey(WriteStatus status);
 

@@ -81,8 +81,11 @@ TEST(WriteJob, OutOfRangeAndReadOnlyNeverLeaveTheMaster)
     EXPECT_EQ(sent.count(), 0);
     for (const WriteItem &item : job.items())
         EXPECT_EQ(item.status, WriteStatus::RefusedLocally) << item.row->name;
-    EXPECT_NE(job.items()[0].reason.indexOf(QStringLiteral("9.999")), -1)
-        << job.items()[0].reason.toStdString();
+    const QString english = writeReasonText(job.items()[0], dev::Language::English);
+    EXPECT_NE(english.indexOf(QStringLiteral("9.999")), -1) << english.toStdString();
+    // The dictionary's refusal stays in both languages until it is shown.
+    const QString german = writeReasonText(job.items()[0], dev::Language::German);
+    EXPECT_NE(german.indexOf(QStringLiteral("9,999")), -1) << german.toStdString();
     EXPECT_EQ(storedRaw(c->module(), *c->dictionary().find("C1.07")), before);
 }
 
@@ -156,7 +159,13 @@ TEST(WriteJob, DeviceRefusalIsReportedWithTheDevicesReason)
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(job.items()[0].status, WriteStatus::Refused);
     EXPECT_EQ(job.items()[0].exceptionCode, 3);
-    EXPECT_FALSE(job.items()[0].reason.isEmpty());
+    EXPECT_FALSE(writeReasonText(job.items()[0], dev::Language::English).isEmpty());
+    // The device's refusal reaches the view in the language shown, not flattened to English.
+    const dev::LocalText &refusal = job.items()[0].deviceText;
+    EXPECT_TRUE(refusal.complete());
+    EXPECT_EQ(writeReasonText(job.items()[0], dev::Language::German),
+              QString::fromStdString(refusal.de));
+    EXPECT_NE(refusal.de, refusal.en);
 }
 
 TEST(WriteJob, ACutMidWriteLeavesAnExactRecordAndResumeFinishesIt)

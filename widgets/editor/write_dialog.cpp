@@ -1,6 +1,7 @@
 #include "write_dialog.h"
 
 #include "model/params/parameter_tree_model.h"
+#include "model/text_language.h"
 
 #include <QDialogButtonBox>
 #include <QHeaderView>
@@ -120,8 +121,11 @@ void WriteDialog::showItem(int planIndex, int index)
         const model::WriteItem &item = m_job->results()[static_cast<std::size_t>(planIndex)]
                                            .items[static_cast<std::size_t>(index)];
         QString text = model::writeStatusText(item.status);
-        if (!item.reason.isEmpty())
-            text += QStringLiteral(": ") + item.reason;
+        // The device's refusal in the language shown now (the dialog is window-modal: the
+        // language cannot change while it is open).
+        if (const QString reason = model::writeReasonText(item, model::textLanguage());
+            !reason.isEmpty())
+            text += QStringLiteral(": ") + reason;
         auto *cell = new QTableWidgetItem(text);
         if (item.status == model::WriteStatus::Verified ||
             item.status == model::WriteStatus::Written ||

@@ -1,7 +1,6 @@
 #include "widgets/fold/fold_address_page.h"
 
 #include "model/fold/module_guide.h"
-#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QCheckBox>
@@ -77,7 +76,7 @@ void FoldAddressPage::initializePage()
 {
     const model::FoldPlan &plan = fold()->plan();
     const bool opat = plan.node == model::FoldNode::Opat;
-    m_rule->setText(model::localText(model::nodeAddressRule(plan.node)));
+    m_rule->setText(model::nodeAddressRule(plan.node));
     m_filling = true;
     m_setE24->setVisible(opat);
     m_e24->setVisible(opat);
@@ -131,9 +130,8 @@ void FoldAddressPage::updateGuide()
     const model::FoldPlan &plan = fold()->plan();
     for (int row = 0; row < m_table->rowCount(); ++row)
         if (auto *guide = m_table->item(row, ColGuide))
-            guide->setText(
-                model::localText(model::moduleAddressGuide(plan, static_cast<std::size_t>(row))));
-    const QString note = model::localText(model::profibusAddressNote(plan));
+            guide->setText(model::moduleAddressGuide(plan, static_cast<std::size_t>(row)));
+    const QString note = model::profibusAddressNote(plan);
     m_e24Note->setText(note.isEmpty() ? tr("E24 stays as it is on the master.") : note);
 }
 
@@ -155,7 +153,7 @@ void FoldAddressPage::retranslate()
     m_e24->setSpecialValueText(QString());
     m_e24->setToolTip(tr("126 = the PROFIBUS master sets the address over the bus"));
     if (fold()) {
-        m_rule->setText(model::localText(model::nodeAddressRule(fold()->plan().node)));
+        m_rule->setText(model::nodeAddressRule(fold()->plan().node));
         updateGuide();
     }
 }

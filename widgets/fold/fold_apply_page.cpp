@@ -217,8 +217,7 @@ void FoldApplyPage::updateState()
                         "identifies every planned address. Connection: %1")
                          .arg(wizard->connection()->describe()));
     if (pointToPoint()) {
-        m_guide->setText(model::localText(
-            model::cableGuide(wizard->plan(), static_cast<std::size_t>(m_guided))));
+        m_guide->setText(model::cableGuide(wizard->plan(), static_cast<std::size_t>(m_guided)));
         m_apply->setText(tr("Apply to module %1").arg(m_guided + 1));
     } else {
         m_apply->setText(tr("Apply to the node"));

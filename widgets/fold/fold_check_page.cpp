@@ -1,6 +1,5 @@
 #include "widgets/fold/fold_check_page.h"
 
-#include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QCheckBox>
@@ -75,9 +74,9 @@ void FoldCheckPage::recheck()
     int errors = 0, warnings = 0;
     for (const model::FoldFinding &finding : m_findings) {
         auto *item = new QTreeWidgetItem(m_list);
-        item->setText(0, model::localText(model::foldSeverityText(finding.severity)));
+        item->setText(0, model::foldSeverityText(finding.severity));
         item->setText(1, finding.module < 0 ? tr("Node") : tr("Module %1").arg(finding.module + 1));
-        item->setText(2, model::localText(finding.message));
+        item->setText(2, model::foldFindingText(finding));
         item->setToolTip(2, item->text(2));
         item->setData(0, Qt::UserRole, static_cast<int>(finding.code));
         if (finding.severity == model::FoldSeverity::Error) {

@@ -143,7 +143,7 @@ QString FoldPlcPage::exportCsv(const QString &path)
 QString FoldPlcPage::savePlan(const QString &path)
 {
     if (const auto error = model::saveFoldPlanFile(fold()->plan(), path.toStdString()))
-        return model::localText(error->message);
+        return model::foldFileErrorText(*error);
     fold()->setPlanPath(path);
     return {};
 }

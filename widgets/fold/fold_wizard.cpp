@@ -2,7 +2,6 @@
 
 #include "model/fold/fold_plan_file.h"
 #include "model/session/connection.h"
-#include "model/text_language.h"
 #include "widgets/fold/fold_address_page.h"
 #include "widgets/fold/fold_apply_page.h"
 #include "widgets/fold/fold_bench_page.h"
@@ -79,7 +78,7 @@ bool FoldWizard::openPlan(const QString &path, QString *error)
     auto loaded = model::loadFoldPlanFile(path.toStdString());
     if (!loaded.ok()) {
         if (error)
-            *error = model::localText(loaded.error().message);
+            *error = model::foldFileErrorText(loaded.error());
         return false;
     }
     setPlan(loaded.value());

@@ -195,11 +195,12 @@ void StepControl::onWritten(int module, const std::vector<model::WriteItem> &ite
     QStringList lines;
     for (const model::WriteItem &item : items) {
         const QString text = model::writeStatusText(item.status);
+        const QString reason = model::writeReasonText(item, model::textLanguage());
         lines.append(
-            item.reason.isEmpty()
+            reason.isEmpty()
                 ? QStringLiteral("%1: %2").arg(QString::fromStdString(item.row->name), text)
                 : QStringLiteral("%1: %2 (%3)")
-                      .arg(QString::fromStdString(item.row->name), text, item.reason));
+                      .arg(QString::fromStdString(item.row->name), text, reason));
     }
     m_status->setText(lines.join(QLatin1Char('\n')));
     updateEnabled();

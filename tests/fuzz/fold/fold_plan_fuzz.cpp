@@ -19,7 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const std::string_view text(reinterpret_cast<const char *>(data), size);
     auto parsed = parseFoldPlan(text);
     if (!parsed.ok()) {
-        if (!parsed.error().message.complete())
+        if (parsed.error().code == FoldFileErrc::BadMember &&
+            parsed.error().problem == FoldFileProblem::None)
             __builtin_trap();
         return 0;
     }
@@ -36,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     static const auto &builtin = vt::dev::builtinDictionaries();
     const auto findings = checkFoldPlan(*parsed, builtin.ok() ? &*builtin : nullptr);
     for (const FoldFinding &f : findings)
-        if (!f.message.complete())
+        if (f.sentences.empty())
             __builtin_trap();
     const auto config = buildPlcConfig(*parsed);
     if (config.ok()) {

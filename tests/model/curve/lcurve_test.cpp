@@ -53,11 +53,12 @@ TEST(LCurve, OpatHasTwoCurvesOfNinePointsWithBothXEndsFixed)
         EXPECT_EQ(c.selector->name, "C" + std::to_string(c.branch) + ".02");
         // OPAT manual: x0 "(fix)" 0..0 and x8 "(fix)" 9999..9999.
         ASSERT_TRUE(c.points[0].x.fixed());
-        EXPECT_EQ(c.points[0].x.fixedBecause->en, c.name + ".x0 is fixed by the device at 0.000 V");
-        EXPECT_EQ(c.points[0].x.fixedBecause->de,
-                  c.name + ".x0 ist vom Gerät fest auf 0,000 V gesetzt");
+        EXPECT_EQ(fixedText(c.points[0].x, dev::Language::English).toStdString(),
+                  c.name + ".x0 is fixed by the device at 0.000 V");
+        // German: ModelTextsLanguage.LinearisationTextsInGerman
         ASSERT_TRUE(c.points[8].x.fixed());
-        EXPECT_EQ(c.points[8].x.fixedBecause->en, c.name + ".x8 is fixed by the device at 9.999 V");
+        EXPECT_EQ(fixedText(c.points[8].x, dev::Language::English).toStdString(),
+                  c.name + ".x8 is fixed by the device at 9.999 V");
         for (std::size_t i = 1; i < 8; ++i)
             EXPECT_FALSE(c.points[i].x.fixed()) << i;
         for (const LPoint &p : c.points) {
@@ -100,9 +101,11 @@ TEST(LCurve, ReadOnlyAndInactiveRowsAreFixedWithTheirReason)
     ASSERT_EQ(curves[0].points.size(), 2u);
     EXPECT_EQ(curves[0].selector, nullptr);
     ASSERT_TRUE(curves[0].points[0].y.fixed());
-    EXPECT_EQ(curves[0].points[0].y.fixedBecause->en, "L1.y0 is read-only");
+    EXPECT_EQ(fixedText(curves[0].points[0].y, dev::Language::English), "L1.y0 is read-only");
     ASSERT_TRUE(curves[0].points[1].x.fixed());
-    EXPECT_EQ(curves[0].points[1].x.fixedBecause->de, "L1.x1 ist in diesem Gerät nicht aktiv");
+    EXPECT_EQ(curves[0].points[1].x.fixedBy, LFixedBy::Inactive);
+    EXPECT_EQ(fixedText(curves[0].points[1].x, dev::Language::English),
+              "L1.x1 is not active on this device"); // German: ModelTextsLanguage
     EXPECT_FALSE(curves[0].points[1].y.fixed());
 }
 
@@ -119,11 +122,11 @@ TEST(LCurve, XMustRiseFromPointToPoint)
     EXPECT_FALSE(checkCoordinate(c, values, 3, LAxis::X, 4.999));
     const auto below = checkCoordinate(c, values, 3, LAxis::X, 2.5);
     ASSERT_TRUE(below);
-    EXPECT_EQ(below->en, "L1.x3 must be above L1.x2 (2.500 V)");
-    EXPECT_EQ(below->de, "L1.x3 muss größer als L1.x2 (2,500 V) sein");
+    EXPECT_EQ(*below, "L1.x3 must be above L1.x2 (2.500 V)");
+    // German: ModelTextsLanguage.LinearisationTextsInGerman
     const auto above = checkCoordinate(c, values, 3, LAxis::X, 6.0);
     ASSERT_TRUE(above);
-    EXPECT_EQ(above->en, "L1.x3 must be below L1.x4 (5.000 V)");
+    EXPECT_EQ(*above, "L1.x3 must be below L1.x4 (5.000 V)");
 }
 
 TEST(LCurve, YIsCheckedAgainstItsRowRangeOnly)
@@ -135,8 +138,8 @@ TEST(LCurve, YIsCheckedAgainstItsRowRangeOnly)
     EXPECT_FALSE(checkCoordinate(c, values, 5, LAxis::Y, 0.5));
     const auto high = checkCoordinate(c, values, 5, LAxis::Y, 10.5);
     ASSERT_TRUE(high);
-    EXPECT_NE(high->en.find("L2.y5"), std::string::npos) << high->en;
-    EXPECT_NE(high->en.find("9.999 V"), std::string::npos) << high->en;
+    EXPECT_TRUE(high->contains("L2.y5")) << high->toStdString();
+    EXPECT_TRUE(high->contains("9.999 V")) << high->toStdString();
     const LRange r = allowedRange(c, values, 5, LAxis::Y);
     EXPECT_DOUBLE_EQ(r.min, 0.0);
     EXPECT_DOUBLE_EQ(r.max, 9.999);
@@ -151,7 +154,7 @@ TEST(LCurve, FixedCoordinateRefusesAnyOtherValue)
     EXPECT_FALSE(checkCoordinate(c, values, 0, LAxis::X, 0.0)); // its own value: no change
     const auto moved = checkCoordinate(c, values, 0, LAxis::X, 0.5);
     ASSERT_TRUE(moved);
-    EXPECT_EQ(moved->en, "L1.x0 is fixed by the device at 0.000 V");
+    EXPECT_EQ(*moved, "L1.x0 is fixed by the device at 0.000 V");
     EXPECT_TRUE(checkCoordinate(c, values, 8, LAxis::X, 9.0));
 }
 

@@ -3,6 +3,7 @@
 // manual §1.5, §4.1, §5; OPAT manual §1.4, §3.1, §5.7).
 #include "model/fold/fold_check.h"
 
+#include <QString>
 #include <algorithm>
 #include <gtest/gtest.h>
 
@@ -49,8 +50,11 @@ TEST(FoldPlanCheck, DuplicateE22)
     EXPECT_EQ(f->severity, FoldSeverity::Error);
     EXPECT_EQ(f->parameter, "E22");
     EXPECT_EQ(f->module, 2);
-    EXPECT_NE(f->message.en.find("Modules 2, 3 share E22 = 2"), std::string::npos) << f->message.en;
-    EXPECT_TRUE(f->message.complete());
+    EXPECT_NE(foldFindingText(*f).toStdString().find("Modules 2, 3 share E22 = 2"),
+              std::string::npos)
+        << foldFindingText(*f).toStdString();
+    EXPECT_FALSE(
+        foldFindingText(*f).isEmpty()); // German: ModelTextsLanguage.FoldCheckFindingInGerman
     EXPECT_TRUE(hasErrors(findings));
 }
 
@@ -60,7 +64,7 @@ TEST(FoldPlanCheck, DuplicateOpatSlaveSwitch)
     plan.modules[2].address = 1;
     const FoldFinding *f = find(checkFoldPlan(plan), FoldCheckCode::DuplicateAddress);
     ASSERT_NE(f, nullptr);
-    EXPECT_NE(f->message.en.find("exception 12"), std::string::npos);
+    EXPECT_NE(foldFindingText(*f).toStdString().find("exception 12"), std::string::npos);
 }
 
 TEST(FoldPlanCheck, SixDmaModulesExceedCmd15)
@@ -69,7 +73,7 @@ TEST(FoldPlanCheck, SixDmaModulesExceedCmd15)
     const FoldFinding *f = find(findings, FoldCheckCode::Cmd15Limit);
     ASSERT_NE(f, nullptr);
     EXPECT_EQ(f->severity, FoldSeverity::Error);
-    EXPECT_NE(f->message.en.find("E22 = 1 … 5"), std::string::npos);
+    EXPECT_NE(foldFindingText(*f).toStdString().find("E22 = 1 … 5"), std::string::npos);
     // The sixth module's own address is beyond CMD 15 as well.
     const FoldFinding *a = find(findings, FoldCheckCode::AddressBeyondCmd15);
     ASSERT_NE(a, nullptr);
@@ -92,11 +96,13 @@ TEST(FoldPlanCheck, SnumMismatch)
     plan.plcSnum = 4; // more than installed: exception 8
     const FoldFinding *f = find(checkFoldPlan(plan), FoldCheckCode::SnumMismatch);
     ASSERT_NE(f, nullptr);
-    EXPECT_NE(f->message.en.find("exception 8"), std::string::npos) << f->message.en;
+    EXPECT_NE(foldFindingText(*f).toStdString().find("exception 8"), std::string::npos)
+        << foldFindingText(*f).toStdString();
     plan.plcSnum = 9; // outside 1..5: exception 7
     f = find(checkFoldPlan(plan), FoldCheckCode::SnumMismatch);
     ASSERT_NE(f, nullptr);
-    EXPECT_NE(f->message.en.find("exception 7"), std::string::npos) << f->message.en;
+    EXPECT_NE(foldFindingText(*f).toStdString().find("exception 7"), std::string::npos)
+        << foldFindingText(*f).toStdString();
 
     // OPAT: SNUM counts the slaves only (OPAT manual §3.1); master + 2 slaves → SNUM 2.
     FoldPlan opat = defaultFoldPlan(FoldNode::Opat, 3);
@@ -138,7 +144,7 @@ TEST(FoldPlanCheck, MixedModesNoteTheManual)
     const FoldFinding *f = find(checkFoldPlan(plan), FoldCheckCode::MixedModes);
     ASSERT_NE(f, nullptr);
     EXPECT_EQ(f->severity, FoldSeverity::Warning);
-    EXPECT_NE(f->message.en.find("own mode"), std::string::npos);
+    EXPECT_NE(foldFindingText(*f).toStdString().find("own mode"), std::string::npos);
 }
 
 TEST(FoldPlanCheck, VersionAndLayout)
@@ -180,7 +186,7 @@ TEST(FoldPlanCheck, OptionConsequencesAreExplained)
     auto findings = checkFoldPlan(plan);
     const FoldFinding *f = find(findings, FoldCheckCode::OptionConsequence);
     ASSERT_NE(f, nullptr);
-    EXPECT_NE(f->message.en.find("before power-up"), std::string::npos);
+    EXPECT_NE(foldFindingText(*f).toStdString().find("before power-up"), std::string::npos);
 
     plan.modules[0].options = {};
     plan.modules[0].options.e26 = 4;

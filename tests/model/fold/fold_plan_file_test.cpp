@@ -38,7 +38,7 @@ TEST(FoldPlanFile, RoundTrip)
     const std::string text = writeFoldPlan(plan);
     EXPECT_NE(text.find("\"format\": \"valvetune-fold-plan\""), std::string::npos) << text;
     const auto back = parseFoldPlan(text);
-    ASSERT_TRUE(back.ok()) << back.error().message.en;
+    ASSERT_TRUE(back.ok()) << foldFileErrorText(back.error()).toStdString();
     EXPECT_EQ(*back, plan);
     EXPECT_EQ(writeFoldPlan(*back), text); // stable text: saving again changes nothing
 
@@ -100,7 +100,9 @@ TEST(FoldPlanFile, MalformedFilesGiveTypedErrors)
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, FoldFileErrc::BadMember);
     EXPECT_EQ(r.error().member, "modules[1].options.E26");
-    EXPECT_TRUE(r.error().message.complete());
+    EXPECT_EQ(r.error().problem, FoldFileProblem::NotWholeNumber);
+    EXPECT_EQ(foldFileErrorText(r.error()),
+              "The fold plan file is damaged: modules[1].options.E26 is not a whole number.");
 
     std::string many = head + "\"formatVersion\": 1, \"node\": \"dma-pb\", \"modules\": [";
     for (int i = 0; i < 33; ++i)
