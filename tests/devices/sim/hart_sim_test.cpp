@@ -454,8 +454,8 @@ TEST(HartSimProcessValues, LoopCurrentAndDynamicVariables)
     rsp = rig.longRequest(9, Bytes{0, 1, 246});
     ASSERT_TRUE(rsp);
     const auto vars = rig.payload<hart::DeviceVariables>(9, *rsp);
-    ASSERT_EQ(vars.slots.size(), 3u);
-    EXPECT_FLOAT_EQ(vars.slots[1].value, 50.0f);
+    ASSERT_EQ(vars.variableSlots.size(), 3u);
+    EXPECT_FLOAT_EQ(vars.variableSlots[1].value, 50.0f);
     EXPECT_TRUE(vars.timestamp.has_value());
     EXPECT_EQ(rig.longRequest(9, Bytes{7})->responseCode, 2);
     rsp = rig.longRequest(15);
