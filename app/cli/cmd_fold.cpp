@@ -2,16 +2,11 @@
 //   fold plan --node opat|dma-pb|dma-pn --modules N [--product NUMBER] [--lang en|de]
 // prints what the PLC programmer configures for a node with N modules in all (OPAT: the master
 // plus N-1 CAN slaves): GSD file and module, output/input lengths and the byte map per module.
-// clang-format off
-// First: devices/hcs/status_bits.h (via plc_config.h) has a member named `signals`, which Qt's
-// keyword macro would rewrite once a Qt header defined it.
-#include "model/fold/fold_export.h"
-#include "model/fold/plc_config.h"
-// clang-format on
-
 #include "arg_parse.h"
 #include "commands.h"
 #include "core/hex.h"
+#include "model/fold/fold_export.h"
+#include "model/fold/plc_config.h"
 
 #include <nlohmann/json.hpp>
 

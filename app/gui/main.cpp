@@ -6,6 +6,7 @@
 #include "app/gui/gui_options.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "model/assert_handler.h"
 #include "model/session/sim_endpoint.h"
 
 #include <QApplication>
@@ -15,6 +16,7 @@
 int main(int argc, char *argv[])
 {
     QApplication app(argc, argv);
+    vt::model::installQtAssertHandler();
     QCoreApplication::setOrganizationName(QStringLiteral("ValveTune"));
     QCoreApplication::setApplicationName(QStringLiteral("ValveTune"));
     QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));

@@ -191,7 +191,7 @@ void SimHost::finishCut()
     m_ending = true;
     m_timer.stop();
     closeFd();
-    Q_EMIT finished(cli::kExitOk);
+    emit finished(cli::kExitOk);
 }
 
 void SimHost::fail(const std::string &message)
@@ -202,7 +202,7 @@ void SimHost::fail(const std::string &message)
     m_ending = true;
     m_timer.stop();
     closeFd();
-    Q_EMIT finished(cli::kExitConnection);
+    emit finished(cli::kExitConnection);
 }
 
 void SimHost::flushInLog()

@@ -40,7 +40,7 @@ public:
     // or "can-fd N node N").
     dev::Result<QString, HostError> start();
 
-Q_SIGNALS:
+signals:
     // The simulator ends on its own: a fault cut on a pty / serial port / CAN socket (0) or the
     // endpoint was lost (3). The message is already on stderr.
     void finished(int exitCode);

@@ -158,14 +158,14 @@ Payload decodeKnown(std::uint8_t command, bool response, ByteReader &r, std::siz
         }
         DeviceVariables d;
         d.extendedStatus = r.u8();
-        while (d.slots.size() < kMaxSlots && r.remaining() >= 8) {
+        while (d.variableSlots.size() < kMaxSlots && r.remaining() >= 8) {
             DeviceVariableSlot s;
             s.code = r.u8();
             s.classification = r.u8();
             s.unit = r.u8();
             s.value = f32(r);
             s.status = r.u8();
-            d.slots.push_back(s);
+            d.variableSlots.push_back(s);
         }
         if (r.remaining() >= 4)
             d.timestamp = r.u32be();
@@ -269,8 +269,8 @@ struct Encoder
     void operator()(const DeviceVariables &d)
     {
         w.u8(d.extendedStatus);
-        for (std::size_t i = 0; i < d.slots.size() && i < kMaxSlots; ++i) {
-            const DeviceVariableSlot &s = d.slots[i];
+        for (std::size_t i = 0; i < d.variableSlots.size() && i < kMaxSlots; ++i) {
+            const DeviceVariableSlot &s = d.variableSlots[i];
             w.u8(s.code).u8(s.classification).u8(s.unit);
             f32(s.value);
             w.u8(s.status);

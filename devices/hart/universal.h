@@ -111,7 +111,7 @@ struct DeviceVariableSlot
 struct DeviceVariables
 {
     std::uint8_t extendedStatus = 0;
-    std::vector<DeviceVariableSlot> slots;
+    std::vector<DeviceVariableSlot> variableSlots;
     std::optional<std::uint32_t> timestamp; // 1/32 ms units
     bool operator==(const DeviceVariables &) const = default;
 };

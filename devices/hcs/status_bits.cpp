@@ -183,7 +183,7 @@ ModuleStatus decodeStatus(std::uint16_t word)
     if (s.error)
         s.errorNumber = low;
     else
-        s.signals = low;
+        s.signalBits = low;
     return s;
 }
 

@@ -55,7 +55,7 @@ struct ModuleStatus
     bool error = false;
     bool busDisable = false;
     std::uint8_t errorNumber = 0; // low byte while ERROR is set, else 0
-    std::uint8_t signals = 0;     // low byte while ERROR is clear, else 0
+    std::uint8_t signalBits = 0;  // low byte while ERROR is clear, else 0
 };
 
 ModuleStatus decodeStatus(std::uint16_t word);

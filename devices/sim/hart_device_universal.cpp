@@ -69,7 +69,7 @@ HartDevice::Reply HartDevice::deviceVariables(const hart::DeviceVariableCodes &c
         if (slot < 0 || slot > 3)
             return {hart_rc::kInvalidSelection, {}, false};
         const hart::UnitValue &v = dyn.variables[static_cast<std::size_t>(slot)];
-        out.slots.push_back({code, 0, v.unit, v.value, kStatusGood});
+        out.variableSlots.push_back({code, 0, v.unit, v.value, kStatusGood});
     }
     // Time stamp in 1/32 ms, wrapping like the device's 32-bit counter.
     out.timestamp = static_cast<std::uint32_t>((m_timeUs * 32 / 1000) & 0xFFFFFFFF);

@@ -1,5 +1,6 @@
 #include "lcurve_table_model.h"
 
+#include "core/vt_assert.h"
 #include "model/text_language.h"
 
 #include <QLocale>
@@ -176,8 +177,9 @@ QModelIndex LCurveTableModel::indexOf(int curve, int point, LAxis axis) const
 
 const LCoordinate *LCurveTableModel::coordinateAt(const QModelIndex &index) const
 {
-    if (!index.isValid() || index.model() != this)
+    if (!index.isValid())
         return nullptr;
+    VT_ASSERT(index.model() == this, return nullptr);
     const auto c = static_cast<std::size_t>(curveOfColumn(index.column()));
     const auto i = static_cast<std::size_t>(index.row());
     if (c >= m_curves.size() || i >= m_curves[c].points.size())

@@ -1,5 +1,6 @@
 #include "tuning_journal.h"
 
+#include "core/vt_assert.h"
 #include "dict/cooking.h"
 
 #include <algorithm>
@@ -19,8 +20,7 @@ QString valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev::La
 
 QString writeMarkerText(const WriteItem &item, dev::Language lang)
 {
-    if (!item.row)
-        return {};
+    VT_ASSERT(item.row, return {});
     const QString name = QString::fromStdString(item.row->name);
     const QString to = valueText(*item.row, item.value, lang);
     if (!item.before)

@@ -1,4 +1,3 @@
-// No Qt header here (see adapter_factory.h).
 #include "adapter_factory.h"
 
 #include "access/canopen_adapter.h"

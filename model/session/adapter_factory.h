@@ -1,7 +1,5 @@
-// Builds the protocol adapter a connection needs. Qt-free on purpose: the HART adapter's headers
-// use names Qt's keyword macros take (hart::DeviceVariables::slots), so only adapter_factory.cpp,
-// which includes no Qt header, sees them (as sim_hart.h does for the simulator).
-// Pure function; any thread. The caller owns the adapter (it goes to one Session).
+// Builds the protocol adapter a connection needs. Pure function; any thread. The caller owns the
+// adapter (it goes to one Session).
 #pragma once
 
 #include <memory>

@@ -1,7 +1,8 @@
 #include "sim_endpoint.h"
 
 #include "dict/dictionary_loader.h"
-#include "model/session/sim_hart.h"
+#include "sim/hart_device.h"
+#include "sim/hart_server.h"
 #include "sim/hcs_node.h"
 #include "sim/modbus_rtu_server.h"
 #include "sim/modbus_tcp_server.h"
@@ -35,11 +36,10 @@ SimEndpoint::SimEndpoint(SimSpec spec, QObject *parent) : QObject(parent), m_spe
     connect(&m_timer, &QTimer::timeout, this, &SimEndpoint::tick);
 }
 
-SimEndpoint::~SimEndpoint() = default;
-
-dev::sim::HartDevice *SimEndpoint::hart() const
+SimEndpoint::~SimEndpoint()
 {
-    return m_hart ? hartDevice(*m_hart) : nullptr;
+    if (m_hart)
+        m_clock.detach(*m_hart);
 }
 
 int SimEndpoint::moduleAddress(std::size_t index) const
@@ -103,8 +103,10 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
             spec.protocol = "hart";
         if (spec.protocol != "hart")
             return SimEndpoint::tr("%1 speaks HART only").arg(QString::fromStdString(spec.family));
-        endpoint->m_hart = makeSimHart(endpoint->m_clock, *dict);
-        server = hartServer(*endpoint->m_hart);
+        endpoint->m_hart = std::make_unique<HartDevice>(*dict);
+        endpoint->m_hartServer = std::make_shared<HartServer>(*endpoint->m_hart);
+        endpoint->m_clock.attach(*endpoint->m_hart);
+        server = endpoint->m_hartServer;
     } else if (dict->protocol == dev::DeviceProtocol::Hcs) {
         // One module: a point-to-point Modbus RTU line. A node: Modbus TCP to its gateway, where
         // every module is a unit — on an RTU line the OPAT master (SADR 0) would be unit 0, the

@@ -22,6 +22,7 @@ class DictionarySet;
 namespace sim {
 class HcsNode;
 class HartDevice;
+class HartServer;
 } // namespace sim
 } // namespace vt::dev
 
@@ -30,8 +31,6 @@ class SimLink;
 }
 
 namespace vt::model {
-
-struct SimHart;
 
 struct SimSpec
 {
@@ -54,8 +53,8 @@ public:
     ~SimEndpoint() override;
 
     dev::sim::SimClock &clock() { return m_clock; }
-    dev::sim::HcsNode *node() const { return m_node.get(); } // HCS families
-    dev::sim::HartDevice *hart() const;                      // wandfluh-sd7
+    dev::sim::HcsNode *node() const { return m_node.get(); }    // HCS families
+    dev::sim::HartDevice *hart() const { return m_hart.get(); } // wandfluh-sd7
     const SimSpec &spec() const { return m_spec; }
     // The module address a master uses for module `index` (Modbus unit / node SADR / poll address).
     int moduleAddress(std::size_t index) const;
@@ -73,7 +72,8 @@ private:
     SimSpec m_spec;
     dev::sim::SimClock m_clock;
     std::unique_ptr<dev::sim::HcsNode> m_node;
-    std::shared_ptr<SimHart> m_hart; // opaque: see sim_hart.h
+    std::unique_ptr<dev::sim::HartDevice> m_hart;       // on m_clock while it lives
+    std::shared_ptr<dev::sim::HartServer> m_hartServer; // its HART front end
     link::SimLink *m_link = nullptr;
     QTimer m_timer;
     QElapsedTimer m_elapsed;

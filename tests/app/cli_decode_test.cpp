@@ -1,6 +1,6 @@
-// valvetune-cli decode / encode golden tests (Protocol core issue, "CLI"): the manuals' worked
+// valvetune-cli decode / encode golden tests: the manuals' worked
 // examples, error exits, and every protocol surviving garbage.
-#include "app/cli/cli_app.h"
+#include "cli_run.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -8,27 +8,15 @@
 
 namespace {
 
-struct Out
-{
-    int code;
-    std::string out;
-    std::string err;
-};
-
-Out run(QStringList args)
-{
-    args.prepend("valvetune-cli");
-    std::ostringstream out, err;
-    const int code = vt::cli::runCli(args, out, err);
-    return {code, out.str(), err.str()};
-}
+using vt::test::cli;
+using vt::test::CliRun;
 
 } // namespace
 
 // OPAT manual §2.7: write C1.07 = 1.000 V to the OPAT master: 23 00 06 00 30 03 E8.
 TEST(CliDecode, OpatWriteExampleFieldByField)
 {
-    const Out r = run(
+    const CliRun r = cli(
         {"--json", "decode", "--protocol", "gateway", "--family", "opat", "23 00 06 00 30 03 E8"});
     ASSERT_EQ(r.code, 0) << r.err;
     const auto doc = nlohmann::json::parse(r.out);
@@ -44,14 +32,14 @@ TEST(CliDecode, OpatWriteExampleFieldByField)
     EXPECT_NE(f[3]["text"].get<std::string>().find("C1.07"),
               std::string::npos); // named from the dictionary
     EXPECT_NE(f[4]["text"].get<std::string>().find("1.000 V"), std::string::npos);
-    const Out de = run({"decode", "--protocol", "gateway", "--family", "opat", "--lang", "de",
-                        "23 00 06 00 30 03 E8"});
+    const CliRun de = cli({"decode", "--protocol", "gateway", "--family", "opat", "--lang", "de",
+                           "23 00 06 00 30 03 E8"});
     EXPECT_NE(de.out.find("1,000 V"), std::string::npos);
 }
 
 TEST(CliDecode, AFrameThatDoesNotDecodeIsOkFalseExitOne)
 {
-    const Out r = run({"--json", "decode", "--protocol", "gateway", "23 00"});
+    const CliRun r = cli({"--json", "decode", "--protocol", "gateway", "23 00"});
     EXPECT_EQ(r.code, vt::cli::kExitDeviceError);
     const auto doc = nlohmann::json::parse(r.out);
     EXPECT_EQ(doc["ok"], false);
@@ -66,8 +54,8 @@ TEST(CliDecode, EveryProtocolSurvivesGarbage)
          {"gateway", "modbus-rtu", "modbus-tcp", "profidrive", "pkw", "pzd", "hart", "canopen"}) {
         for (const char *hex :
              {"00", "FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF FF", "83"}) {
-            const Out r =
-                run({"--json", "decode", "--protocol", p, "--direction", "response", hex});
+            const CliRun r =
+                cli({"--json", "decode", "--protocol", p, "--direction", "response", hex});
             EXPECT_TRUE(r.code == 0 || r.code == 1) << p << " " << hex;
             const auto doc = nlohmann::json::parse(r.out);
             EXPECT_EQ(doc["protocol"], p);
@@ -78,35 +66,35 @@ TEST(CliDecode, EveryProtocolSurvivesGarbage)
 
 TEST(CliDecode, UsageErrors)
 {
-    EXPECT_EQ(run({"decode", "23 00"}).code, vt::cli::kExitUsage); // no --protocol
-    EXPECT_EQ(run({"decode", "--protocol", "smoke-signals", "23"}).code, vt::cli::kExitUsage);
-    EXPECT_EQ(run({"decode", "--protocol", "gateway", "23 0G"}).code,
+    EXPECT_EQ(cli({"decode", "23 00"}).code, vt::cli::kExitUsage); // no --protocol
+    EXPECT_EQ(cli({"decode", "--protocol", "smoke-signals", "23"}).code, vt::cli::kExitUsage);
+    EXPECT_EQ(cli({"decode", "--protocol", "gateway", "23 0G"}).code,
               vt::cli::kExitUsage);                                                // not hex
-    EXPECT_EQ(run({"decode", "--protocol", "gateway"}).code, vt::cli::kExitUsage); // no frame
-    EXPECT_EQ(run({"decode", "--protocol", "gateway", "--family", "xyz", "23"}).code,
+    EXPECT_EQ(cli({"decode", "--protocol", "gateway"}).code, vt::cli::kExitUsage); // no frame
+    EXPECT_EQ(cli({"decode", "--protocol", "gateway", "--family", "xyz", "23"}).code,
               vt::cli::kExitUsage);
-    EXPECT_EQ(run({"decode", "--protocol", "gateway", "--profile", "nope", "23 00 03"}).code,
+    EXPECT_EQ(cli({"decode", "--protocol", "gateway", "--profile", "nope", "23 00 03"}).code,
               vt::cli::kExitUsage);
 }
 
 // OPAT manual §2.7 (CMD 6) and the classic Modbus reference frame 01 03 00 00 00 01 84 0A.
 TEST(CliEncode, BuildsTheManualsFrames)
 {
-    EXPECT_EQ(run({"encode", "gateway", "write", "--tadr", "0x23", "--sadr", "0", "--id", "0x30",
+    EXPECT_EQ(cli({"encode", "gateway", "write", "--tadr", "0x23", "--sadr", "0", "--id", "0x30",
                    "--value", "1000"})
                   .out,
               "23 00 06 00 30 03 E8\n");
     EXPECT_EQ(
-        run({"encode", "gateway", "read", "--tadr", "0x23", "--sadr", "0", "--id", "0x30"}).out,
+        cli({"encode", "gateway", "read", "--tadr", "0x23", "--sadr", "0", "--id", "0x30"}).out,
         "23 00 03 00 30 00 01\n");
-    EXPECT_EQ(run({"encode", "modbus-rtu", "read", "--unit", "1", "--id", "0"}).out,
+    EXPECT_EQ(cli({"encode", "modbus-rtu", "read", "--unit", "1", "--id", "0"}).out,
               "01 03 00 00 00 01 84 0A\n");
-    const Out neg = run({"--json", "encode", "gateway", "write", "--tadr", "1", "--sadr", "2",
-                         "--id", "31", "--value", "-3000"});
+    const CliRun neg = cli({"--json", "encode", "gateway", "write", "--tadr", "1", "--sadr", "2",
+                            "--id", "31", "--value", "-3000"});
     EXPECT_EQ(nlohmann::json::parse(neg.out)["hex"], "01 02 06 00 1F F4 48");
     // DMA CMD 15 for two modules: 3 + 5·2 bytes, SNUM = 2.
-    const Out cyc = run({"encode", "gateway", "cyclic", "--family", "dma", "--tadr", "1",
-                         "--module", "0,1000,0", "--module", "0,2000,0"});
+    const CliRun cyc = cli({"encode", "gateway", "cyclic", "--family", "dma", "--tadr", "1",
+                            "--module", "0,1000,0", "--module", "0,2000,0"});
     EXPECT_EQ(cyc.out, "01 02 0F 00 03 E8 00 00 00 07 D0 00 00\n");
 }
 
@@ -116,16 +104,16 @@ TEST(CliEncode, ImpossibleFramesAreUsageErrorsThatSayWhy)
     for (int i = 0; i < 6; ++i)
         six << "--module"
             << "0,0,0";
-    const Out r = run(six);
+    const CliRun r = cli(six);
     EXPECT_EQ(r.code, vt::cli::kExitUsage);
     EXPECT_NE(r.err.find("cannot carry 6 modules"), std::string::npos) << r.err;
-    const Out count =
-        run({"encode", "modbus-rtu", "read", "--unit", "1", "--id", "0", "--count", "9"});
+    const CliRun count =
+        cli({"encode", "modbus-rtu", "read", "--unit", "1", "--id", "0", "--count", "9"});
     EXPECT_EQ(count.code, vt::cli::kExitUsage);
     EXPECT_NE(count.err.find("1 to 8"), std::string::npos);
-    EXPECT_EQ(run({"encode", "gateway", "write", "--tadr", "1", "--sadr", "0", "--id", "1"}).code,
+    EXPECT_EQ(cli({"encode", "gateway", "write", "--tadr", "1", "--sadr", "0", "--id", "1"}).code,
               vt::cli::kExitUsage);
-    EXPECT_EQ(run({"encode", "gateway", "write", "--tadr", "256", "--sadr", "0", "--id", "1",
+    EXPECT_EQ(cli({"encode", "gateway", "write", "--tadr", "256", "--sadr", "0", "--id", "1",
                    "--value", "0"})
                   .code,
               vt::cli::kExitUsage);

@@ -1,4 +1,4 @@
-// valvetune-cli read --out / diff / write golden tests (issue #6 "CLI"; docs/FILE-FORMAT.md):
+// valvetune-cli read --out / diff / write golden tests (docs/FILE-FORMAT.md):
 // a file read from the device shows no difference, a changed parameter shows as exactly that row,
 // write --dry-run lists it, write restores it (changed only, verified); a file of another family
 // or with a value out of range is refused whole.

@@ -1,4 +1,4 @@
-// valvetune-cli device commands, golden tests (issue #6 "CLI"): info, scan, read, get, set and
+// valvetune-cli device commands, golden tests: info, scan, read, get, set and
 // monitor against the built-in simulator (dma-pn-v51, opat:3, dma-pb-v32) in text and --json,
 // the error exits (usage 2, device 1, connection 3), and one run over a real valvetune-sim --tcp.
 // Files (read --out, diff, write): cli_device_file_test.cpp.
@@ -84,7 +84,7 @@ TEST_F(CliDevice, ReadPrintsEveryReadableRowOfEveryModule)
     EXPECT_EQ(one.json()["modules"][0]["address"], 2);
 }
 
-// Issue #7's scenario on the command line: C1.07 = 1.000 V, read back the same.
+// The editor's scenario on the command line: C1.07 = 1.000 V, read back the same.
 TEST_F(CliDevice, SetThenGetShowsTheValueInDisplayUnits)
 {
     const CliRun set = cli({"set", "--sim", "dma-pn-v51", "C1.07=1.000"});

@@ -1,6 +1,6 @@
-// valvetune-cli conventions (Foundation issue): usage errors exit 2 with one line on stderr;
+// valvetune-cli conventions: usage errors exit 2 with one line on stderr;
 // --help and --version exit 0; --json output is JSON.
-#include "app/cli/cli_app.h"
+#include "cli_run.h"
 
 #include <algorithm>
 #include <array>
@@ -12,28 +12,8 @@
 
 namespace {
 
-struct CliRun
-{
-    int code;
-    std::string out;
-    std::string err;
-};
-
-CliRun cli(QStringList args)
-{
-    args.prepend("valvetune-cli");
-    std::ostringstream out, err;
-    const int code = vt::cli::runCli(args, out, err);
-    return {code, out.str(), err.str()};
-}
-
-int lines(const std::string &s)
-{
-    int n = 0;
-    for (char c : s)
-        n += c == '\n';
-    return n;
-}
+using vt::test::cli;
+using vt::test::CliRun;
 
 } // namespace
 
@@ -44,7 +24,7 @@ TEST(Cli, UsageErrorsExitTwoWithOneLineOnStderr)
           QStringList{"--json", "no-such-command"}}) {
         const CliRun r = cli(args);
         EXPECT_EQ(r.code, vt::cli::kExitUsage) << args.join(' ').toStdString();
-        EXPECT_EQ(lines(r.err), 1) << r.err;
+        EXPECT_EQ(r.errLines(), 1) << r.err;
         EXPECT_EQ(r.err.rfind("valvetune-cli: ", 0), 0u) << r.err;
         EXPECT_TRUE(r.out.empty());
     }

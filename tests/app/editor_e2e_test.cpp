@@ -1,4 +1,4 @@
-// The parameter editor end to end through the simulator (issue #7): connect → read all → edit
+// The parameter editor end to end through the simulator: connect → read all → edit
 // C1.07 to 1.000 V in the editor → write → the simulator holds raw 1000 → undo marks the row as
 // differing from the device → save → reopen → compare shows no difference; an out-of-range entry
 // is refused in the editor with the limits named; German input "1,5" in a volt field is raw 1500.
@@ -14,7 +14,7 @@
 #include "model/params/param_roles.h"
 #include "model/params/parameter_filter_model.h"
 #include "model/params/parameter_tree_model.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 #include "widgets/connect/connect_dialog.h"
 #include "widgets/connect/link_status_widget.h"
 #include "widgets/editor/compare_dialog.h"
@@ -29,6 +29,7 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QTreeView>
 
 namespace vt::test {
@@ -58,7 +59,7 @@ struct EditorE2E : ::testing::Test
         spec.kind = model::ConnectionKind::Sim;
         spec.sim.family = "dma-pn-v51";
         window->device().connectTo(spec); // reads all once connected
-        ASSERT_TRUE(read.wait(30000));
+        ASSERT_TRUE(read.wait(kWaitMs));
         ASSERT_TRUE(read.at(0).at(0).toBool());
     }
 
@@ -123,7 +124,7 @@ TEST_F(EditorE2E, EditWriteUndoSaveReopenCompare)
     EXPECT_EQ(working("C1.07"), dev::RawValue{1000.0});
     QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
     window->device().readAll();
-    ASSERT_TRUE(read.wait(30000));
+    ASSERT_TRUE(read.wait(kWaitMs));
     window->device().compareWithDevice();
     auto *compare = window->findChild<ui::CompareDialog *>();
     ASSERT_NE(compare, nullptr);
@@ -167,7 +168,7 @@ TEST_F(EditorE2E, LiveDisplayValuesArriveWithoutDisturbingAnEdit)
     model::ParameterDocument &doc = window->workspace().document();
     doc.applyRead(0, {{row("d1.11"), 12345.0}});
     ASSERT_EQ(working("d1.11"), dev::RawValue{12345.0});
-    ASSERT_TRUE(QTest::qWaitFor([&] { return working("d1.11") != dev::RawValue{12345.0}; }, 5000));
+    ASSERT_TRUE(waitUntil([&] { return working("d1.11") != dev::RawValue{12345.0}; }));
     EXPECT_EQ(line->text(), "0.5");
     EXPECT_TRUE(line->isVisible());
 }
@@ -203,7 +204,7 @@ TEST_F(EditorE2E, NewFileFromTheDictionaryDefaultsAndConnectThroughTheDialog)
     connectDialog->setSpec(spec);
     QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
     connectDialog->accept();
-    ASSERT_TRUE(read.wait(30000));
+    ASSERT_TRUE(read.wait(kWaitMs));
     EXPECT_TRUE(window->linkStatus()->linkText().contains("dma-pn-v51"))
         << window->linkStatus()->linkText().toStdString();
     EXPECT_TRUE(window->workspace().document().module(0).online);

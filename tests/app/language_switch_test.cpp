@@ -1,4 +1,4 @@
-// German and English at run time (issue #10): with the editor, monitor, inspector and fold wizard
+// German and English at run time: with the editor, monitor, inspector and fold wizard
 // open and a device connected, one switch of the Language menu changes the visible texts of each
 // — menus, the editor's filters and column headers, the plot axis, the inspector's tabs, the
 // wizard page — and numbers follow ("1,000 V"); switching back restores English.
@@ -8,6 +8,7 @@
 #include "app/gui/main_window.h"
 #include "app/gui/workspace.h"
 #include "model/params/parameter_tree_model.h"
+#include "test_wait.h"
 #include "widgets/editor/parameter_editor.h"
 #include "widgets/fold/fold_wizard.h"
 #include "widgets/inspector/inspector_view.h"
@@ -71,7 +72,7 @@ TEST(LanguageSwitch, EveryOpenWindowFollowsAtOnce)
     spec.kind = model::ConnectionKind::Sim;
     spec.sim.family = "dma-pn-v51";
     w.device().connectTo(spec);
-    ASSERT_TRUE(read.wait(30000));
+    ASSERT_TRUE(read.wait(vt::test::kWaitMs));
     const dev::ParamMeta *c107 = w.workspace().document().module(0).dictionary->find("C1.07");
     w.workspace().document().edit(0, c107, 1000.0);
     w.openFoldWizard();

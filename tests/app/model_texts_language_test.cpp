@@ -8,7 +8,7 @@
 #include "model/params/parameter_document.h"
 #include "model/session/write_job.h"
 #include "model/text_language.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QAbstractButton>
@@ -103,7 +103,7 @@ TEST(ModelTextsLanguage, WriteJobRefusalsInGerman)
     list[0].value = 20000.0;
     list[1].row = c->dictionary().find("d1.11"); // read only: refused before sending
     list[1].value = 5.0;
-    model::WriteJob job(*c->access, c->address(), c->dictionary(), list);
+    model::WriteJob job(c->access(), c->address(), c->dictionary(), list);
     QSignalSpy finished(&job, &model::WriteJob::finished);
     {
         German german;

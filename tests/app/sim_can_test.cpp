@@ -1,4 +1,4 @@
-// valvetune-sim on CAN (Device simulator issue, "Front ends: … CANopen SDO over a CAN fd"): the
+// valvetune-sim on CAN ("Front ends: … CANopen SDO over a CAN fd"): the
 // real binary serves expedited SDO transfers (CiA 301 §7.2.4.3; request 0x600 + node, response
 // 0x580 + node) for an HCS module's manufacturer objects 0x2000 + ID, sub 0, and the ED1's CiA 408
 // objects (ARCHITECTURE.md "CAN"). This kernel has no SocketCAN, so the bus is one end of
@@ -44,11 +44,11 @@ public:
         auto frame = canopen::toCanFrame(request, node);
         return frame.ok() && sendFrame(*frame);
     }
-    // The next frame from the simulator, at most kStartMs away.
+    // The next frame from the simulator, at most kWaitMs away.
     std::optional<canopen::CanFrame> nextFrame()
     {
         pollfd p{m_fd, POLLIN, 0};
-        if (::poll(&p, 1, kStartMs) != 1)
+        if (::poll(&p, 1, kWaitMs) != 1)
             return std::nullopt;
         std::uint8_t buffer[80];
         const ssize_t n = ::recv(m_fd, buffer, sizeof buffer, MSG_DONTWAIT);
@@ -65,7 +65,7 @@ public:
         EXPECT_TRUE(sendSdo(request, m_node));
         const auto frame = nextFrame();
         if (!frame) {
-            ADD_FAILURE() << "no answer within " << kStartMs << " ms";
+            ADD_FAILURE() << "no answer within " << kWaitMs << " ms";
             return {};
         }
         EXPECT_EQ(frame->id, canopen::sdoResponseId(m_node));
@@ -181,7 +181,7 @@ TEST(SimCan, HcsParametersOverSdo)
     EXPECT_EQ(abortCode(client.upload(0x2000, 1)), 0x06090011u);
 
     can.sim().process().terminate();
-    ASSERT_TRUE(can.sim().process().waitForFinished(kStartMs));
+    ASSERT_TRUE(can.sim().process().waitForFinished(kWaitMs));
     EXPECT_EQ(can.sim().process().exitCode(), 0);
     const QString log = can.sim().stderrText();
     EXPECT_TRUE(log.contains("] <- 605#4000200000000000")) << log.toStdString();
@@ -214,14 +214,14 @@ TEST(SimCan, PeerGoneAndFaultCut)
         CanSim can({"--device", "opat"});
         ASSERT_FALSE(can.sim().listening().isEmpty()) << can.sim().stderrText().toStdString();
         can.closePeer();
-        ASSERT_TRUE(can.sim().process().waitForFinished(kStartMs));
+        ASSERT_TRUE(can.sim().process().waitForFinished(kWaitMs));
         EXPECT_EQ(can.sim().process().exitCode(), 3);
         EXPECT_TRUE(can.sim().stderrText().contains("the peer closed it"));
     }
     CanSim can({"--device", "opat", "--fault", "cut=1"});
     ASSERT_FALSE(can.sim().listening().isEmpty()) << can.sim().stderrText().toStdString();
     EXPECT_EQ(canopen::expeditedValue(can.client().upload(0x2000)), freshWord("opat", 1, 0, 0));
-    ASSERT_TRUE(can.sim().process().waitForFinished(kStartMs));
+    ASSERT_TRUE(can.sim().process().waitForFinished(kWaitMs));
     EXPECT_EQ(can.sim().process().exitCode(), 0);
     EXPECT_TRUE(can.sim().stderrText().contains("fault cut after 1 answers"));
 }
@@ -236,7 +236,7 @@ TEST(SimCan, UnusableEndpointsExitThree)
         const int child = stream[1];
         Sim sim({"--device", "opat", "--can-fd", QString::number(child)},
                 [child] { ::fcntl(child, F_SETFD, 0); });
-        ASSERT_TRUE(sim.process().waitForFinished(kStartMs));
+        ASSERT_TRUE(sim.process().waitForFinished(kWaitMs));
         EXPECT_EQ(sim.process().exitCode(), 3);
         EXPECT_TRUE(sim.stderrText().contains("stream socket")) << sim.stderrText().toStdString();
     }

@@ -1,4 +1,4 @@
-// valvetune-sim end to end (Device simulator issue: "valvetune-sim --device FAMILY … prints one
+// valvetune-sim end to end ("valvetune-sim --device FAMILY … prints one
 // line `listening on …` when ready, serves until SIGINT/SIGTERM"; "mbpoll reads and writes
 // holding registers over a socat pseudo-terminal pair (Modbus RTU) and over Modbus TCP on
 // loopback"): the real binary is spawned and reached the way a user reaches it — mbpoll over its
@@ -69,7 +69,7 @@ TEST(SimCli, MbpollOverTcpReadsAndGetsIllegalDataValue)
         << writing.err.toStdString();
 
     sim.process().terminate();
-    ASSERT_TRUE(sim.process().waitForFinished(kStartMs));
+    ASSERT_TRUE(sim.process().waitForFinished(kWaitMs));
     const QString log = sim.stderrText();
     EXPECT_TRUE(log.contains(QRegularExpression(R"(\] <- 00 01 00 00 00 06 01 03 00 30 00 01)")))
         << log.toStdString();
@@ -185,7 +185,7 @@ TEST(SimCli, SigtermEndsWithZero)
     Sim sim({"--device", "dma-pn-v51", "--modules", "3", "--tcp", ":0"});
     ASSERT_FALSE(sim.listening().isEmpty()) << sim.stderrText().toStdString();
     sim.process().terminate(); // SIGTERM
-    ASSERT_TRUE(sim.process().waitForFinished(kStartMs));
+    ASSERT_TRUE(sim.process().waitForFinished(kWaitMs));
     EXPECT_EQ(sim.process().exitStatus(), QProcess::NormalExit);
     EXPECT_EQ(sim.process().exitCode(), 0);
 }
@@ -211,7 +211,7 @@ TEST(SimCli, HartCommandZeroOverPty)
 
     hart::Deframer deframer;
     std::optional<hart::Frame> answer;
-    const QDeadlineTimer deadline(kStartMs);
+    const QDeadlineTimer deadline(kWaitMs);
     while (!answer && !deadline.hasExpired()) {
         pollfd p{fd, POLLIN, 0};
         if (poll(&p, 1, static_cast<int>(std::max<qint64>(1, deadline.remainingTime()))) <= 0)
@@ -226,7 +226,7 @@ TEST(SimCli, HartCommandZeroOverPty)
                 answer = e.frame;
     }
     close(fd);
-    ASSERT_TRUE(answer.has_value()) << "no HART answer within " << kStartMs << " ms";
+    ASSERT_TRUE(answer.has_value()) << "no HART answer within " << kWaitMs << " ms";
     EXPECT_EQ(answer->type, hart::FrameType::Ack);
     EXPECT_EQ(answer->command, 0);
     const auto payload = hart::decodeUniversal(0, true, answer->data);
@@ -257,7 +257,7 @@ TEST(SimCli, FaultsDropAndCut)
         mbpoll(), {"-m", "rtu", "-P", "none", "-a", "1", "-r", "0", "-1", "-0", "-o", "2", pty});
     ASSERT_TRUE(r.finished);
     EXPECT_EQ(registers(r.out).size(), 1u) << r.out.toStdString() << r.err.toStdString();
-    ASSERT_TRUE(sim.process().waitForFinished(kStartMs));
+    ASSERT_TRUE(sim.process().waitForFinished(kWaitMs));
     EXPECT_EQ(sim.process().exitCode(), 0);
     EXPECT_TRUE(sim.stderrText().contains("fault cut after 1 answers"));
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "sim/node_config.h"
+#include "wait_bound.h"
 
 #include <QDeadlineTimer>
 #include <QProcess>
@@ -20,8 +21,7 @@
 
 namespace vt::simtest {
 
-inline constexpr int kStartMs = 10'000;
-inline constexpr int kRunMs = 20'000;
+using test::kWaitMs;
 
 // A child process (valvetune-sim by default); SIGTERM (then SIGKILL) when the test is done.
 // `inChild` runs between fork and exec (e.g. to let a descriptor survive the exec).
@@ -42,9 +42,9 @@ public:
         if (m_process.state() == QProcess::NotRunning)
             return;
         m_process.terminate();
-        if (!m_process.waitForFinished(kStartMs)) {
+        if (!m_process.waitForFinished(kWaitMs)) {
             m_process.kill();
-            m_process.waitForFinished(kStartMs);
+            m_process.waitForFinished(kWaitMs);
         }
     }
     Sim(const Sim &) = delete;
@@ -53,7 +53,7 @@ public:
     // What follows "listening on " on the first stdout line; empty when none came in time.
     QString listening()
     {
-        const QDeadlineTimer deadline(kStartMs);
+        const QDeadlineTimer deadline(kWaitMs);
         while (!m_process.canReadLine()) {
             if (deadline.hasExpired() || m_process.state() == QProcess::NotRunning)
                 return {};
@@ -69,7 +69,7 @@ public:
     bool waitForStderr(const QString &text)
     {
         m_process.setReadChannel(QProcess::StandardError);
-        const QDeadlineTimer deadline(kStartMs);
+        const QDeadlineTimer deadline(kWaitMs);
         for (;;) {
             m_stderr += QString::fromUtf8(m_process.readAllStandardError());
             if (m_stderr.contains(text))
@@ -101,7 +101,7 @@ inline ProcessRun run(const QString &program, const QStringList &args)
     QProcess p;
     p.start(program, args);
     ProcessRun r;
-    r.finished = p.waitForFinished(kRunMs);
+    r.finished = p.waitForFinished(kWaitMs);
     if (!r.finished)
         p.kill();
     r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;

@@ -1,5 +1,5 @@
 // The German catalogue is complete: every message translated, none unfinished, vanished or
-// obsolete (German and English issue). lupdate marks new UI strings "unfinished", so a change
+// obsolete. lupdate marks new UI strings "unfinished", so a change
 // that adds text without translating it fails here.
 #include "qt_printers.h"
 

@@ -1,3 +1,5 @@
+#include "model/assert_handler.h"
+
 #include <QApplication>
 #include <QStandardPaths>
 #include <cstdlib>
@@ -10,6 +12,7 @@ int main(int argc, char **argv)
     // Never touch the user's real settings or data from a test.
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
+    vt::model::installQtAssertHandler(); // as valvetune's main() does
     QCoreApplication::setOrganizationName(QStringLiteral("ValveTuneTests"));
     QCoreApplication::setApplicationName(QStringLiteral("ValveTuneTests"));
     ::testing::InitGoogleTest(&argc, argv);

@@ -1,4 +1,4 @@
-// CanLink and the 16-byte can_frame image (issue "Links and session engine": fd-based SocketCAN
+// CanLink and the 16-byte can_frame image (fd-based SocketCAN
 // link). This kernel has no AF_CAN, so the I/O path is exercised through
 // socketpair(AF_UNIX, SOCK_SEQPACKET), which keeps datagram boundaries as CAN_RAW does.
 #include "qt_printers.h"
@@ -57,11 +57,11 @@ protected:
         if (m_peer >= 0)
             ::close(m_peer);
     }
-    // The peer's next datagram, waiting at most kTimeoutMs for it.
+    // The peer's next datagram, waiting at most kWaitMs for it.
     QByteArray peerRead()
     {
         pollfd p{m_peer, POLLIN, 0};
-        if (::poll(&p, 1, vt::test::kTimeoutMs) != 1)
+        if (::poll(&p, 1, vt::test::kWaitMs) != 1)
             return {};
         char buffer[128];
         const ssize_t n = ::recv(m_peer, buffer, sizeof buffer, MSG_DONTWAIT);

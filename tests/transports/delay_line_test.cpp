@@ -19,7 +19,7 @@ TEST(DelayLine, DeliversInPushOrderEvenWhenLaterChunksAreDueEarlier)
     const auto due = line.push("second", now + 5ms);
     EXPECT_GE(due, now + 40ms); // clamped behind "first"
     EXPECT_TRUE(got.empty());   // never delivered from push()
-    ASSERT_TRUE(QTest::qWaitFor([&] { return got.size() == 2; }, vt::test::kTimeoutMs));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return got.size() == 2; }, vt::test::kWaitMs));
     EXPECT_EQ(got[0], QByteArray("first"));
     EXPECT_EQ(got[1], QByteArray("second"));
     EXPECT_GE(DelayLine::Clock::now(), now + 40ms);
@@ -34,8 +34,8 @@ TEST(DelayLine, ClearDropsPendingChunks)
     line.clear();
     EXPECT_TRUE(line.isEmpty());
     line.push("z", DelayLine::Clock::now());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return delivered == 1; }, vt::test::kTimeoutMs));
-    EXPECT_FALSE(QTest::qWaitFor([&] { return delivered > 1; }, 50));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return delivered == 1; }, vt::test::kWaitMs));
+    EXPECT_FALSE(vt::test::waitUntil([&] { return delivered > 1; }, 50));
 }
 
 TEST(DelayLine, AReceiverThatClearsStopsTheBatch)
@@ -50,8 +50,8 @@ TEST(DelayLine, AReceiverThatClearsStopsTheBatch)
     const auto now = DelayLine::Clock::now();
     line.push("a", now);
     line.push("b", now);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return !got.empty(); }, vt::test::kTimeoutMs));
-    EXPECT_FALSE(QTest::qWaitFor([&] { return got.size() > 1; }, 50));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return !got.empty(); }, vt::test::kWaitMs));
+    EXPECT_FALSE(vt::test::waitUntil([&] { return got.size() > 1; }, 50));
     EXPECT_EQ(got.size(), 1u);
 }
 

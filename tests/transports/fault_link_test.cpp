@@ -1,4 +1,4 @@
-// FaultLink: seeded, reproducible fault injection (issue "Links and session engine"). Most tests
+// FaultLink: seeded, reproducible fault injection. Most tests
 // drive a synchronous RecordingLink so every frame's fate can be checked; one runs over SimLink.
 #include "fault_test_links.h"
 #include "qt_printers.h"

@@ -1,5 +1,4 @@
-// FaultSpec text form, as the CLI's --fault option will pass it (issue "Links and session
-// engine": seeded fault injection).
+// FaultSpec text form, as the CLI's --fault option will pass it XX: seeded fault injection).
 #include "qt_printers.h"
 #include "transports/fault_spec.h"
 

@@ -1,7 +1,7 @@
 // PtyPair: the far end of a serial line for SerialLink tests. The test holds the pty master;
 // SerialLink opens the slave through a symlink path that libserialport accepts (see
 // libserialportPath()). Reads from the master are collected by a QSocketNotifier, so tests wait
-// on the event loop (QTest::qWaitFor), never sleep. Main thread only.
+// on the event loop (test_wait.h), never sleep. Main thread only.
 #pragma once
 
 #include <QByteArray>

@@ -1,5 +1,5 @@
 // SerialLink against a pseudo-terminal pair: the test holds the master, the link opens the slave
-// (issue "Links and session engine": serial link on libserialport, settings, unplug, reopen).
+// (serial link on libserialport, settings, unplug, reopen).
 // libserialport needs two test-only workarounds on a pty: the symlink path (pty_pair.h) and the
 // TIOCMGET shim (ioctl_shim.cpp).
 #include "ioctl_shim.h"
@@ -84,20 +84,14 @@ TEST_F(SerialLinkPty, OpensAsynchronouslyAndMovesBytesBothWays)
 
     const QByteArray request = QByteArray::fromHex("0103000000084a0c");
     link.send(request);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return m_pty->received().size() >= request.size(); },
-                                vt::test::kTimeoutMs));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().size() >= request.size(); },
+                                    vt::test::kWaitMs));
     EXPECT_EQ(m_pty->received(), request);
 
     const QByteArray answer = QByteArray::fromHex("010310000100020003000400050006000700089f4b");
     ASSERT_TRUE(m_pty->write(answer));
     QByteArray got;
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] {
-            for (; !received.isEmpty(); received.removeFirst())
-                got += received.first().value(0).toByteArray();
-            return got.size() >= answer.size();
-        },
-        vt::test::kTimeoutMs));
+    ASSERT_TRUE(vt::test::collectBytes(received, got, answer.size()));
     EXPECT_EQ(got, answer);
     EXPECT_EQ(failed.count(), 0);
 
@@ -190,7 +184,7 @@ TEST_F(SerialLinkPty, UnpluggedFarSideFailsAndReopenWorks)
     m_pty->startReading();
     link.send(QByteArrayLiteral("again"));
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return m_pty->received() == "again"; }, vt::test::kTimeoutMs));
+        vt::test::waitUntil([&] { return m_pty->received() == "again"; }, vt::test::kWaitMs));
     ASSERT_TRUE(m_pty->write(QByteArrayLiteral("back")));
     ASSERT_TRUE(waitForCount(received, 1));
     EXPECT_EQ(received.first().value(0).toByteArray(), QByteArrayLiteral("back"));
@@ -241,7 +235,7 @@ TEST(SerialLink, CloseBeforeOpenCompletesStaysClosed)
     link.close();
     EXPECT_EQ(link.state(), LinkState::Closed);
     // The worker's late "not found" belongs to the closed session and is ignored.
-    EXPECT_FALSE(failed.wait(300));
+    EXPECT_FALSE(failed.wait(100));
     EXPECT_EQ(link.state(), LinkState::Closed);
 }
 

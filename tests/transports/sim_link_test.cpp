@@ -1,4 +1,4 @@
-// SimLink with a tiny echo ByteServer (issue "Links and session engine": the simulator is just
+// SimLink with a tiny echo ByteServer (the simulator is just
 // another link; answers arrive asynchronously and, when asked, after serial wire time).
 #include "qt_printers.h"
 #include "test_wait.h"
@@ -107,14 +107,14 @@ TEST(SimLink, UntimedLinkAnswersOnTheNextLoopTurn)
 TEST(SimLink, CloseDiscardsAnswersOnTheWire)
 {
     Fixture f;
-    f.link.setWireTiming(1200, 11);
+    f.link.setWireTiming(9600, 11);
     QSignalSpy received(&f.link, &SimLink::received);
     f.link.open();
     ASSERT_TRUE(waitForState(f.link, LinkState::Open));
-    f.link.send(QByteArray(10, 'x')); // ~183 ms round trip
+    f.link.send(QByteArray(10, 'x')); // ~23 ms round trip
     f.link.close();
     EXPECT_EQ(f.link.state(), LinkState::Closed);
-    EXPECT_FALSE(received.wait(400));
+    EXPECT_FALSE(received.wait(100));         // four round trips: the answer would have come
     f.link.send(QByteArrayLiteral("closed")); // logged no-op
     EXPECT_EQ(f.server->chunks, 1);
 }

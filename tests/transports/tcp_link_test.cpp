@@ -1,4 +1,4 @@
-// TcpLink against a QTcpServer on 127.0.0.1 (issue "Links and session engine": TCP link, connect
+// TcpLink against a QTcpServer on 127.0.0.1 (TCP link, connect
 // timeout, failure on refusal and on the peer closing).
 #include "qt_printers.h"
 #include "test_wait.h"
@@ -29,7 +29,7 @@ struct Server
     QTcpSocket *accept()
     {
         if (!server.hasPendingConnections() &&
-            !QTest::qWaitFor([&] { return server.hasPendingConnections(); }, vt::test::kTimeoutMs))
+            !vt::test::waitUntil([&] { return server.hasPendingConnections(); }, vt::test::kWaitMs))
             return nullptr;
         return server.nextPendingConnection();
     }
@@ -53,24 +53,18 @@ TEST(TcpLink, RoundTripWithAServer)
     const QByteArray mbap = QByteArray::fromHex("000100000006010300000008");
     link.send(mbap);
     QByteArray atServer;
-    ASSERT_TRUE(QTest::qWaitFor(
+    ASSERT_TRUE(vt::test::waitUntil(
         [&] {
             atServer += peer->readAll();
             return atServer.size() >= mbap.size();
         },
-        vt::test::kTimeoutMs));
+        vt::test::kWaitMs));
     EXPECT_EQ(atServer, mbap);
 
     const QByteArray answer = QByteArray::fromHex("00010000000501030200ff");
     peer->write(answer);
     QByteArray got;
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] {
-            for (; !received.isEmpty(); received.removeFirst())
-                got += received.first().value(0).toByteArray();
-            return got.size() >= answer.size();
-        },
-        vt::test::kTimeoutMs));
+    ASSERT_TRUE(vt::test::collectBytes(received, got, answer.size()));
     EXPECT_EQ(got, answer);
 }
 
@@ -156,7 +150,7 @@ TEST(TcpLink, ConnectTimeoutFiresWhenNobodyAnswers)
     SilentListener silent;
     ASSERT_NE(silent.port, 0);
     TcpLink link(QStringLiteral("127.0.0.1"), silent.port);
-    link.setConnectTimeout(300ms);
+    link.setConnectTimeout(100ms);
     QSignalSpy failed(&link, &TcpLink::failed);
     link.open();
     ASSERT_TRUE(waitForCount(failed, 1));

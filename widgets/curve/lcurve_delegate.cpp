@@ -1,5 +1,6 @@
 #include "lcurve_delegate.h"
 
+#include "core/vt_assert.h"
 #include "model/curve/lcurve_table_model.h"
 
 #include <QDoubleSpinBox>
@@ -33,8 +34,7 @@ void LCurveDelegate::setModelData(QWidget *editor, QAbstractItemModel *model,
                                   const QModelIndex &index) const
 {
     auto *box = qobject_cast<QDoubleSpinBox *>(editor);
-    if (!box)
-        return;
+    VT_ASSERT(box, return ); // createEditor() made it
     box->interpretText();
     model->setData(index, box->value(), Qt::EditRole);
 }

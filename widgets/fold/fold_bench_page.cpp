@@ -1,10 +1,6 @@
-// First: devices/hcs/status_bits.h has a member named `signals`, which Qt's keyword macro would
-// rewrite once QObject's headers are in.
-// clang-format off
-#include "hcs/status_bits.h"
-// clang-format on
 #include "widgets/fold/fold_bench_page.h"
 
+#include "hcs/status_bits.h"
 #include "model/fold/plc_test_bench.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"

@@ -1,10 +1,6 @@
-// First: devices/hcs/status_bits.h (via plc_config.h) has a member named `signals`, which Qt's
-// keyword macro would rewrite once QObject's headers are in.
-// clang-format off
-#include "model/fold/fold_export.h"
-// clang-format on
 #include "widgets/fold/fold_plc_page.h"
 
+#include "model/fold/fold_export.h"
 #include "model/fold/fold_plan_file.h"
 #include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"

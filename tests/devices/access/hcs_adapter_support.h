@@ -1,12 +1,15 @@
 // Shared helpers of the HCS adapter tests (node image, Modbus RTU / TCP, CANopen 0x2000 + ID):
-// rows of a simulated module to write, to refuse, and the value the module holds for a row.
+// rows of a simulated module to write, to refuse, the value the module holds for a row, and a
+// module's first read block as the simulator answers it.
 #pragma once
 
 #include "../sim/hcs_sim_support.h"
 #include "access/hcs_rows.h"
+#include "adapter_rig.h"
 #include "sim/hcs_module.h"
 
 #include <string>
+#include <vector>
 
 namespace vt::dev::access::test {
 
@@ -46,6 +49,24 @@ inline double storedRaw(const sim::HcsModule &module, const ParamMeta &row)
 inline double otherValue(const sim::HcsModule &module, const ParamMeta &row)
 {
     return storedRaw(module, row) != row.min ? row.min : row.max;
+}
+
+// A module's first read block: the transaction, the simulator's answer and the values it carries.
+struct ReadBlock
+{
+    Transaction t;
+    Bytes answer;
+    std::vector<RawValue> truth;
+};
+
+inline ReadBlock firstReadBlock(Rig &rig, const sim::HcsModule &module)
+{
+    ReadBlock block{
+        rig.adapter.planRead(module.address(), sim::test::readableRows(module)).front(), {}, {}};
+    block.answer = rig.ask(rig.adapter.encode(block.t));
+    for (const ParamMeta *row : block.t.rows)
+        block.truth.emplace_back(storedRaw(module, *row));
+    return block;
 }
 
 } // namespace vt::dev::access::test

@@ -1,4 +1,4 @@
-// The lead's ModbusRtuAdapter / ModbusTcpAdapter (devices/access/modbus_adapter.h) against the
+// ModbusRtuAdapter / ModbusTcpAdapter (devices/access/modbus_adapter.h) against the
 // simulated node's Modbus front ends (devices/sim/modbus_rtu_server.h, modbus_tcp_server.h):
 // CMD 3 = FC 3 in blocks of ≤ 8, CMD 6 = FC 6, exceptions with the HCS meaning (ARCHITECTURE.md
 // "Protocol decisions"), CRC, MBAP transaction numbers, chunking.
@@ -114,12 +114,7 @@ TEST(ModbusRtuAdapter, EveryChangedByteFailsTheCrc)
 {
     RtuRig r;
     const sim::HcsModule &m = r.node->module(0);
-    const auto plan = r.adapter.planRead(m.address(), sim::test::readableRows(m));
-    const Transaction &t = plan.front();
-    const Bytes answer = r.rig.ask(r.adapter.encode(t));
-    std::vector<RawValue> truth;
-    for (const ParamMeta *row : t.rows)
-        truth.emplace_back(access::test::storedRaw(m, *row));
+    const auto [t, answer, truth] = access::test::firstReadBlock(r.rig, m);
     for (std::uint8_t mask : {std::uint8_t{0x01}, std::uint8_t{0x80}, std::uint8_t{0xFF}})
         access::test::expectCorruptionRejected(
             r.adapter, answer, t, truth, [](std::size_t) { return true; }, {}, mask);
@@ -198,12 +193,7 @@ TEST(ModbusTcpAdapter, ChangedHeaderBytesAreNeverAccepted)
 {
     TcpRig r;
     const sim::HcsModule &m = r.node->module(2);
-    const auto plan = r.adapter.planRead(m.address(), sim::test::readableRows(m));
-    const Transaction &t = plan.front();
-    const Bytes answer = r.rig.ask(r.adapter.encode(t));
-    std::vector<RawValue> truth;
-    for (const ParamMeta *row : t.rows)
-        truth.emplace_back(access::test::storedRaw(m, *row));
+    const auto [t, answer, truth] = access::test::firstReadBlock(r.rig, m);
     // MBAP (0..6), function code and byte count are checked; the values have no checksum.
     access::test::expectCorruptionRejected(
         r.adapter, answer, t, truth, [](std::size_t i) { return i < 9; },

@@ -198,12 +198,7 @@ TEST(NodeImageAdapter, ChangedHeaderBytesAreNeverAccepted)
 {
     NodeImageRig r;
     const sim::HcsModule &m = r.node->module(1);
-    const auto plan = r.adapter.planRead(m.address(), sim::test::readableRows(m));
-    const Transaction &t = plan.front();
-    const Bytes answer = r.rig.ask(r.adapter.encode(t));
-    std::vector<RawValue> truth;
-    for (const ParamMeta *row : t.rows)
-        truth.emplace_back(access::test::storedRaw(m, *row));
+    const auto [t, answer, truth] = access::test::firstReadBlock(r.rig, m);
     const std::size_t cnt = 2 * t.rows.size();
     // TADR SADR CMD CNT are checked; the values have no checksum (TCP has one).
     access::test::expectCorruptionRejected(

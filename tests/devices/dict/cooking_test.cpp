@@ -25,7 +25,7 @@ TEST(Cooking, HcsVoltsInBothLanguages)
     const ParamMeta &c107 = param("opat", "C1.07");
     EXPECT_EQ(formatValue(c107, 1000, Language::English), "1.000 V");
     EXPECT_EQ(formatValue(c107, 1000, Language::German), "1,000 V");
-    EXPECT_EQ(*parseValue(c107, "1,5", Language::German), 1500); // Parameter editor issue
+    EXPECT_EQ(*parseValue(c107, "1,5", Language::German), 1500);
     EXPECT_EQ(*parseValue(c107, " 1.5 V ", Language::English), 1500);
     EXPECT_EQ(*parseValue(c107, "1,000 v", Language::German), 1000); // unit in any case
     EXPECT_EQ(*parseValue(c107, "9.999", Language::English), 9999);

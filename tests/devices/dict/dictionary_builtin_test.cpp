@@ -1,4 +1,4 @@
-// The embedded dictionaries load, validate, and hold every family of the Dictionaries issue.
+// The embedded dictionaries load, validate, and hold every device family.
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
 
@@ -46,8 +46,7 @@ TEST(Dictionaries, EveryRowHasGermanText)
     }
 }
 
-// Cooking round-trips for every row at min, max and a middle value in both languages
-// (Dictionaries issue, "Tests").
+// Cooking round-trips for every row at min, max and a middle value in both languages.
 TEST(Dictionaries, CookingRoundTripsEveryRowInBothLanguages)
 {
     int checked = 0;

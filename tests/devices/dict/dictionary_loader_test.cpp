@@ -1,4 +1,4 @@
-// A broken dictionary is a clear error naming file and row (Dictionaries issue, "Behaviour").
+// A broken dictionary is a clear error naming file and row.
 #include "dict/dictionary_loader.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// German and English issue (#10), "Tests": every built-in dictionary, after `extends`, `kind`
+// Every built-in dictionary, after `extends`, `kind`
 // and `remove` are applied, carries German for its title, every label, every description that
 // has English, and every enum and bit label. An overlay that overrides a text with English only
 // (the whole object replaces the inherited one) is caught here, not in the UI.

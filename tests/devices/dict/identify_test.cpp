@@ -1,4 +1,4 @@
-// Identification from Vers/E00, DSP-408 capability and HART command 0 (Dictionaries issue).
+// Identification from Vers/E00, DSP-408 capability and HART command 0.
 #include "dict/dictionary_loader.h"
 #include "dict/identify.h"
 

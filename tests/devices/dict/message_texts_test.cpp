@@ -1,4 +1,4 @@
-// German and English issue (#10): every device message of the protocol core exists in both
+// Every device message of the protocol core exists in both
 // languages. Walks each table through its public lookup over the whole input range (so the
 // "unknown …" / "reserved" fall-backs are checked too): HCS exception codes and error numbers,
 // CMD 15 control and status bits, Modbus exception names, DSP-408 AK / error codes / states /

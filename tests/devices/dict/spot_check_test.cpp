@@ -1,4 +1,4 @@
-// Spot checks of the dictionaries against the manuals (Dictionaries issue: row counts per family
+// Spot checks of the dictionaries against the manuals (row counts per family
 // and at least 40 spot checks). The expected values in tests/devices/data/spot_*.json were copied
 // from the manuals by hand, row by row, with the section cited in each check's "source".
 #include "dict/dictionary_loader.h"

@@ -1,4 +1,4 @@
-// Export CSV (issue #7): English with ',' and '.', German with ';' and ',' (what spreadsheets
+// Export CSV: English with ',' and '.', German with ';' and ',' (what spreadsheets
 // expect in each locale), stated in the header comment; fields quoted per RFC 4180.
 #include "file_test_support.h"
 #include "files/param_csv.h"

@@ -1,4 +1,4 @@
-// Opening a file from another version (issue #7): a DMA PROFIBUS V22 file opened against a V32
+// Opening a file from another version: a DMA PROFIBUS V22 file opened against a V32
 // module reports, row by row, what did not map, and why (DMA Profibus Anleitung §7: E18 from
 // V32.09, C1.33/C2.33 from V32.10a).
 #include "file_test_support.h"

@@ -1,5 +1,5 @@
-// Parameter files (issue #6, docs/FILE-FORMAT.md): a whole module read from the dictionaries
-// round-trips exactly, unknown keys and rows survive a save (issue #7: nothing is dropped on
+// Parameter files (docs/FILE-FORMAT.md): a whole module read from the dictionaries
+// round-trips exactly, unknown keys and rows survive a save (nothing is dropped on
 // save), and display texts are for people only.
 #include "file_test_support.h"
 

@@ -111,7 +111,7 @@ TEST(HartUniversal, Section518Command9Slots)
               (Bytes{0, 1, 2}));
     DeviceVariables dv;
     dv.extendedStatus = 0x02;
-    dv.slots = {{0, 64, 49, 12.5f, 0xC0}, {1, 0, 57, 99.0f, 0xC0}};
+    dv.variableSlots = {{0, 64, 49, 12.5f, 0xC0}, {1, 0, 57, 99.0f, 0xC0}};
     dv.timestamp = 0x01020304;
     const Bytes enc = encodePayload(dv);
     EXPECT_EQ(enc.size(), 1u + 16u + 4u);

@@ -138,9 +138,9 @@ TEST(HcsTables, DecodeStatusSplitsErrorNumberAndSignals)
     EXPECT_TRUE(s.error);
     EXPECT_FALSE(s.busDisable);
     EXPECT_EQ(s.errorNumber, 2);
-    EXPECT_EQ(s.signals, 0);
+    EXPECT_EQ(s.signalBits, 0);
     s = decodeStatus(0x8411);
     EXPECT_TRUE(s.busDisable);
     EXPECT_FALSE(s.error);
-    EXPECT_EQ(s.signals, 0x11);
+    EXPECT_EQ(s.signalBits, 0x11);
 }

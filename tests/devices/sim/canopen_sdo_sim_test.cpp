@@ -11,7 +11,7 @@
 #include "sim/dsp408_device.h"
 #include "sim/param_io.h"
 #include "sim/sim_clock.h"
-#include "wandfluh_sim_support.h"
+#include "sim_dictionaries.h"
 
 #include <gtest/gtest.h>
 #include <optional>
@@ -71,7 +71,7 @@ struct SdoClient
 
 struct Ed1Rig
 {
-    Dsp408Device device{test::wandfluhFamily("wandfluh-ed1")};
+    Dsp408Device device{test::family("wandfluh-ed1")};
     Dsp408Objects objects{device};
     CanopenSdoServer server{objects, kNode};
     SdoClient client{server};
@@ -190,7 +190,7 @@ TEST(CanopenSimSdo, OtherNodesAndIdsAreIgnoredAndImagesMayBeSplit)
 // ParamSource/ParamSink image; here the DMA-2 PROFINET V51 dictionary with a ParamMemory.
 TEST(CanopenSimHcsObjects, ManufacturerObjectsByParameterId)
 {
-    const Dictionary &dict = test::wandfluhFamily("dma-pn-v51");
+    const Dictionary &dict = test::family("dma-pn-v51");
     ParamMemory memory(dict);
     HcsParamObjects objects(dict, memory, memory);
     CanopenSdoServer server(objects, 1);

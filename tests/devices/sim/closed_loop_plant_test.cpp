@@ -1,4 +1,4 @@
-// Closed loop plant (Device simulator issue: "a set-value step on A1.01 in closed loop gives a
+// Closed loop plant ("a set-value step on A1.01 in closed loop gives a
 // d1.11 response whose overshoot grows with C1.13 and whose steady-state error vanishes with
 // C1.17 > 0, deterministically in simulated time"). Families with the C block's controller:
 // OPAT (modes 3/4/6/8), DMA PROFINET V51, DMA PROFIBUS V31/V32.

@@ -1,4 +1,4 @@
-// Determinism (Device simulator issue: "deterministically in simulated time"): the same inputs
+// Determinism ("deterministically in simulated time"): the same inputs
 // give bit-identical trajectories however advance() is chunked, with dither, ramps and a
 // closed loop running.
 #include "plant_test_support.h"

@@ -8,7 +8,7 @@
 #include "sim/hart_device.h"
 #include "sim/hart_server.h"
 #include "sim/sim_clock.h"
-#include "wandfluh_sim_support.h"
+#include "sim_dictionaries.h"
 
 #include <gtest/gtest.h>
 #include <optional>
@@ -28,7 +28,7 @@ struct HartRig
     SimClock clock;
 
     explicit HartRig(HartDevice::Options options = {})
-        : device(test::wandfluhFamily("wandfluh-sd7"), std::move(options))
+        : device(test::family("wandfluh-sd7"), std::move(options))
     {
         clock.attach(device);
     }
@@ -80,7 +80,7 @@ Bytes tdd(const std::string &tag, const std::string &descriptor, hart::Date date
 
 } // namespace
 
-// The test: command 0 answers with the manual's manufacturer id 24835 (§3.4, 0x6103) and
+// Command 0 answers with the manual's manufacturer id 24835 (§3.4, 0x6103) and
 // the SD733 device type 58352; the long address is built from them (§2.3: 14 bits of the type).
 TEST(HartSimCommand0, ShortFrameAnswersManufacturerAndSd733DeviceType)
 {
@@ -218,7 +218,7 @@ TEST(HartSimLink, UnsupportedCommandAndShortDataGetTheirResponseCodes)
     EXPECT_EQ(rsp->responseCode, 5);
 }
 
-// The test: tag writes persist (command 18 then 13).
+// Tag writes persist (command 18 then 13).
 TEST(HartSimTag, WriteTagDescriptorDateThenReadBack)
 {
     HartRig rig;
@@ -454,8 +454,8 @@ TEST(HartSimProcessValues, LoopCurrentAndDynamicVariables)
     rsp = rig.longRequest(9, Bytes{0, 1, 246});
     ASSERT_TRUE(rsp);
     const auto vars = rig.payload<hart::DeviceVariables>(9, *rsp);
-    ASSERT_EQ(vars.slots.size(), 3u);
-    EXPECT_FLOAT_EQ(vars.slots[1].value, 50.0f);
+    ASSERT_EQ(vars.variableSlots.size(), 3u);
+    EXPECT_FLOAT_EQ(vars.variableSlots[1].value, 50.0f);
     EXPECT_TRUE(vars.timestamp.has_value());
     EXPECT_EQ(rig.longRequest(9, Bytes{7})->responseCode, 2);
     rsp = rig.longRequest(15);

@@ -1,7 +1,7 @@
 // The simulated HCS module's access rules for every family, version and mode: every readable
 // row reads its dictionary default, out-of-range writes get EXCE 3, writes to read-only / not
 // active / unknown IDs get the family's "wrong ID" (2), reads keep the "1..8 at once" rule
-// (OPAT manual §2.1 / §2.3, DMA Profinet manual §3.1 / §3.3 / §3.6). Device simulator issue.
+// (OPAT manual §2.1 / §2.3, DMA Profinet manual §3.1 / §3.3 / §3.6).
 #include "dict/param_meta.h"
 #include "hcs/exceptions.h"
 #include "hcs_sim_support.h"

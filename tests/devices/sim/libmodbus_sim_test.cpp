@@ -3,7 +3,7 @@
 // every HCS family, version and mode in blocks of ≤ 8 and gets the dictionary defaults; writes out
 // of range get exception 3, read-only / not active rows the family's "wrong ID" (2), reads of more
 // than 8 registers exception 3, a second EEPROM write within 25 ms exception 4 (ARCHITECTURE.md
-// "Protocol decisions"; DMA Profinet manual §3.4.1; Device simulator issue).
+// "Protocol decisions"; DMA Profinet manual §3.4.1).
 // A pump thread moves bytes between the descriptor and the server with poll() and bounded
 // timeouts; no sleeps.
 #include "hcs_sim_support.h"

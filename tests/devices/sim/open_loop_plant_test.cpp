@@ -1,4 +1,4 @@
-// Open loop plant (Device simulator issue: "open loop: currents follow E03/E1.03 solenoid
+// Open loop plant ("open loop: currents follow E03/E1.03 solenoid
 // selection and C1.07 dead band"; ramps r1.01..r1.04 "1 == 10 ms", E08). Families: mode 1 DMA
 // PROFINET V13, DMA PROFIBUS V15, and the OPAT's open loop path.
 #include "plant_test_support.h"

@@ -1,6 +1,6 @@
 // Errors the plant detects and the numbers the modules report for them: DMA Profinet manual
-// §4.5.1.1 (DMA Profibus Anleitung §4.5.1.1 "Fehlernummern"), OPAT manual §7 ERR. Device
-// simulator issue: "error detection (cable fracture when enabled)".
+// §4.5.1.1 (DMA Profibus Anleitung §4.5.1.1 "Fehlernummern"), OPAT manual §7 ERR: "error
+// detection (cable fracture when enabled)".
 #include "plant_test_support.h"
 
 #include <algorithm>

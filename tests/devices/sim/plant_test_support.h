@@ -1,12 +1,12 @@
-// Shared helpers of the plant tests: the built-in dictionaries, a parameter store filled with a
+// Shared helpers of the plant tests: a parameter store filled with a
 // family's defaults, and a clock-driven rig around one plant.
 #pragma once
 
-#include "dict/dictionary_loader.h"
 #include "sim/closed_loop_plant.h"
 #include "sim/open_loop_plant.h"
 #include "sim/param_io.h"
 #include "sim/sim_clock.h"
+#include "sim_dictionaries.h"
 
 #include <gtest/gtest.h>
 #include <memory>
@@ -14,17 +14,6 @@
 #include <vector>
 
 namespace vt::dev::sim::test {
-
-inline const Dictionary &family(const std::string &name)
-{
-    const auto &set = builtinDictionaries();
-    if (!set.ok() || !set->find(name)) {
-        ADD_FAILURE() << "no built-in dictionary " << name;
-        static const Dictionary empty;
-        return empty;
-    }
-    return *set->find(name);
-}
 
 // One closed-loop branch on a clock; the same ParamMemory is source (C/E/r/A rows) and sink
 // (d rows), as in a module's parameter image.

@@ -1,5 +1,5 @@
-// SimClock: fixed internal steps, exact microsecond time, chunking-independent (Device simulator
-// issue: "deterministically in simulated time").
+// SimClock: fixed internal steps, exact microsecond time, chunking-independent
+// ("deterministically in simulated time").
 #include "sim/sim_clock.h"
 
 #include <gtest/gtest.h>

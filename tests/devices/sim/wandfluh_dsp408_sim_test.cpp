@@ -8,7 +8,7 @@
 #include "sim/dsp408_device.h"
 #include "sim/dsp408_server.h"
 #include "sim/sim_clock.h"
-#include "wandfluh_sim_support.h"
+#include "sim_dictionaries.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +23,7 @@ namespace {
 
 struct Dsp408Rig
 {
-    const Dictionary &dict = test::wandfluhFamily("wandfluh-ed1");
+    const Dictionary &dict = test::family("wandfluh-ed1");
     Dsp408Device device{dict};
     Dsp408Server server;
     SimClock clock;

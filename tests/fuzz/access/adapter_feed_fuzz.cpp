@@ -9,6 +9,7 @@
 #include "access/hart_adapter.h"
 #include "access/modbus_adapter.h"
 #include "access/node_image_adapter.h"
+#include "fuzz_require.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -21,11 +22,7 @@ using namespace vt::dev::access;
 
 namespace {
 
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
+using vt::fuzz::require;
 
 ParamMeta row(RawType type, int id, int ind, int pnu, std::optional<CanObject> object = {})
 {

@@ -2,6 +2,7 @@
 // Properties: no crash; decoded frames survive encode → decode unchanged; parsed candump text
 // survives format → parse unchanged.
 #include "canopen/can_frame.h"
+#include "fuzz_require.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -11,15 +12,7 @@
 using namespace vt::dev;
 using namespace vt::dev::canopen;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

@@ -2,6 +2,7 @@
 // then the data. Properties: no crash; decode(encode(x)) == x for every decoded SDO; describe
 // stays inside the data and explains every error.
 #include "canopen/sdo.h"
+#include "fuzz_require.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -10,15 +11,7 @@
 using namespace vt::dev;
 using namespace vt::dev::canopen;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

@@ -2,6 +2,7 @@
 // Properties: no crash; a decoded PKW encodes back to exactly the input (lossless layout);
 // describe never points past the input and always explains an error.
 #include "dsp408/pkw.h"
+#include "fuzz_require.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -12,11 +13,7 @@ using namespace vt::dev::dsp408;
 
 namespace {
 
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
+using vt::fuzz::require;
 
 void checkDescription(const Description &d, std::size_t size)
 {

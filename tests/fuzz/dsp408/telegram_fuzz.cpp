@@ -3,6 +3,7 @@
 // is the telegram. Properties: no crash; decoded telegrams encode back to the input; describe
 // stays inside the input.
 #include "dsp408/pzd.h"
+#include "fuzz_require.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -14,11 +15,7 @@ using namespace vt::dev::dsp408;
 
 namespace {
 
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
+using vt::fuzz::require;
 
 template<typename T>
 void roundTrip(const Result<T, DecodeError> &t, std::span<const std::uint8_t> bytes,

@@ -1,6 +1,6 @@
 // The parameter file reader on arbitrary input (STYLE.md rule 12: never crash on a bad file), and
 // for every file it accepts: the written text reads back and writes again to the same text
-// (issue #7: nothing is dropped on save), mapping and CSV export never fail.
+// (nothing is dropped on save), mapping and CSV export never fail.
 #include "dict/dictionary_loader.h"
 #include "files/param_csv.h"
 #include "files/param_file.h"

@@ -1,4 +1,4 @@
-// The fold plan file reader (.vtfold, issue #9) on arbitrary input (STYLE.md rule 12: never crash
+// The fold plan file reader (.vtfold) on arbitrary input (STYLE.md rule 12: never crash
 // on a bad file), and for every plan it accepts: the written text reads back to the same plan and
 // writes again to the same text, and the checks and the PLC configuration never fail on it.
 // Qt-free: the fold plan value, its file, checks and PLC configuration are compiled in directly.

@@ -2,6 +2,7 @@
 // Input: byte 0 (chunk-size seed), byte 1 (minimum preambles 1..4), then the stream.
 // Properties: no crash; every frame event's raw bytes decode to that frame; no event is larger
 // than the bound (255 preambles + one maximum frame); nothing stays buffered after flush().
+#include "fuzz_require.h"
 #include "hart/deframer.h"
 
 #include <algorithm>
@@ -14,11 +15,7 @@ using namespace vt::dev::hart;
 
 namespace {
 
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
+using vt::fuzz::require;
 
 void check(const std::vector<DeframerEvent> &events)
 {

@@ -1,6 +1,7 @@
 // fuzz_hart_frame: arbitrary bytes as one HART frame (preambles … checksum).
 // Properties: no crash; a decoded frame encodes back to exactly the input (the link layer is
 // lossless); describe stays inside the input and explains every error.
+#include "fuzz_require.h"
 #include "hart/describe.h"
 #include "hart/frame.h"
 
@@ -12,15 +13,7 @@
 using namespace vt::dev;
 using namespace vt::dev::hart;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

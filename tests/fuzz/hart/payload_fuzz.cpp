@@ -2,6 +2,7 @@
 // Input: byte 0 = command, byte 1 bit 0 = response, then the data. Properties: no crash;
 // describe stays inside the data; a decoded payload encodes to something that decodes again to
 // the same payload (idempotent round trip).
+#include "fuzz_require.h"
 #include "hart/device_specific.h"
 #include "hart/universal.h"
 
@@ -13,15 +14,7 @@
 using namespace vt::dev;
 using namespace vt::dev::hart;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

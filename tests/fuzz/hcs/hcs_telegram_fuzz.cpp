@@ -2,6 +2,7 @@
 // describe(). Input: selector byte (bit 0 OPAT, bit 1 response, bit 2 padding allowed, bits 3-6
 // CMD 15 profile) + frame. Properties: no crash; describe() and the decoders agree; a decoded
 // frame re-encodes to the same bytes; rows stay inside the frame.
+#include "fuzz_require.h"
 #include "hcs/describe.h"
 #include "hcs/telegram.h"
 
@@ -12,15 +13,7 @@
 using namespace vt::dev;
 using namespace vt::dev::hcs;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

@@ -2,6 +2,7 @@
 // (tolerant hex, candump), detectProtocol, describeAny / describeLogged for every protocol and
 // log key, carriedBy. Properties: no crash; input beyond the bounds is refused; every field lies
 // inside its frame; an auto-detected protocol decodes in the directions it claims.
+#include "fuzz_require.h"
 #include "inspect/auto_detect.h"
 #include "inspect/frame_parameters.h"
 #include "inspect/hex_input.h"
@@ -16,11 +17,7 @@ using namespace vt::dev::inspect;
 
 namespace {
 
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
+using vt::fuzz::require;
 
 void checkFields(const Description &d, std::size_t size)
 {

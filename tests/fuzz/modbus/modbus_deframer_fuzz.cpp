@@ -3,6 +3,7 @@
 // Properties: no crash; every RTU frame has a valid CRC and the length its header announces;
 // every TCP frame has a valid MBAP header; nothing is lost or invented (frames + discarded +
 // buffered = input for RTU); the buffers stay bounded.
+#include "fuzz_require.h"
 #include "modbus/deframer.h"
 #include "modbus/rtu.h"
 #include "modbus/tcp.h"
@@ -14,15 +15,7 @@
 using namespace vt::dev;
 using namespace vt::dev::modbus;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

@@ -1,6 +1,7 @@
 // fuzz_modbus_rtu: Modbus RTU ADUs through the decoders and describeRtu(). Input: selector byte
 // (bit 0 = response) + ADU. Properties: no crash; describe and decode agree; decoded frames
 // re-encode to the same bytes; rows stay inside the frame.
+#include "fuzz_require.h"
 #include "modbus/describe.h"
 #include "modbus/rtu.h"
 
@@ -12,15 +13,7 @@
 using namespace vt::dev;
 using namespace vt::dev::modbus;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

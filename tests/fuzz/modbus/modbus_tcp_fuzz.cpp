@@ -1,5 +1,6 @@
 // fuzz_modbus_tcp: Modbus TCP ADUs through the decoders and describeTcp(). Input: selector byte
 // (bit 0 = response) + ADU. Same properties as fuzz_modbus_rtu.
+#include "fuzz_require.h"
 #include "modbus/describe.h"
 #include "modbus/tcp.h"
 
@@ -11,15 +12,7 @@
 using namespace vt::dev;
 using namespace vt::dev::modbus;
 
-namespace {
-
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
-
-} // namespace
+using vt::fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

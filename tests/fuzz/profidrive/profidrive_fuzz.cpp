@@ -2,6 +2,7 @@
 // and describe(). Input: selector byte (bit 0 = response, bits 1-2 = layout 0 auto / 1 telegram 1
 // / 2 mixed, bit 3 = DMA family for the CMD 15 part) + image. Properties: no crash; describe and
 // decode agree; decoded images re-encode to the same bytes; N2 conversions stay finite.
+#include "fuzz_require.h"
 #include "profidrive/describe.h"
 #include "profidrive/mixed.h"
 #include "profidrive/telegram1.h"
@@ -17,11 +18,7 @@ using namespace vt::dev::profidrive;
 
 namespace {
 
-void require(bool condition)
-{
-    if (!condition)
-        __builtin_trap();
-}
+using vt::fuzz::require;
 
 template<typename R> bool sameBytes(const R &encoded, std::span<const std::uint8_t> image)
 {

@@ -1,5 +1,5 @@
 // LCurveTableModel: the L-block points as an editable table that reports each accepted edit once
-// and refuses fixed coordinates and crossed x with a reason (issue #7).
+// and refuses fixed coordinates and crossed x with a reason.
 #include "dict/dictionary_loader.h"
 #include "model/curve/lcurve_table_model.h"
 #include "qt_printers.h"

@@ -1,5 +1,5 @@
-// The L-block curves found in the HCS dictionaries and the checks of an edited point (issue #7,
-// DMA Profinet manual §6 and OPAT Profibus manual, list of parameters, L1.x0 .. L2.y8).
+// The L-block curves found in the HCS dictionaries and the checks of an edited point
+// (DMA Profinet manual §6 and OPAT Profibus manual, list of parameters, L1.x0 .. L2.y8).
 #include "dict/dictionary_loader.h"
 #include "model/curve/lcurve.h"
 

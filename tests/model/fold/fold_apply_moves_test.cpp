@@ -1,4 +1,4 @@
-// Address changes on a live node never put two modules on one address (issue #9 step 6).
+// Address changes on a live node never put two modules on one address.
 #include "model/fold/fold_apply_moves.h"
 
 #include <gtest/gtest.h>

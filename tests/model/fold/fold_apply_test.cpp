@@ -1,10 +1,11 @@
-// FoldApply against the built-in simulator (issue #9 step 6): every module's address and options
+// FoldApply against the built-in simulator: every module's address and options
 // are written, read back, and a scan finds each module at its planned address.
 #include "dict/dictionary_loader.h"
 #include "model/fold/fold_apply.h"
 #include "model/session/connection.h"
 #include "sim/hcs_module.h"
 #include "sim/hcs_node.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -14,33 +15,13 @@
 namespace vt::model {
 namespace {
 
-constexpr int kWaitMs = 30'000;
+using test::kWaitMs;
+using test::openSim;
+using test::waitUntil;
 
-std::unique_ptr<Connection> openSim(const std::string &family, std::size_t modules,
-                                    const std::string &protocol)
+int stored(test::SimRig &c, std::size_t module, const char *name)
 {
-    ConnectionSpec spec;
-    spec.kind = ConnectionKind::Sim;
-    spec.sim.family = family;
-    spec.sim.modules = modules;
-    spec.sim.protocol = protocol;
-    auto made = Connection::create(spec, *dev::builtinDictionaries());
-    if (!made.ok()) {
-        ADD_FAILURE() << made.error().toStdString();
-        return nullptr;
-    }
-    std::unique_ptr<Connection> connection = std::move(made).value();
-    connection->open();
-    if (!QTest::qWaitFor([&] { return connection->isOpen(); }, kWaitMs)) {
-        ADD_FAILURE() << "the simulator link did not open";
-        return nullptr;
-    }
-    return connection;
-}
-
-int stored(Connection &c, std::size_t module, const char *name)
-{
-    dev::sim::HcsModule &m = c.simEndpoint()->node()->module(module);
+    dev::sim::HcsModule &m = c.simModule(module);
     return m.storage().raw(*m.dictionary().find(name)->id);
 }
 
@@ -79,10 +60,10 @@ bool run(FoldApply &apply, bool whole = true, std::size_t module = 0)
 // 4, 5, 6 (as from another machine); the apply renumbers them and the scan finds 1, 2, 3.
 TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
 {
-    auto c = openSim("dma-pn-v51", 3, "modbus-tcp");
+    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     for (std::size_t i = 0; i < 3; ++i)
-        c->simEndpoint()->node()->module(i).setAddress(static_cast<std::uint8_t>(4 + i));
+        c->simModule(i).setAddress(static_cast<std::uint8_t>(4 + i));
 
     FoldApply apply(c->access(), dmaPlan(3), {4, 5, 6});
     ASSERT_TRUE(run(apply));
@@ -93,7 +74,7 @@ TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
         EXPECT_TRUE(m.addressWritten);
         ASSERT_TRUE(m.found.has_value());
         EXPECT_TRUE(*m.found);
-        EXPECT_EQ(c->simEndpoint()->node()->module(i).address(), i + 1);
+        EXPECT_EQ(c->simModule(i).address(), i + 1);
         EXPECT_EQ(stored(*c, i, "E17"), 2);
         EXPECT_EQ(stored(*c, i, "E23"), 50);
         // The options verified by read back, then E22 read back at the new address.
@@ -110,7 +91,7 @@ TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
 // Two modules swapped (2, 1): the apply parks one on a spare address so no two ever share one.
 TEST(FoldApply, SwappedAddressesNeverCollide)
 {
-    auto c = openSim("dma-pn-v51", 3, "modbus-tcp");
+    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     c->simEndpoint()->node()->module(0).setAddress(2);
     c->simEndpoint()->node()->module(1).setAddress(1);
@@ -125,13 +106,13 @@ TEST(FoldApply, SwappedAddressesNeverCollide)
     ASSERT_TRUE(run(apply));
     EXPECT_EQ(worst, 1);
     for (std::size_t i = 0; i < 3; ++i)
-        EXPECT_EQ(c->simEndpoint()->node()->module(i).address(), i + 1);
+        EXPECT_EQ(c->simModule(i).address(), i + 1);
 }
 
 // A value outside the dictionary's range is refused before anything is sent.
 TEST(FoldApply, OutOfRangeOptionIsRefusedLocally)
 {
-    auto c = openSim("dma-pn-v51", 1, "modbus-tcp");
+    auto c = openSim({"dma-pn-v51", 1, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     FoldPlan plan = dmaPlan(1);
     plan.modules[0].options.e17 = 7; // E17 is 0..2
@@ -150,7 +131,7 @@ TEST(FoldApply, OutOfRangeOptionIsRefusedLocally)
 // A module that is not there: the apply says so and fails instead of pretending.
 TEST(FoldApply, MissingModuleFails)
 {
-    auto c = openSim("dma-pn-v51", 2, "modbus-tcp");
+    auto c = openSim({"dma-pn-v51", 2, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     c->session().setOptions([&] {
         SessionOptions o = c->session().options();
@@ -167,7 +148,7 @@ TEST(FoldApply, MissingModuleFails)
 // that differs from the plan is a job for the technician, and the apply says which position.
 TEST(FoldApply, OpatOptionsAndSwitchInstruction)
 {
-    auto c = openSim("opat", 3, "modbus-tcp");
+    auto c = openSim({"opat", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     FoldPlan plan = defaultFoldPlan(FoldNode::Opat, 3);
     plan.modules[0].options.e28 = 1;
@@ -190,11 +171,15 @@ TEST(FoldApply, OpatOptionsAndSwitchInstruction)
 namespace vt::model {
 namespace {
 
+using test::kWaitMs;
+using test::openSim;
+using test::waitUntil;
+
 // Point-to-point (one module on the service cable, unit 1 whatever its E22): the technician
 // moves the cable and each module gets its E22, read back through the line's unit.
 TEST(FoldApply, PointToPointModuleByModule)
 {
-    auto c = openSim("dma-pn-v51", 1, "modbus-rtu");
+    auto c = openSim({"dma-pn-v51", 1, "modbus-rtu", {}, {}});
     ASSERT_TRUE(c);
     FoldApply apply(c->access(), dmaPlan(2), {1, 1});
     ASSERT_TRUE(run(apply, false, 0));

@@ -1,6 +1,6 @@
-// valvetune-cli fold plan (issue #9 CLI): golden text and JSON, and the usage errors for
+// valvetune-cli fold plan: golden text and JSON, and the usage errors for
 // impossible plans (six DMA modules for CMD 15, nine OPAT modules), exit codes from exit_codes.h.
-#include "app/cli/cli_app.h"
+#include "cli_run.h"
 
 #include <fstream>
 #include <gtest/gtest.h>
@@ -10,20 +10,8 @@
 
 namespace {
 
-struct CliRun
-{
-    int code;
-    std::string out;
-    std::string err;
-};
-
-CliRun cli(QStringList args)
-{
-    args.prepend("valvetune-cli");
-    std::ostringstream out, err;
-    const int code = vt::cli::runCli(args, out, err);
-    return {code, out.str(), err.str()};
-}
+using vt::test::cli;
+using vt::test::CliRun;
 
 std::string golden(const char *name)
 {
@@ -31,14 +19,6 @@ std::string golden(const char *name)
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
-}
-
-int lines(const std::string &s)
-{
-    int n = 0;
-    for (char c : s)
-        n += c == '\n';
-    return n;
 }
 
 } // namespace
@@ -93,7 +73,7 @@ TEST(FoldCli, ImpossiblePlansAreUsageErrorsThatSayWhy)
 {
     const CliRun six = cli({"fold", "plan", "--node", "dma-pb", "--modules", "6"});
     EXPECT_EQ(six.code, vt::cli::kExitUsage);
-    EXPECT_EQ(lines(six.err), 1);
+    EXPECT_EQ(six.errLines(), 1);
     EXPECT_NE(six.err.find("CMD 15 reaches E22 = 1 … 5 only"), std::string::npos) << six.err;
     EXPECT_TRUE(six.out.empty());
 
@@ -114,7 +94,7 @@ TEST(FoldCli, ImpossiblePlansAreUsageErrorsThatSayWhy)
           QStringList{"fold", "plan", "--node", "opat", "--modules"}}) {
         const CliRun r = cli(args);
         EXPECT_EQ(r.code, vt::cli::kExitUsage) << args.join(' ').toStdString();
-        EXPECT_EQ(lines(r.err), 1) << r.err;
+        EXPECT_EQ(r.errLines(), 1) << r.err;
         EXPECT_EQ(r.err.rfind("valvetune-cli: ", 0), 0u) << r.err;
     }
     const CliRun help = cli({"fold", "--help"});

@@ -1,4 +1,4 @@
-// Printable PLC sheets (issue #9 step 7): the HTML carries the key facts, the CSV has one row per
+// Printable PLC sheets: the HTML carries the key facts, the CSV has one row per
 // image byte, and the PDF export renders offscreen into a valid PDF with the reported page count.
 #include "model/fold/fold_export.h"
 

@@ -1,4 +1,4 @@
-// Checks of a fold plan (issue #9 step 5): duplicate E22 / SADR, CMD 15 limits, SNUM mismatch,
+// Checks of a fold plan: duplicate E22 / SADR, CMD 15 limits, SNUM mismatch,
 // ranges against the dictionaries, mixed modes (DMA Profibus Anleitung §1.5, §6; DMA Profinet
 // manual §1.5, §4.1, §5; OPAT manual §1.4, §3.1, §5.7).
 #include "model/fold/fold_check.h"

@@ -1,4 +1,4 @@
-// The fold plan file (.vtfold, issue #9 step 7): round trip, versioning and typed errors for
+// The fold plan file (.vtfold): round trip, versioning and typed errors for
 // malformed files (STYLE.md rule 12: never crash on a bad file).
 #include "model/fold/fold_plan_file.h"
 

@@ -1,4 +1,4 @@
-// PLC configuration of a fold (issue #9 step 7): telegram lengths, byte maps and GSD choice equal
+// PLC configuration of a fold: telegram lengths, byte maps and GSD choice equal
 // the manuals — OPAT manual §3.1 (master + 0..7 slaves: 8..43 bytes out, 9 in), DMA Profinet
 // manual §4.1 / DMA Profibus Anleitung §4.1 (1..5 modules: 8/13/18/23/28 out, 9 in).
 #include "hcs/cmd15.h"

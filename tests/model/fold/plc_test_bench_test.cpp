@@ -1,9 +1,10 @@
-// The PLC test bench against the simulator's node image (issue #9 step 8): cyclic CMD 15 with a
+// The PLC test bench against the simulator's node image: cyclic CMD 15 with a
 // new TADR every telegram, each module's multiplexed answer decoded and filed under its SADR
 // (DMA Profinet manual §4.2 / §4.4.2: E22 = 1, 2, 3, then 1 again; OPAT manual §3.2).
 #include "dict/dictionary_loader.h"
 #include "model/fold/plc_test_bench.h"
 #include "model/session/connection.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -13,29 +14,9 @@
 namespace vt::model {
 namespace {
 
-constexpr int kWaitMs = 30'000;
-
-std::unique_ptr<Connection> openSim(const std::string &family, std::size_t modules,
-                                    const std::string &protocol)
-{
-    ConnectionSpec spec;
-    spec.kind = ConnectionKind::Sim;
-    spec.sim.family = family;
-    spec.sim.modules = modules;
-    spec.sim.protocol = protocol;
-    auto made = Connection::create(spec, *dev::builtinDictionaries());
-    if (!made.ok()) {
-        ADD_FAILURE() << made.error().toStdString();
-        return nullptr;
-    }
-    std::unique_ptr<Connection> connection = std::move(made).value();
-    connection->open();
-    if (!QTest::qWaitFor([&] { return connection->isOpen(); }, kWaitMs)) {
-        ADD_FAILURE() << "the simulator link did not open";
-        return nullptr;
-    }
-    return connection;
-}
+using test::kWaitMs;
+using test::openSim;
+using test::waitUntil;
 
 bool everyModuleAnswered(const PlcTestBench &bench, quint64 times)
 {
@@ -47,7 +28,7 @@ bool everyModuleAnswered(const PlcTestBench &bench, quint64 times)
 
 TEST(PlcTestBench, DecodesEveryModulesAnswerWithTadrToggling)
 {
-    auto c = openSim("dma-pn-v51", 3, "node-image");
+    auto c = openSim({"dma-pn-v51", 3, "node-image", {}, {}});
     ASSERT_TRUE(c);
     ASSERT_TRUE(PlcTestBench::supports(c->session()));
     PlcTestBench bench(c->session(), dev::hcs::Family::Dma, 3);
@@ -59,7 +40,7 @@ TEST(PlcTestBench, DecodesEveryModulesAnswerWithTadrToggling)
     for (std::size_t i = 0; i < 3; ++i)
         bench.setSetpoints(i, {0, static_cast<std::int16_t>(1000 * (i + 1)), 0});
     bench.start();
-    EXPECT_TRUE(QTest::qWaitFor([&] { return everyModuleAnswered(bench, 3); }, kWaitMs));
+    EXPECT_TRUE(waitUntil([&] { return everyModuleAnswered(bench, 3); }, kWaitMs));
     bench.stop();
 
     const BenchCounters &counters = bench.counters();
@@ -88,12 +69,12 @@ TEST(PlcTestBench, DecodesEveryModulesAnswerWithTadrToggling)
 
 TEST(PlcTestBench, OpatMasterAndSlaves)
 {
-    auto c = openSim("opat", 3, "node-image");
+    auto c = openSim({"opat", 3, "node-image", {}, {}});
     ASSERT_TRUE(c);
     PlcTestBench bench(c->session(), dev::hcs::Family::Opat, 3);
     bench.setIntervalMs(5);
     bench.start();
-    EXPECT_TRUE(QTest::qWaitFor([&] { return everyModuleAnswered(bench, 2); }, kWaitMs));
+    EXPECT_TRUE(waitUntil([&] { return everyModuleAnswered(bench, 2); }, kWaitMs));
     bench.stop();
     EXPECT_EQ(bench.modules()[0].last->sadr, 0); // OPAT manual §3.2: the master answers as SADR 0
     EXPECT_EQ(bench.modules()[2].last->sadr, 2);
@@ -103,7 +84,7 @@ TEST(PlcTestBench, OpatMasterAndSlaves)
 // The node answers exception 7 when SNUM does not match its modules (OPAT manual §2.6).
 TEST(PlcTestBench, WrongModuleCountGetsTheNodesException)
 {
-    auto c = openSim("dma-pn-v51", 3, "node-image");
+    auto c = openSim({"dma-pn-v51", 3, "node-image", {}, {}});
     ASSERT_TRUE(c);
     PlcTestBench bench(c->session(), dev::hcs::Family::Dma, 2);
     QSignalSpy exception(&bench, &PlcTestBench::exceptionReceived);
@@ -120,7 +101,7 @@ TEST(PlcTestBench, RefusesWhatCmd15CannotCarry)
     EXPECT_TRUE(PlcTestBench::checkModules(dev::hcs::Family::Dma, 5).isEmpty());
     EXPECT_TRUE(PlcTestBench::checkModules(dev::hcs::Family::Opat, 8).isEmpty());
 
-    auto c = openSim("dma-pn-v51", 3, "modbus-tcp");
+    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     EXPECT_FALSE(PlcTestBench::supports(c->session())); // CMD 15 needs the node image link
     PlcTestBench bench(c->session(), dev::hcs::Family::Dma, 3);

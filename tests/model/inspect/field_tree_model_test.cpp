@@ -1,4 +1,4 @@
-// FieldTreeModel (issue #8 detail pane): the tree follows the Description's depths, passes
+// FieldTreeModel: the tree follows the Description's depths, passes
 // QAbstractItemModelTester, and maps a byte back to the deepest field covering it.
 #include "hcs/describe.h"
 #include "hcs/worked_examples.h"

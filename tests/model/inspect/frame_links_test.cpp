@@ -1,5 +1,4 @@
-// Linked navigation (issue #8 "from a parameter in the editor jump to its last frames; from a
-// frame jump to its parameter") over a TelegramLog of Modbus RTU, node-image and CANopen records.
+// Linked navigation over a TelegramLog of Modbus RTU, node-image and CANopen records.
 #include "canopen/can_frame.h"
 #include "dict/dictionary_loader.h"
 #include "hcs/worked_examples.h"

@@ -1,8 +1,8 @@
-// The monitor's model (issue #8 "Tests"): samples arrive at the requested rate (session clock),
+// The monitor's model: samples arrive at the requested rate (session clock),
 // memory stays within the store's bound after a long run, journal texts, merged CSV export.
 #include "model/monitor/monitor_export.h"
 #include "model/monitor/monitor_session.h"
-#include "monitor_rig.h"
+#include "sim_rig.h"
 
 #include <QBuffer>
 #include <cmath>
@@ -38,7 +38,7 @@ TEST(MonitorSession, SamplesArriveAtTheRequestedRate)
     session.setRate(kHz);
     session.start();
     const model::SampleStore *store = session.store(module);
-    ASSERT_TRUE(spinUntil([&] { return store->size() >= 150; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return store->size() >= 150; }, kWaitMs));
     session.stop();
     // Rate from the samples' own session timestamps; the simulator runs in real time, so allow
     // for a loaded machine.
@@ -69,7 +69,7 @@ TEST(MonitorSession, MemoryStaysWithinTheStoreBoundAfterALongRun)
     EXPECT_GE(bytesEmpty, model::SampleStore::ringBytes(5, kRows));
     session.setRate(0); // as fast as the link allows
     session.start();
-    ASSERT_TRUE(spinUntil([&] { return session.samples(module) >= 20 * kRows; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return session.samples(module) >= 20 * kRows; }, kWaitMs));
     session.stop();
     EXPECT_EQ(store->size(), kRows);
     EXPECT_GE(store->droppedCount(), static_cast<quint64>(19 * kRows));
@@ -87,7 +87,7 @@ TEST(MonitorSession, ClearConnectionStopsPollingAndKeepsTheRecording)
     session.setRate(200);
     session.start();
     const model::SampleStore *store = session.store(rig->module().address);
-    ASSERT_TRUE(spinUntil([&] { return store->size() >= 10; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return store->size() >= 10; }, kWaitMs));
     session.clearConnection();
     EXPECT_FALSE(session.isRunning());
     ASSERT_EQ(running.count(), 2);
@@ -141,7 +141,7 @@ TEST(MonitorSession, CsvOfTwoModulesMergesTheirRowsInTimeOrder)
     session.setChannels(b, {&rig->row("d1.11", 1)});
     session.setRate(50);
     session.start();
-    ASSERT_TRUE(spinUntil(
+    ASSERT_TRUE(waitUntil(
         [&] { return session.store(a)->size() >= 10 && session.store(b)->size() >= 10; }, kWaitMs));
     session.stop();
     model::WriteItem item;

@@ -1,4 +1,4 @@
-// CurveBinding (issue #7 "Linearisation"): document values reach the curve model, a curve edit
+// CurveBinding: document values reach the curve model, a curve edit
 // is one undoable document edit, and undo puts the curve back.
 #include "dict/dictionary_loader.h"
 #include "model/curve/lcurve_table_model.h"

@@ -1,4 +1,4 @@
-// newParamFile (issue #7 "New … defaults from the dictionary"): a new file holds the chosen
+// newParamFile: a new file holds the chosen
 // modules with the dictionary's factory defaults, only for rows of that version and mode, and
 // survives the .vtpar codec unchanged.
 #include "dict/dictionary_loader.h"

@@ -1,4 +1,4 @@
-// ParameterDocument (issue #7): the three value layers, undoable edits refused out of range
+// ParameterDocument: the three value layers, undoable edits refused out of range
 // with the limits named, the rows a safe write sends, and files that keep what they do not map.
 #include "dict/dictionary_loader.h"
 #include "files/param_file.h"

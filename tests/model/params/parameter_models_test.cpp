@@ -1,4 +1,4 @@
-// The editor's item models (issue #7): QAbstractItemModelTester on the tree, its filter and the
+// The editor's item models: QAbstractItemModelTester on the tree, its filter and the
 // compare model; typed input in either language; metadata roles for the delegates.
 #include "dict/dictionary_loader.h"
 #include "model/params/compare_model.h"

@@ -1,4 +1,4 @@
-// The editor's device round trip at model level (issue #7) against the built-in simulator:
+// The editor's device round trip at model level against the built-in simulator:
 // connect → read all → edit C1.07 to 1.000 V → write → the simulator holds raw 1000 → save →
 // reopen → compare with the device shows no difference; undo after the write differs again.
 #include "model/params/compare_model.h"
@@ -6,7 +6,7 @@
 #include "model/params/param_file_io.h"
 #include "model/params/parameter_tree_model.h"
 #include "model/session/connection.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -14,55 +14,24 @@
 namespace vt::test {
 namespace {
 
-struct Connected
-{
-    std::unique_ptr<model::Connection> connection;
-    std::vector<model::ModuleInfo> modules;
-};
-
-Connected connect(const std::string &family)
-{
-    Connected c;
-    model::ConnectionSpec spec;
-    spec.kind = model::ConnectionKind::Sim;
-    spec.sim.family = family;
-    auto made = model::Connection::create(spec, dictionaries());
-    EXPECT_TRUE(made.ok());
-    if (!made.ok())
-        return c;
-    c.connection = std::move(made).value();
-    QSignalSpy opened(c.connection.get(), &model::Connection::opened);
-    c.connection->open();
-    EXPECT_TRUE(opened.wait(kWaitMs));
-    for (int address : c.connection->moduleAddresses()) {
-        std::optional<model::IdentifyResult> result;
-        c.connection->access().identify(address,
-                                        [&](const model::IdentifyResult &r) { result = r; });
-        EXPECT_TRUE(waitFor(result));
-        if (result && result->ok)
-            c.modules.push_back(result->module);
-    }
-    return c;
-}
-
 bool readAll(model::Connection &connection, model::ParameterDocument &doc)
 {
     model::ReadAllJob job(connection.access(), doc);
     QSignalSpy finished(&job, &model::ReadAllJob::finished);
     job.start();
-    return finished.wait(30000) && finished.at(0).at(0).toBool();
+    return finished.wait(kWaitMs) && finished.at(0).at(0).toBool();
 }
 
 TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
 {
-    Connected c = connect("dma-pn-v51");
-    ASSERT_TRUE(c.connection);
-    ASSERT_EQ(c.modules.size(), 1u);
+    auto c = connectSim("dma-pn-v51");
+    ASSERT_TRUE(c);
+    ASSERT_EQ(c->modules.size(), 1u);
     model::ParameterDocument doc;
     model::ParameterTreeModel tree(doc);
-    doc.attachDevice(c.modules);
-    ASSERT_TRUE(readAll(*c.connection, doc));
-    const dev::Dictionary &dict = *c.modules[0].dictionary;
+    doc.attachDevice(c->modules);
+    ASSERT_TRUE(readAll(*c->connection, doc));
+    const dev::Dictionary &dict = *c->modules[0].dictionary;
     const dev::ParamMeta *c107 = dict.find("C1.07");
     ASSERT_TRUE(doc.value(0, c107, model::Layer::Device));
 
@@ -71,13 +40,13 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
     EXPECT_TRUE(doc.differsFromDevice(0, c107));
     std::vector<model::ModuleWriteResult> plan{{0, doc.pendingWrites(0)}};
     ASSERT_EQ(plan[0].items.size(), 1u);
-    model::WriteChangesJob write(c.connection->access(), doc, plan);
+    model::WriteChangesJob write(c->connection->access(), doc, plan);
     QSignalSpy written(&write, &model::WriteChangesJob::finished);
     write.start();
     ASSERT_TRUE(written.wait(kWaitMs));
     EXPECT_TRUE(written.at(0).at(0).toBool());
     EXPECT_EQ(write.results()[0].items[0].status, model::WriteStatus::Verified);
-    EXPECT_EQ(storedRaw(c.connection->simEndpoint()->node()->module(0), *c107), 1000.0);
+    EXPECT_EQ(storedRaw(c->simModule(0), *c107), 1000.0);
     EXPECT_FALSE(doc.differsFromDevice(0, c107));
 
     QTemporaryDir dir;
@@ -90,8 +59,8 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
     ASSERT_TRUE(reread.ok()) << reread.error().toStdString();
     model::ParameterDocument reopened;
     reopened.loadFile(*reread, dictionaries(), path);
-    reopened.attachDevice(c.modules);
-    ASSERT_TRUE(readAll(*c.connection, reopened));
+    reopened.attachDevice(c->modules);
+    ASSERT_TRUE(readAll(*c->connection, reopened));
     EXPECT_EQ(reopened.value(0, c107), dev::RawValue{1000.0});
     model::CompareModel compare(reopened);
     compare.compareWithDevice();

@@ -1,4 +1,4 @@
-// ConnectDialog (issue #7 "Connect"): every link kind's fields make the right ConnectionSpec,
+// ConnectDialog: every link kind's fields make the right ConnectionSpec,
 // invalid input disables OK and says why, and the simulator choice connects for real.
 #include "connect_test_support.h"
 #include "model/session/connection.h"

@@ -1,8 +1,8 @@
-// Helpers for the connect tests: the built-in dictionaries, children by object name, the OK
-// button of a dialog.
+// Helpers for the connect tests: children by object name, the OK button of a dialog; the
+// simulator rig and bounded waits come from tests/support.
 #pragma once
 
-#include "dict/dictionary_loader.h"
+#include "sim_rig.h"
 
 #include <QComboBox>
 #include <QDialog>
@@ -11,13 +11,6 @@
 #include <gtest/gtest.h>
 
 namespace vt::test {
-
-inline constexpr int kWaitMs = 20'000;
-
-inline const dev::DictionarySet &dictionaries()
-{
-    return *dev::builtinDictionaries();
-}
 
 template<typename T> T *child(const QObject &parent, const char *name)
 {

@@ -1,4 +1,4 @@
-// ConnectionMemory (issue #7 "Connect … remembered"): the last spec of each kind survives a
+// ConnectionMemory: the last spec of each kind survives a
 // round trip through a QSettings file, and the dialog reopens on the last used kind.
 #include "connect_test_support.h"
 #include "widgets/connect/connect_dialog.h"

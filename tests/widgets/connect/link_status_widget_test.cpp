@@ -1,5 +1,4 @@
-// LinkStatusWidget (issue #7 "The status bar shows link, device identity, and error/retry
-// counters"): against a simulator connection the texts follow the link state, the identified
+// LinkStatusWidget: against a simulator connection the texts follow the link state, the identified
 // module and the session counters as requests complete.
 #include "connect_test_support.h"
 #include "model/session/connection.h"
@@ -40,14 +39,14 @@ TEST(LinkStatusWidget, FollowsStateIdentityAndCounters)
     connection->open();
     ASSERT_TRUE(opened.count() > 0 || opened.wait(kWaitMs));
     const QString connected = link::linkStateText(link::LinkState::Open);
-    EXPECT_TRUE(QTest::qWaitFor([&] { return widget.linkText().contains(connected); }, kWaitMs))
+    EXPECT_TRUE(waitUntil([&] { return widget.linkText().contains(connected); }, kWaitMs))
         << widget.linkText().toStdString();
 
     // Identify the module (real requests on the simulator) and show who answered.
     std::optional<model::IdentifyResult> identified;
     const int address = connection->moduleAddresses().front();
     connection->access().identify(address, [&](const model::IdentifyResult &r) { identified = r; });
-    ASSERT_TRUE(QTest::qWaitFor([&] { return identified.has_value(); }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return identified.has_value(); }, kWaitMs));
     ASSERT_TRUE(identified->ok) << identified->message.toStdString();
     widget.setModules({identified->module});
     EXPECT_TRUE(widget.identityText().contains(QStringLiteral("V51")))
@@ -58,8 +57,7 @@ TEST(LinkStatusWidget, FollowsStateIdentityAndCounters)
     const quint64 requests = connection->session().counters().requests;
     ASSERT_GT(requests, 0u);
     const QString expected = QStringLiteral("requests %1 ").arg(requests);
-    EXPECT_TRUE(
-        QTest::qWaitFor([&] { return widget.countersText().startsWith(expected); }, kWaitMs))
+    EXPECT_TRUE(waitUntil([&] { return widget.countersText().startsWith(expected); }, kWaitMs))
         << widget.countersText().toStdString();
 
     // Module 9 does not exist on the point-to-point line: the simulator stays silent and the
@@ -70,11 +68,11 @@ TEST(LinkStatusWidget, FollowsStateIdentityAndCounters)
     quick.turnaround = std::chrono::milliseconds(20);
     connection->session().setOptions(quick);
     connection->access().identify(9, [&](const model::IdentifyResult &) { done = true; });
-    ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return done; }, kWaitMs));
     const model::SessionCounters after = connection->session().counters();
     EXPECT_GT(after.timeouts, 0u);
     const QString timeouts = QStringLiteral("timeouts %1 ").arg(after.timeouts);
-    EXPECT_TRUE(QTest::qWaitFor([&] { return widget.countersText().contains(timeouts); }, kWaitMs))
+    EXPECT_TRUE(waitUntil([&] { return widget.countersText().contains(timeouts); }, kWaitMs))
         << widget.countersText().toStdString();
 
     widget.clearConnection();
@@ -104,7 +102,7 @@ TEST(LinkStatusWidget, ShowsWhyTheLinkWasLost)
     ASSERT_TRUE(lost.count() > 0 || lost.wait(kWaitMs));
     const QString reason = lost.front().front().toString();
     ASSERT_FALSE(reason.isEmpty());
-    EXPECT_TRUE(QTest::qWaitFor([&] { return widget.linkText().contains(reason); }, kWaitMs))
+    EXPECT_TRUE(waitUntil([&] { return widget.linkText().contains(reason); }, kWaitMs))
         << widget.linkText().toStdString();
 }
 

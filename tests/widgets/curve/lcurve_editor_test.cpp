@@ -1,9 +1,10 @@
 // LCurveEditor: dragging a point on the plot edits the model once per drag, clamped to the row
 // range and the neighbours' x, with fixed coordinates kept; a table edit redraws the plot
-// (issue #7, L block of the OPAT Profibus manual's parameter list).
+// (L block of the OPAT Profibus manual's parameter list).
 #include "dict/dictionary_loader.h"
 #include "model/curve/lcurve_table_model.h"
 #include "qt_printers.h"
+#include "test_wait.h"
 #include "widgets/curve/lcurve_editor.h"
 #include "widgets/curve/lcurve_plot.h"
 
@@ -196,7 +197,7 @@ TEST_F(LCurveEditorTest, ATableEditRedrawsThePlot)
     box->setValue(7.25);
     QTest::keyClick(box, Qt::Key_Enter);
     // The view commits an editor's data from a queued call after the key press.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return !batches.empty(); }, 5000));
+    ASSERT_TRUE(test::waitUntil([&] { return !batches.empty(); }));
     ASSERT_EQ(batches.size(), 1u);
     EXPECT_EQ(batches[0][0].row, opat().find("L2.y5"));
     EXPECT_DOUBLE_EQ(graphY(1, 5), 7.25);

@@ -1,4 +1,4 @@
-// ParamDelegate (issue #7): the editor a row gets follows its metadata — no editor for read-only
+// ParamDelegate: the editor a row gets follows its metadata — no editor for read-only
 // rows, the enum labels as a list, bits as a checklist, the range and unit shown on a number
 // field — and committing goes through the model, which refuses out-of-range input.
 #include "dict/dictionary_loader.h"

@@ -1,5 +1,4 @@
-// NewFileDialog (issue #7 "Files: New (choose family/version/mode, defaults from the
-// dictionary)"): every built-in family is offered and every choice the dialog can make is a
+// NewFileDialog: every built-in family is offered and every choice the dialog can make is a
 // consistent one.
 #include "dict/dictionary_loader.h"
 #include "widgets/files/new_file_dialog.h"

@@ -1,10 +1,11 @@
-// The fold wizard on a simulated node (issue #9 steps 2, 6 and 8): the scan finds the modules,
+// The fold wizard on a simulated node : the scan finds the modules,
 // Apply writes addresses and options and the closing scan confirms them; the test bench gets
 // every module's decoded CMD 15 answer over the node image with TADR toggling.
 #include "dict/dictionary_loader.h"
 #include "model/session/connection.h"
 #include "sim/hcs_module.h"
 #include "sim/hcs_node.h"
+#include "sim_rig.h"
 #include "widgets/fold/fold_apply_page.h"
 #include "widgets/fold/fold_bench_page.h"
 #include "widgets/fold/fold_modules_page.h"
@@ -23,29 +24,9 @@
 namespace vt::ui {
 namespace {
 
-constexpr int kWaitMs = 30'000;
-
-std::unique_ptr<model::Connection> openSim(const std::string &family, std::size_t modules,
-                                           const std::string &protocol)
-{
-    model::ConnectionSpec spec;
-    spec.kind = model::ConnectionKind::Sim;
-    spec.sim.family = family;
-    spec.sim.modules = modules;
-    spec.sim.protocol = protocol;
-    auto made = model::Connection::create(spec, *dev::builtinDictionaries());
-    if (!made.ok()) {
-        ADD_FAILURE() << made.error().toStdString();
-        return nullptr;
-    }
-    std::unique_ptr<model::Connection> connection = std::move(made).value();
-    connection->open();
-    if (!QTest::qWaitFor([&] { return connection->isOpen(); }, kWaitMs)) {
-        ADD_FAILURE() << "the simulator link did not open";
-        return nullptr;
-    }
-    return connection;
-}
+using test::kWaitMs;
+using test::openSim;
+using test::waitUntil;
 
 void nextTo(FoldWizard &wizard, int id)
 {
@@ -62,13 +43,13 @@ void nextTo(FoldWizard &wizard, int id)
 // SimSpec "dma-pn-v51", 3 modules, Modbus TCP; the modules start on E22 = 4, 5, 6.
 TEST(FoldWizardSim, ScanApplyAndVerify)
 {
-    auto c = openSim("dma-pn-v51", 3, "modbus-tcp");
+    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     dev::sim::HcsNode &node = *c->simEndpoint()->node();
     for (std::size_t i = 0; i < 3; ++i)
         node.module(i).setAddress(static_cast<std::uint8_t>(4 + i));
 
-    FoldWizard wizard(*dev::builtinDictionaries(), c.get());
+    FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());
     wizard.show();
     wizard.restart();
     wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
@@ -116,9 +97,9 @@ TEST(FoldWizardSim, ScanApplyAndVerify)
 // SimSpec "dma-pn-v51", 3 modules, node image: the bench page decodes each module's answer.
 TEST(FoldWizardSim, BenchShowsEveryModulesAnswer)
 {
-    auto c = openSim("dma-pn-v51", 3, "node-image");
+    auto c = openSim({"dma-pn-v51", 3, "node-image", {}, {}});
     ASSERT_TRUE(c);
-    FoldWizard wizard(*dev::builtinDictionaries(), c.get());
+    FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());
     wizard.show();
     wizard.restart();
     wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
@@ -127,7 +108,7 @@ TEST(FoldWizardSim, BenchShowsEveryModulesAnswer)
     ASSERT_TRUE(page->findChild<QAbstractButton *>(QStringLiteral("startBench"))->isEnabled());
     ASSERT_TRUE(page->startBench());
     ASSERT_TRUE(page->bench());
-    EXPECT_TRUE(QTest::qWaitFor(
+    EXPECT_TRUE(waitUntil(
         [&] {
             for (const model::BenchModule &m : page->bench()->modules())
                 if (m.answers < 2)
@@ -153,7 +134,7 @@ TEST(FoldWizardSim, BenchShowsEveryModulesAnswer)
     EXPECT_FALSE(page->bench());
     EXPECT_FALSE(page->findChild<QAbstractButton *>(QStringLiteral("startBench"))->isEnabled());
     c.reset();
-    QTest::qWait(20); // callbacks of the dropped bench, if any were left, would run now
+    test::spinFor(20); // callbacks of the dropped bench, if any were left, would run now
 }
 
 } // namespace
@@ -162,12 +143,16 @@ TEST(FoldWizardSim, BenchShowsEveryModulesAnswer)
 namespace vt::ui {
 namespace {
 
-// Issue #9 step 6: "connect the cable to module 2, then Next".
+using test::kWaitMs;
+using test::openSim;
+using test::waitUntil;
+
+// Point-to-point guidance: "connect the cable to module 2, then Next".
 TEST(FoldWizardSim, PointToPointGuidesModuleByModule)
 {
-    auto c = openSim("dma-pn-v51", 1, "modbus-rtu");
+    auto c = openSim({"dma-pn-v51", 1, "modbus-rtu", {}, {}});
     ASSERT_TRUE(c);
-    FoldWizard wizard(*dev::builtinDictionaries(), c.get());
+    FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());
     wizard.show();
     wizard.restart();
     wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
@@ -187,7 +172,7 @@ TEST(FoldWizardSim, PointToPointGuidesModuleByModule)
     wizard.next(); // the cable is on module 2 now
     ASSERT_TRUE(applied.wait(kWaitMs));
     EXPECT_TRUE(applied.back().front().toBool());
-    dev::sim::HcsModule &m = c->simEndpoint()->node()->module(0);
+    dev::sim::HcsModule &m = c->simModule(0);
     EXPECT_EQ(m.storage().raw(*m.dictionary().find("E22")->id), 2);
     wizard.next();
     EXPECT_EQ(wizard.currentId(), FoldWizard::PlcPageId);

@@ -1,4 +1,4 @@
-// The fold wizard offline (issue #9): pages in order, the check page blocks Next on the manuals'
+// The fold wizard offline: pages in order, the check page blocks Next on the manuals'
 // errors (duplicate E22, six DMA modules on CMD 15, SNUM mismatch) and shows the finding; the
 // plan file round-trips through Save plan / openPlan; the PLC sheet exports.
 #include "dict/dictionary_loader.h"

@@ -1,5 +1,4 @@
-// The composer (issue #8 "Compose a frame from fields … and send it on the current link; writes
-// need a confirmation"): bytes equal the manuals', Send is disabled with a reason where the link
+// The composer: bytes equal the manuals', Send is disabled with a reason where the link
 // cannot carry the frame, and a sent frame's answer from the simulator arrives in the log.
 #include "hcs/worked_examples.h"
 #include "sim_connection.h"
@@ -50,7 +49,7 @@ TEST(ComposePanel, SendNeedsALinkThatCarriesTheFrame)
     ComposePanel panel;
     panel.setKind(ComposeKind::ModbusRead);
     EXPECT_TRUE(panel.sendBlockedReason().contains(QStringLiteral("Not connected")));
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51")); // a single DMA: Modbus RTU
     panel.setConnection(rig.connection.get());
     EXPECT_TRUE(panel.canSend()) << panel.sendBlockedReason().toStdString();
@@ -65,7 +64,7 @@ TEST(ComposePanel, SendNeedsALinkThatCarriesTheFrame)
 
 TEST(ComposePanel, ReadIsSentAndAnswered)
 {
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51"));
     ComposePanel panel;
     panel.setConnection(rig.connection.get());
@@ -91,7 +90,7 @@ TEST(ComposePanel, ReadIsSentAndAnswered)
 
 TEST(ComposePanel, WritesAskFirst)
 {
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51"));
     ComposePanel panel;
     panel.setConnection(rig.connection.get());
@@ -123,7 +122,7 @@ TEST(ComposePanel, WritesAskFirst)
 
 TEST(ComposePanel, GatewayTelegramGoesOutAsAPaddedNodeImage)
 {
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51", 3, "node-image"));
     ASSERT_EQ(rig.connection->protocolKey(), QStringLiteral("node-image"));
     ComposePanel panel;
@@ -150,7 +149,7 @@ TEST(ComposePanel, GatewayTelegramGoesOutAsAPaddedNodeImage)
 
 TEST(ComposePanel, HartCommandZeroIsAnsweredByTheSd7)
 {
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("wandfluh-sd7"));
     ComposePanel panel;
     panel.setConnection(rig.connection.get());

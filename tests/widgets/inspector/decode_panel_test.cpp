@@ -1,4 +1,4 @@
-// The decode box (issue #8 tests: "each worked example of the manuals pasted in decodes to the
+// The decode box ("each worked example of the manuals pasted in decodes to the
 // right fields and highlights the right bytes; a corrupted frame shows its error without
 // crashing"). Byte strings are the codec tests' worked examples, cited by manual section.
 #include "dict/dictionary_loader.h"

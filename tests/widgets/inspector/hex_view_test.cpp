@@ -1,4 +1,4 @@
-// HexView (issue #8 detail pane): byte cells, clicks on the hex and the character columns, and
+// HexView: byte cells, clicks on the hex and the character columns, and
 // the highlighted range.
 #include "widgets/inspector/hex_view.h"
 

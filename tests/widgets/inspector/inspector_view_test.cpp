@@ -1,4 +1,4 @@
-// InspectorView (issue #8 "Telegram inspector"): the live list fed by a simulator session, the
+// InspectorView: the live list fed by a simulator session, the
 // detail pane of the selected frame (CANopen images unwrapped), filters, pause, save (CSV and
 // text), and linked navigation in both directions.
 #include "canopen/can_frame.h"
@@ -29,7 +29,7 @@ QByteArray qt(const dev::Bytes &b)
 }
 
 // Reads d1.07 through the session so that the list has a real exchange.
-bool readD107(test::SimRig &rig)
+bool readD107(test::LoggedSim &rig)
 {
     const dev::ParamMeta *row = rig.modules.front().dictionary->find("d1.07");
     if (!row)
@@ -41,7 +41,7 @@ bool readD107(test::SimRig &rig)
         return false;
     rig.connection->session().submit(plan.front(), model::Priority::User,
                                      [&](const model::Outcome &) { done = true; });
-    const bool ok = QTest::qWaitFor([&] { return done; }, test::kWaitMs);
+    const bool ok = test::waitUntil([&] { return done; }, test::kWaitMs);
     rig.log->flush();
     return ok;
 }
@@ -50,7 +50,7 @@ bool readD107(test::SimRig &rig)
 
 TEST(InspectorView, ListsTheSessionsFramesAndExplainsTheSelectedOne)
 {
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51"));
     InspectorView view;
     view.resize(1200, 800);
@@ -82,7 +82,7 @@ TEST(InspectorView, ListsTheSessionsFramesAndExplainsTheSelectedOne)
 
 TEST(InspectorView, ShowFramesForSelectsTheLastExchange)
 {
-    test::SimRig rig;
+    test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51"));
     InspectorView view;
     view.setLog(rig.log.get());

@@ -1,55 +1,39 @@
-// A Connection to the built-in simulator with a TelegramLog and its recorder, for the
-// inspector's send and list tests. Waits on signals with a bound, never sleeps.
+// The simulator rig (sim_rig.h) with a TelegramLog that records every frame, for the inspector's
+// send and list tests. The modules are named from the connection, not identified, so the log
+// holds only what a test sends.
 #pragma once
 
-#include "dict/dictionary_loader.h"
-#include "model/session/connection.h"
 #include "model/telegrams/telegram_log.h"
 #include "model/telegrams/telegram_recorder.h"
-
-#include <QSignalSpy>
-#include <gtest/gtest.h>
-#include <memory>
+#include "sim_rig.h"
 
 namespace vt::test {
 
-inline constexpr int kWaitMs = 20'000;
-
-struct SimRig
+struct LoggedSim
 {
     std::unique_ptr<model::TelegramLog> log = std::make_unique<model::TelegramLog>();
     std::unique_ptr<model::Connection> connection;
     std::unique_ptr<model::TelegramRecorder> recorder;
     std::vector<model::ModuleInfo> modules;
 
-    // `family` and `protocol` as in SimSpec ("dma-pn-v51", "opat", "wandfluh-sd7"; "" = the
-    // default link); opened, recorder attached.
+    // `family` and `protocol` as in SimSetup; opened, recorder attached.
     bool open(const std::string &family, std::size_t count = 1, const std::string &protocol = {})
     {
-        model::ConnectionSpec spec;
-        spec.kind = model::ConnectionKind::Sim;
-        spec.sim.family = family;
-        spec.sim.modules = count;
-        spec.sim.protocol = protocol;
-        auto made = model::Connection::create(spec, *dev::builtinDictionaries());
-        if (!made.ok())
+        auto rig = openSim(SimSetup{family, count, protocol, {}, {}});
+        if (!rig)
             return false;
-        connection = std::move(made).value();
+        connection = std::move(rig->connection);
         recorder = std::make_unique<model::TelegramRecorder>(connection->session(), *log);
-        QSignalSpy opened(connection.get(), &model::Connection::opened);
-        connection->open();
-        if (!connection->isOpen() && !opened.wait(kWaitMs))
-            return false;
         for (int address : connection->moduleAddresses()) {
             model::ModuleInfo m;
             m.address = address;
-            m.dictionary = dev::builtinDictionaries()->find(family);
+            m.dictionary = dictionaries().find(family);
             modules.push_back(m);
         }
         return true;
     }
 
-    ~SimRig()
+    ~LoggedSim()
     {
         recorder.reset();
         connection.reset();

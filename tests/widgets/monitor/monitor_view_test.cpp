@@ -1,8 +1,8 @@
-// MonitorView (issue #8) offscreen against the simulator: write markers with old → new text,
+// MonitorView offscreen against the simulator: write markers with old → new text,
 // CSV export round trip, PNG/PDF export, no redraw while hidden, redraws coalesced (≤ 25/s),
 // decimation to about one min/max pair per pixel, the cursor read-out, channel choice.
 #include "model/session/write_job.h"
-#include "monitor_rig.h"
+#include "sim_rig.h"
 #include "widgets/monitor/monitor_plot.h"
 #include "widgets/monitor/monitor_view.h"
 
@@ -20,12 +20,20 @@ namespace {
 using ui::MonitorView;
 
 // Runs the monitor until the first module's store holds `rows` samples.
-bool record(MonitorView &view, const MonitorRig &rig, qsizetype rows, double hz = 200)
+bool record(MonitorView &view, const SimRig &rig, qsizetype rows, double hz = 200)
 {
     view.setRate(hz);
     view.start();
     const model::SampleStore *store = view.session().store(rig.module().address);
-    return spinUntil([&] { return store && store->size() >= rows; }, kWaitMs);
+    return waitUntil([&] { return store && store->size() >= rows; }, kWaitMs);
+}
+
+// Shows the view at `size` and hands it the rig's connection, as the main window does.
+void showOn(MonitorView &view, const SimRig &rig, QSize size = {800, 500})
+{
+    view.resize(size);
+    view.show();
+    view.setConnection(rig.connection.get(), rig.modules);
 }
 
 std::vector<QString> markerTexts(const ui::MonitorPlot &plot)
@@ -43,9 +51,7 @@ TEST(MonitorView, ParameterWriteAppearsAsAMarkerWithOldAndNewValue)
     auto rig = connectSim("dma-pn-v51");
     ASSERT_TRUE(rig);
     MonitorView view;
-    view.resize(900, 600);
-    view.show();
-    view.setConnection(rig->connection.get(), rig->modules);
+    showOn(view, *rig, {900, 600});
     ASSERT_TRUE(record(view, *rig, 20));
 
     // A write as the parameter editor does it: WriteJob, then journalWrites() with its items.
@@ -72,7 +78,7 @@ TEST(MonitorView, ParameterWriteAppearsAsAMarkerWithOldAndNewValue)
     ASSERT_EQ(view.session().journal().markers().size(), 1u);
     EXPECT_EQ(view.session().journal().markers().front().text, expected);
     // On the time axis once the next redraw comes.
-    EXPECT_TRUE(spinUntil(
+    EXPECT_TRUE(waitUntil(
         [&] {
             const auto texts = markerTexts(*view.plot());
             return std::find(texts.begin(), texts.end(), expected) != texts.end();
@@ -144,9 +150,7 @@ TEST(MonitorView, ExportsThePlotAsPngAndPdf)
     auto rig = connectSim("dma-pn-v51");
     ASSERT_TRUE(rig);
     MonitorView view;
-    view.resize(800, 500);
-    view.show();
-    view.setConnection(rig->connection.get(), rig->modules);
+    showOn(view, *rig);
     ASSERT_TRUE(record(view, *rig, 50));
     view.pause();
     QTemporaryDir dir;
@@ -180,7 +184,7 @@ TEST(MonitorView, DoesNotRedrawWhileHidden)
     EXPECT_EQ(view.replotCount(), 0);
     view.resize(800, 500);
     view.show();
-    EXPECT_TRUE(spinUntil([&] { return view.replotCount() > 0; }, kWaitMs));
+    EXPECT_TRUE(waitUntil([&] { return view.replotCount() > 0; }, kWaitMs));
     view.hide();
     const int shown = view.replotCount();
     const qsizetype rows = view.session().store(rig->module().address)->size();
@@ -194,16 +198,14 @@ TEST(MonitorView, RedrawsAreCoalescedAtTheLinksFullRate)
     auto rig = connectSim("dma-pn-v51");
     ASSERT_TRUE(rig);
     MonitorView view;
-    view.resize(800, 500);
-    view.show();
-    view.setConnection(rig->connection.get(), rig->modules);
+    showOn(view, *rig);
     view.setRate(0); // as fast as the link allows: thousands of samples per second here
     view.start();
     const quint64 samplesBefore = view.session().samples(rig->module().address);
     const int before = view.replotCount();
     QElapsedTimer clock;
     clock.start();
-    spinFor(1000); // the measurement window
+    spinFor(500); // the measurement window: about a dozen redraws at 25 per second
     const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
     const int replots = view.replotCount() - before;
     const quint64 samples = view.session().samples(rig->module().address) - samplesBefore;
@@ -224,7 +226,7 @@ TEST(MonitorView, DecimatesToAboutOnePairPerPixel)
     view.setRate(0);
     view.start();
     const model::SampleStore *store = view.session().store(rig->module().address);
-    ASSERT_TRUE(spinUntil([&] { return store->size() >= 20000; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return store->size() >= 20000; }, kWaitMs));
     view.pause();
     ui::MonitorPlot &plot = *view.plot();
     plot.loadRange(store->firstTime(), store->lastTime());
@@ -267,9 +269,7 @@ TEST(MonitorView, AnyDisplayValueOfAnyModuleAndOneAxisPerUnit)
     auto rig = connectSim("dma-pn-v51", 2);
     ASSERT_TRUE(rig);
     MonitorView view;
-    view.resize(800, 500);
-    view.show();
-    view.setConnection(rig->connection.get(), rig->modules);
+    showOn(view, *rig);
     // Default: five channels of the first module, volts and amperes.
     EXPECT_EQ(view.plot()->channels().size(), 5u);
     EXPECT_EQ(view.plot()->unitAxisCount(), 2);
@@ -286,7 +286,7 @@ TEST(MonitorView, AnyDisplayValueOfAnyModuleAndOneAxisPerUnit)
     view.start();
     const model::SampleStore *second = view.session().store(rig->module(1).address);
     ASSERT_TRUE(second);
-    EXPECT_TRUE(spinUntil([&] { return second->size() >= 20; }, kWaitMs));
+    EXPECT_TRUE(waitUntil([&] { return second->size() >= 20; }, kWaitMs));
     EXPECT_TRUE(
         view.achievedRateText().contains(QStringLiteral("%1: ").arg(rig->module(1).address)))
         << view.achievedRateText().toStdString();
@@ -298,9 +298,7 @@ TEST(MonitorView, DraggingTheTimeAxisStopsFollowing)
     auto rig = connectSim("dma-pn-v51");
     ASSERT_TRUE(rig);
     MonitorView view;
-    view.resize(800, 500);
-    view.show();
-    view.setConnection(rig->connection.get(), rig->modules);
+    showOn(view, *rig);
     ASSERT_TRUE(record(view, *rig, 40));
     EXPECT_TRUE(view.isFollowing());
     view.plot()->xAxis->moveRange(-0.1); // what a mouse drag does
@@ -311,7 +309,7 @@ TEST(MonitorView, DraggingTheTimeAxisStopsFollowing)
 TEST(MonitorView, ALostLinkIsReportedOnceNotForEveryPoll)
 {
     // The link is cut after 60 frames: identify, then some polls, then every poll fails at once.
-    auto rig = connectSim("dma-pn-v51", 1, link::parseFaultSpec(u"cut=60").value());
+    auto rig = connectSim({"dma-pn-v51", 1, {}, link::parseFaultSpec(u"cut=60").value(), {}});
     ASSERT_TRUE(rig);
     MonitorView view;
     QSignalSpy status(&view, &MonitorView::statusMessage);
@@ -319,7 +317,7 @@ TEST(MonitorView, ALostLinkIsReportedOnceNotForEveryPoll)
     view.setRate(200);
     view.start();
     const int module = rig->module().address;
-    ASSERT_TRUE(spinUntil([&] { return view.session().scheduler()->failed(module) >= 20; }));
+    ASSERT_TRUE(waitUntil([&] { return view.session().scheduler()->failed(module) >= 20; }));
     // "… was lost", then "… is not open" for every further poll: each said once.
     EXPECT_GE(status.count(), 1);
     EXPECT_LE(status.count(), 2);

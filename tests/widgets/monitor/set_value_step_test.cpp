@@ -1,8 +1,7 @@
-// The monitor's set value step (issue #8 "a step control writes a set value step (A1.01/A2.01
-// with E17 as the manual requires)"): refused while E17 ≠ 2 with the manuals' reason, E17 set
+// The monitor's set value step: refused while E17 ≠ 2 with the manuals' reason, E17 set
 // on request, then the step written through WriteJob, read back and journalled.
 #include "model/monitor/set_value_step.h"
-#include "monitor_rig.h"
+#include "sim_rig.h"
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/monitor/step_control.h"
 
@@ -95,7 +94,7 @@ TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
     QSignalSpy written(&control, &ui::StepControl::written);
 
     control.writeStep();
-    ASSERT_TRUE(spinUntil([&] { return control.activationOffered(); }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return control.activationOffered(); }, kWaitMs));
     EXPECT_TRUE(control.statusText().contains("E17")) << control.statusText().toStdString();
     EXPECT_TRUE(view.session().journal().markers().empty());
 
@@ -117,7 +116,7 @@ TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
     const model::SampleStore *store = view.session().store(rig->module().address);
     const int desired = store->channelIndex(QStringLiteral("d1.10"));
     ASSERT_GE(desired, 0);
-    EXPECT_TRUE(spinUntil(
+    EXPECT_TRUE(waitUntil(
         [&] {
             return store->size() > 0 &&
                    std::abs(store->valueAt(desired, store->size() - 1) - 1.0) < 0.01;

@@ -1,4 +1,4 @@
-// Protocol auto-detection of the decode box (issue #8 "auto where unambiguous"): checksums and
+// Protocol auto-detection of the decode box: checksums and
 // headers decide, structure decides only alone, and ambiguity is reported instead of guessed.
 #include "hcs/worked_examples.h"
 #include "inspect/auto_detect.h"

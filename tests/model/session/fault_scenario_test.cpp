@@ -1,8 +1,8 @@
-// Issue #6 fault scenarios: 2 % dropped and 0.5 % corrupted frames — read all still completes
+// Fault scenarios: 2 % dropped and 0.5 % corrupted frames — read all still completes
 // with the right values, over several seeds; no out-of-range value is ever sent.
 #include "modbus/rtu.h"
 #include "model/session/write_job.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 
@@ -19,25 +19,25 @@ TEST(FaultScenario, ReadAllCompletesWithCorrectValuesUnderDropsAndCorruption)
         model::SessionOptions options;
         options.turnaround = std::chrono::milliseconds(40);
         options.retries = 5;
-        auto c = connectSim("dma-pb-v32", 1, faults, options);
+        auto c = openSim({"dma-pb-v32", 1, {}, faults, options});
         ASSERT_TRUE(c);
-        const auto rows = model::readableRows(c->dictionary(), c->module().version(),
-                                              std::to_string(c->module().mode()));
+        const auto rows = model::readableRows(c->dictionary(), c->simModule().version(),
+                                              std::to_string(c->simModule().mode()));
         for (int round = 0; round < 3; ++round) {
             std::optional<model::ReadResult> result;
-            c->access->read(c->address(), rows, model::Priority::User,
-                            [&](const model::ReadResult &r) { result = r; });
+            c->access().read(c->address(), rows, model::Priority::User,
+                             [&](const model::ReadResult &r) { result = r; });
             ASSERT_TRUE(waitFor(result, 60'000));
             ASSERT_TRUE(result->complete())
                 << "seed " << seed << ": " << result->failures.front().outcome.reason.toStdString();
             for (const model::RowValue &v : result->values) {
                 if (v.row->block != "d") {
-                    EXPECT_EQ(dev::rawNumber(v.value), storedRaw(c->module(), *v.row))
+                    EXPECT_EQ(dev::rawNumber(v.value), storedRaw(c->simModule(), *v.row))
                         << v.row->name;
                 }
             }
         }
-        const auto &counters = c->fault->counters();
+        const auto &counters = c->faultLink()->counters();
         EXPECT_GT(counters.txDropped + counters.rxDropped + counters.txCorrupted +
                       counters.rxCorrupted,
                   0u)
@@ -49,10 +49,10 @@ TEST(FaultScenario, NoOutOfRangeValueIsEverSent)
 {
     link::FaultSpec faults;
     faults.rx.drop = 0.02;
-    auto c = connectSim("dma-pn-v51", 1, faults);
+    auto c = openSim({"dma-pn-v51", 1, {}, faults, {}});
     ASSERT_TRUE(c);
     std::vector<QByteArray> writes;
-    QObject::connect(c->session.get(), &model::Session::frameSent,
+    QObject::connect(&c->session(), &model::Session::frameSent,
                      [&](const QByteArray &bytes, int, qint64) {
                          if (bytes.size() > 1 && bytes[1] == 6)
                              writes.push_back(bytes);
@@ -69,7 +69,7 @@ TEST(FaultScenario, NoOutOfRangeValueIsEverSent)
         }
     }
     ASSERT_GT(list.size(), 30u);
-    model::WriteJob job(*c->access, c->address(), c->dictionary(), list);
+    model::WriteJob job(c->access(), c->address(), c->dictionary(), list);
     QSignalSpy finished(&job, &model::WriteJob::finished);
     job.start();
     ASSERT_TRUE(finished.wait(120'000));

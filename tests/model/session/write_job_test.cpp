@@ -1,8 +1,8 @@
-// Safe writes (issue #6 "Write"): range check before sending, only changed values, pacing from
+// Safe writes: range check before sending, only changed values, pacing from
 // the dictionary (DMA Profinet manual §3.4.1: ≥ 30 ms), read back, per-parameter result, and a
 // write cut in the middle that resumes to completion.
 #include "model/session/write_job.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 
@@ -41,41 +41,42 @@ struct WriteTimes
     std::vector<std::int64_t> simUs;
 };
 
-void recordWrites(SimConnection &c, WriteTimes &times)
+void recordWrites(SimRig &c, WriteTimes &times)
 {
-    QObject::connect(c.session.get(), &model::Session::frameSent,
+    QObject::connect(&c.session(), &model::Session::frameSent,
                      [&c, &times](const QByteArray &bytes, int, qint64 ns) {
                          if (bytes.size() > 1 && bytes[1] == 6) {
                              times.sessionNs.push_back(ns);
-                             times.simUs.push_back(c.endpoint->clock().nowUs());
+                             times.simUs.push_back(c.simEndpoint()->clock().nowUs());
                          }
                      });
 }
 
 TEST(WriteJob, WritesVerifiesAndTheSimulatorHoldsTheValue)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    // Issue #7's scenario on the session level: C1.07 = 1.000 V is raw 1000.
-    WriteJob job(*c->access, c->address(), c->dictionary(),
+    // The editor's scenario on the session level: C1.07 = 1.000 V is raw 1000.
+    WriteJob job(c->access(), c->address(), c->dictionary(),
                  items(c->dictionary(), {{"C1.07", 1000}, {"r1.01", 120}}));
     ASSERT_TRUE(runJob(job));
     EXPECT_TRUE(job.complete());
     for (const WriteItem &item : job.items()) {
         EXPECT_EQ(item.status, WriteStatus::Verified)
             << item.row->name << ": " << item.reason.toStdString();
-        EXPECT_EQ(storedRaw(c->module(), *item.row), dev::rawNumber(item.value)) << item.row->name;
+        EXPECT_EQ(storedRaw(c->simModule(), *item.row), dev::rawNumber(item.value))
+            << item.row->name;
     }
 }
 
 TEST(WriteJob, OutOfRangeAndReadOnlyNeverLeaveTheMaster)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    QSignalSpy sent(c->session.get(), &model::Session::frameSent);
-    const double before = storedRaw(c->module(), *c->dictionary().find("C1.07"));
+    QSignalSpy sent(&c->session(), &model::Session::frameSent);
+    const double before = storedRaw(c->simModule(), *c->dictionary().find("C1.07"));
     WriteJob job(
-        *c->access, c->address(), c->dictionary(),
+        c->access(), c->address(), c->dictionary(),
         items(c->dictionary(), {{"C1.07", 10000}, {"C1.07", -1}, {"d1.10", 5}, {"C1.17", 4001}}));
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(sent.count(), 0);
@@ -86,19 +87,19 @@ TEST(WriteJob, OutOfRangeAndReadOnlyNeverLeaveTheMaster)
     // The dictionary's refusal stays in both languages until it is shown.
     const QString german = writeReasonText(job.items()[0], dev::Language::German);
     EXPECT_NE(german.indexOf(QStringLiteral("9,999")), -1) << german.toStdString();
-    EXPECT_EQ(storedRaw(c->module(), *c->dictionary().find("C1.07")), before);
+    EXPECT_EQ(storedRaw(c->simModule(), *c->dictionary().find("C1.07")), before);
 }
 
 TEST(WriteJob, SendsOnlyChangedValues)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
     auto list = items(c->dictionary(), {{"C1.07", 0}, {"C1.08", 500}});
     list[0].before = 0.0; // the device already holds it
     list[1].before = 0.0;
     WriteTimes times;
     recordWrites(*c, times);
-    WriteJob job(*c->access, c->address(), c->dictionary(), list);
+    WriteJob job(c->access(), c->address(), c->dictionary(), list);
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(job.items()[0].status, WriteStatus::Unchanged);
     EXPECT_EQ(job.items()[1].status, WriteStatus::Verified);
@@ -107,13 +108,13 @@ TEST(WriteJob, SendsOnlyChangedValues)
 
 TEST(WriteJob, PacingHoldsOnTheSimulatedClockAndTheEepromNeverRefuses)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
     EXPECT_EQ(c->dictionary().writePacingMs, 30);
     WriteTimes times;
     recordWrites(*c, times);
     WriteJob job(
-        *c->access, c->address(), c->dictionary(),
+        c->access(), c->address(), c->dictionary(),
         items(c->dictionary(),
               {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}, {"C2.08", 400}, {"r1.01", 10}}));
     ASSERT_TRUE(runJob(job));
@@ -128,12 +129,12 @@ TEST(WriteJob, PacingHoldsOnTheSimulatedClockAndTheEepromNeverRefuses)
 
 TEST(WriteJob, WithoutPacingTheBusyEepromRefusesSoPacingMatters)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
     model::WriteOptions unpaced;
     unpaced.pacingMs = 0;
     unpaced.verify = false;
-    WriteJob job(*c->access, c->address(), c->dictionary(),
+    WriteJob job(c->access(), c->address(), c->dictionary(),
                  items(c->dictionary(), {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}}), unpaced);
     ASSERT_TRUE(runJob(job));
     int refused = 0;
@@ -144,7 +145,7 @@ TEST(WriteJob, WithoutPacingTheBusyEepromRefusesSoPacingMatters)
 
 TEST(WriteJob, DeviceRefusalIsReportedWithTheDevicesReason)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
     const dev::ParamMeta *row = c->dictionary().find("C1.07");
     ASSERT_TRUE(row);
@@ -155,7 +156,7 @@ TEST(WriteJob, DeviceRefusalIsReportedWithTheDevicesReason)
     std::vector<WriteItem> list(1);
     list[0].row = &wide;
     list[0].value = 20000.0;
-    WriteJob job(*c->access, c->address(), c->dictionary(), list);
+    WriteJob job(c->access(), c->address(), c->dictionary(), list);
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(job.items()[0].status, WriteStatus::Refused);
     EXPECT_EQ(job.items()[0].exceptionCode, 3);
@@ -175,24 +176,24 @@ TEST(WriteJob, ACutMidWriteLeavesAnExactRecordAndResumeFinishesIt)
         9; // two rows verified (4 frames each), the third row's write request goes out
     model::SessionOptions options;
     options.turnaround = std::chrono::milliseconds(50);
-    auto c = connectSim("dma-pn-v51", 1, cut, options);
+    auto c = openSim({"dma-pn-v51", 1, {}, cut, options});
     ASSERT_TRUE(c);
     auto list =
         items(c->dictionary(),
               {{"C1.07", 111}, {"C1.08", 222}, {"C2.07", 333}, {"C2.08", 444}, {"r1.01", 55}});
     std::vector<double> before;
     for (WriteItem &item : list) {
-        before.push_back(storedRaw(c->module(), *item.row));
+        before.push_back(storedRaw(c->simModule(), *item.row));
         item.before = before.back();
     }
-    WriteJob job(*c->access, c->address(), c->dictionary(), list);
+    WriteJob job(c->access(), c->address(), c->dictionary(), list);
     ASSERT_TRUE(runJob(job));
     EXPECT_FALSE(job.complete());
     // The record says exactly what is on the device.
     int verified = 0, uncertain = 0, notSent = 0;
     for (std::size_t i = 0; i < job.items().size(); ++i) {
         const WriteItem &item = job.items()[i];
-        const double stored = storedRaw(c->module(), *item.row);
+        const double stored = storedRaw(c->simModule(), *item.row);
         switch (item.status) {
         case WriteStatus::Verified:
             ++verified;
@@ -211,13 +212,14 @@ TEST(WriteJob, ACutMidWriteLeavesAnExactRecordAndResumeFinishesIt)
     EXPECT_EQ(notSent, 2);
 
     // Reconnect without the cut and resume.
-    c->fault->setSpec(link::FaultSpec{});
+    c->faultLink()->setSpec(link::FaultSpec{});
     ASSERT_TRUE(c->open());
     ASSERT_TRUE(runJob(job, true));
     EXPECT_TRUE(job.complete());
     for (const WriteItem &item : job.items()) {
         EXPECT_EQ(item.status, WriteStatus::Verified) << item.row->name;
-        EXPECT_EQ(storedRaw(c->module(), *item.row), dev::rawNumber(item.value)) << item.row->name;
+        EXPECT_EQ(storedRaw(c->simModule(), *item.row), dev::rawNumber(item.value))
+            << item.row->name;
     }
 }
 

@@ -1,4 +1,4 @@
-// The composer (issue #8 "Compose a frame from fields"): every kind's bytes equal the manuals'
+// The composer: every kind's bytes equal the manuals'
 // worked examples, writes are flagged for confirmation, and each frame names its link.
 #include "hcs/worked_examples.h"
 #include "inspect/compose.h"

@@ -1,4 +1,4 @@
-// The decode box's paste parser (issue #8 "Decode anything pasted or typed as hex"): the
+// The decode box's paste parser: the
 // notations PLC programmers paste, candump frames, and bounds against untrusted input.
 #include "inspect/hex_input.h"
 

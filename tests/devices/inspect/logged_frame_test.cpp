@@ -1,4 +1,4 @@
-// describeLogged (issue #8 known gaps): CANopen records are SocketCAN images and node-image
+// describeLogged: CANopen records are SocketCAN images and node-image
 // records are padded gateway telegrams; both are explained with offsets into the logged bytes.
 #include "canopen/can_frame.h"
 #include "hcs/worked_examples.h"

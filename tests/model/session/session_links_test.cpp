@@ -1,15 +1,16 @@
-// Issue #6 "End to end against the simulator over every link": the session engine through a real
+// End to end against the simulator over every link: the session engine through a real
 // SerialLink on a pseudo-terminal (with the test-only libserialport workarounds), a TcpLink on
 // loopback (Modbus TCP and the node image) and a CanLink on a SOCK_SEQPACKET socketpair, each
 // against a valvetune-sim process: identify, read all, write + verify. (The in-process SimLink is
 // covered by session_test.cpp / write_job_test.cpp.)
-#include "../app/sim_process.h"
+#include "../../app/sim_process.h"
 #include "access/transaction.h"
 #include "dict/dictionary_loader.h"
 #include "model/session/adapter_factory.h"
 #include "model/session/device_access.h"
 #include "model/session/session.h"
 #include "model/session/write_job.h"
+#include "sim_rig.h"
 #include "transports/can_link.h"
 #include "transports/serial_link.h"
 #include "transports/serial_settings.h"
@@ -27,13 +28,6 @@ namespace {
 
 using simtest::Sim;
 
-constexpr int kWaitMs = 30'000;
-
-const dev::DictionarySet &dictionaries()
-{
-    return *dev::builtinDictionaries();
-}
-
 struct Endpoint
 {
     std::unique_ptr<link::Link> link;
@@ -48,14 +42,14 @@ struct Endpoint
             std::make_unique<model::Session>(link.get(), model::makeAdapter(kind, family), options);
         access = std::make_unique<model::DeviceAccess>(*session, dictionaries());
         link->open();
-        return QTest::qWaitFor([&] { return link->state() == link::LinkState::Open; }, kWaitMs);
+        return waitForState(*link, link::LinkState::Open);
     }
 
     model::IdentifyResult identify(int module)
     {
         std::optional<model::IdentifyResult> result;
         access->identify(module, [&](const model::IdentifyResult &r) { result = r; });
-        EXPECT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, kWaitMs));
+        EXPECT_TRUE(waitFor(result));
         return result.value_or(model::IdentifyResult{});
     }
 
@@ -66,7 +60,7 @@ struct Endpoint
         std::optional<model::ReadResult> result;
         access->read(module, rows, model::Priority::User,
                      [&](const model::ReadResult &r) { result = r; });
-        EXPECT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, 120'000));
+        EXPECT_TRUE(waitFor(result, 120'000));
         EXPECT_EQ(result ? result->values.size() : 0u, rows.size());
         return result.value_or(model::ReadResult{});
     }
@@ -209,7 +203,7 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     }
     std::optional<model::ReadResult> result;
     e.access->read(0, rows, model::Priority::User, [&](const model::ReadResult &r) { result = r; });
-    ASSERT_TRUE(QTest::qWaitFor([&] { return result.has_value(); }, 120'000));
+    ASSERT_TRUE(waitFor(result, 120'000));
     EXPECT_TRUE(result->complete())
         << (result->failures.empty() ? std::string()
                                      : result->failures.front().outcome.reason.toStdString());

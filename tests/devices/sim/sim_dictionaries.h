@@ -1,5 +1,4 @@
-// Shared helpers of the Wandfluh simulator tests (DSP-408, HART, CANopen): the built-in
-// dictionaries by family id.
+// The built-in dictionaries by family id, for the simulator tests.
 #pragma once
 
 #include "dict/dictionary_loader.h"
@@ -9,7 +8,8 @@
 
 namespace vt::dev::sim::test {
 
-inline const Dictionary &wandfluhFamily(const std::string &name)
+// The family's dictionary; an empty one (and a test failure) when there is none.
+inline const Dictionary &family(const std::string &name)
 {
     const auto &set = builtinDictionaries();
     if (!set.ok() || !set->find(name)) {

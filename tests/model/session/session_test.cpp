@@ -1,11 +1,11 @@
-// The session engine against the built-in simulator (issue #6 "Session"): identify, read all in
+// The session engine against the built-in simulator: identify, read all in
 // blocks of ≤ 8 consecutive IDs, priorities, timeouts and retries, link loss.
 #include "dict/cooking.h"
 #include "model/monitor/monitor_recording.h"
 #include "model/monitor/monitor_scheduler.h"
 #include "model/telegrams/telegram_log.h"
 #include "model/telegrams/telegram_recorder.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 #include <set>
@@ -20,46 +20,46 @@ TEST(Session, IdentifiesEachHcsFamily)
 {
     for (const char *family :
          {"opat", "dma-pn-v13", "dma-pn-v51", "dma-pb-v15", "dma-pb-v22", "dma-pb-v32"}) {
-        auto c = connectSim(family);
+        auto c = openSim(family);
         ASSERT_TRUE(c);
         std::optional<model::IdentifyResult> result;
-        c->access->identify(c->address(), [&](const model::IdentifyResult &r) { result = r; });
+        c->access().identify(c->address(), [&](const model::IdentifyResult &r) { result = r; });
         ASSERT_TRUE(waitFor(result)) << family;
         EXPECT_TRUE(result->ok) << family << ": " << result->message.toStdString();
         ASSERT_TRUE(result->module.dictionary) << family;
         EXPECT_EQ(result->module.dictionary->family, family);
-        EXPECT_EQ(result->module.mode, c->module().mode());
+        EXPECT_EQ(result->module.mode, c->simModule().mode());
     }
 }
 
 TEST(Session, AnOpatNodeIsReachedModuleByModuleThroughItsGateway)
 {
-    auto c = connectSim("opat", 3); // master SADR 0 + CAN slaves 1 and 2, Modbus TCP
+    auto c = openSim("opat", 3); // master SADR 0 + CAN slaves 1 and 2, Modbus TCP
     ASSERT_TRUE(c);
-    EXPECT_EQ(c->endpoint->spec().protocol, "modbus-tcp");
+    EXPECT_EQ(c->simEndpoint()->spec().protocol, "modbus-tcp");
     for (std::size_t i = 0; i < 3; ++i) {
         std::optional<model::IdentifyResult> result;
-        c->access->identify(c->address(i), [&](const model::IdentifyResult &r) { result = r; });
+        c->access().identify(c->address(i), [&](const model::IdentifyResult &r) { result = r; });
         ASSERT_TRUE(waitFor(result));
         EXPECT_TRUE(result->ok) << i << ": " << result->message.toStdString();
-        EXPECT_EQ(result->module.versRaw / 100, std::stoi(c->module(i).version())) << i;
+        EXPECT_EQ(result->module.versRaw / 100, std::stoi(c->simModule(i).version())) << i;
     }
 }
 
 TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    const auto rows = model::readableRows(c->dictionary(), c->module().version(),
-                                          std::to_string(c->module().mode()));
+    const auto rows = model::readableRows(c->dictionary(), c->simModule().version(),
+                                          std::to_string(c->simModule().mode()));
     ASSERT_GT(rows.size(), 50u);
 
     std::vector<QByteArray> requests;
-    QObject::connect(c->session.get(), &model::Session::frameSent,
+    QObject::connect(&c->session(), &model::Session::frameSent,
                      [&](const QByteArray &bytes, int, qint64) { requests.push_back(bytes); });
     int lastDone = 0, lastTotal = 0;
     std::optional<model::ReadResult> result;
-    c->access->read(
+    c->access().read(
         c->address(), rows, Priority::User, [&](const model::ReadResult &r) { result = r; },
         [&](int done, int total) {
             lastDone = done;
@@ -81,7 +81,7 @@ TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
     for (const model::RowValue &v : result->values) {
         if (v.row->block == "d")
             continue; // live values move with the plant
-        EXPECT_EQ(dev::rawNumber(v.value), storedRaw(c->module(), *v.row)) << v.row->name;
+        EXPECT_EQ(dev::rawNumber(v.value), storedRaw(c->simModule(), *v.row)) << v.row->name;
     }
     // No inactive or not-implemented row was asked for.
     std::set<int> asked;
@@ -102,22 +102,24 @@ TEST(Session, ReadAllMatchesTheSimulatorInBlocksOfAtMostEight)
 
 TEST(Session, UserRequestsGoBeforeMonitorPolls)
 {
-    auto c = connectSim("dma-pn-v13");
+    auto c = openSim("dma-pn-v13");
     ASSERT_TRUE(c);
     const dev::ParamMeta *c107 = c->dictionary().find("C1.07");
     ASSERT_TRUE(c107);
     std::vector<int> order;
     for (int i = 0; i < 3; ++i)
-        c->session->submit(c->session->adapter()
-                               .planRead(c->address(), std::vector<const dev::ParamMeta *>{c107})
-                               .front(),
-                           Priority::Monitor,
-                           [&order](const model::Outcome &) { order.push_back(1); });
-    c->session->submit(c->session->adapter()
-                           .planRead(c->address(), std::vector<const dev::ParamMeta *>{c107})
-                           .front(),
-                       Priority::User, [&order](const model::Outcome &) { order.push_back(0); });
-    ASSERT_TRUE(QTest::qWaitFor([&] { return order.size() == 4; }, kWaitMs));
+        c->session().submit(c->session()
+                                .adapter()
+                                .planRead(c->address(), std::vector<const dev::ParamMeta *>{c107})
+                                .front(),
+                            Priority::Monitor,
+                            [&order](const model::Outcome &) { order.push_back(1); });
+    c->session().submit(c->session()
+                            .adapter()
+                            .planRead(c->address(), std::vector<const dev::ParamMeta *>{c107})
+                            .front(),
+                        Priority::User, [&order](const model::Outcome &) { order.push_back(0); });
+    ASSERT_TRUE(waitUntil([&] { return order.size() == 4; }, kWaitMs));
     EXPECT_EQ(order.front(), 0);
 }
 
@@ -129,18 +131,18 @@ TEST(Session, TimesOutRetriesAndReportsWhenNobodyAnswers)
     options.turnaround = std::chrono::milliseconds(20);
     options.retries = 2;
     options.backoff = std::chrono::milliseconds(1);
-    auto c = connectSim("dma-pn-v13", 1, silent, options);
+    auto c = openSim({"dma-pn-v13", 1, {}, silent, options});
     ASSERT_TRUE(c);
-    QSignalSpy timeouts(c->session.get(), &model::Session::attemptTimedOut);
+    QSignalSpy timeouts(&c->session(), &model::Session::attemptTimedOut);
     std::optional<model::Outcome> outcome;
-    c->session->submit(c->session->adapter().planIdentify(c->address()).front(), Priority::User,
-                       [&](const model::Outcome &o) { outcome = o; });
+    c->session().submit(c->session().adapter().planIdentify(c->address()).front(), Priority::User,
+                        [&](const model::Outcome &o) { outcome = o; });
     ASSERT_TRUE(waitFor(outcome));
     EXPECT_EQ(outcome->status, OutcomeStatus::Timeout);
     EXPECT_EQ(outcome->attempts, 3);
     EXPECT_EQ(timeouts.count(), 3);
-    EXPECT_EQ(c->session->counters().retries, 2u);
-    EXPECT_EQ(c->session->counters().failures, 1u);
+    EXPECT_EQ(c->session().counters().retries, 2u);
+    EXPECT_EQ(c->session().counters().failures, 1u);
 }
 
 TEST(Session, TimeoutGrowsWithTheWireTime)
@@ -157,13 +159,13 @@ TEST(Session, TimeoutGrowsWithTheWireTime)
 
 TEST(Session, LinkLossFailsWhatIsQueuedAndTheLinkCanReopen)
 {
-    auto c = connectSim("dma-pn-v13");
+    auto c = openSim("dma-pn-v13");
     ASSERT_TRUE(c);
-    const auto rows = model::readableRows(c->dictionary(), c->module().version(), "1");
+    const auto rows = model::readableRows(c->dictionary(), c->simModule().version(), "1");
     std::optional<model::ReadResult> result;
-    c->access->read(c->address(), rows, Priority::User,
-                    [&](const model::ReadResult &r) { result = r; });
-    c->link->close();
+    c->access().read(c->address(), rows, Priority::User,
+                     [&](const model::ReadResult &r) { result = r; });
+    c->link().close();
     ASSERT_TRUE(waitFor(result));
     EXPECT_FALSE(result->complete());
     ASSERT_FALSE(result->failures.empty());
@@ -171,41 +173,41 @@ TEST(Session, LinkLossFailsWhatIsQueuedAndTheLinkCanReopen)
 
     ASSERT_TRUE(c->open());
     std::optional<model::ReadResult> again;
-    c->access->read(c->address(), rows, Priority::User,
-                    [&](const model::ReadResult &r) { again = r; });
+    c->access().read(c->address(), rows, Priority::User,
+                     [&](const model::ReadResult &r) { again = r; });
     ASSERT_TRUE(waitFor(again));
     EXPECT_TRUE(again->complete());
 }
 
 TEST(Session, CancelledReadEndsWithoutTheRest)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    const auto rows = model::readableRows(c->dictionary(), c->module().version(), "3");
+    const auto rows = model::readableRows(c->dictionary(), c->simModule().version(), "3");
     std::optional<model::ReadResult> result;
-    auto handle = c->access->read(c->address(), rows, Priority::User,
-                                  [&](const model::ReadResult &r) { result = r; });
+    auto handle = c->access().read(c->address(), rows, Priority::User,
+                                   [&](const model::ReadResult &r) { result = r; });
     handle->cancel();
     ASSERT_TRUE(waitFor(result));
     EXPECT_TRUE(result->cancelled);
     EXPECT_LT(result->values.size(), rows.size());
-    EXPECT_LE(c->session->counters().attempts, 1u);
+    EXPECT_LE(c->session().counters().attempts, 1u);
 }
 
 TEST(Session, MonitorPollsTheDisplayBlockAtTheRequestedRate)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
     const auto rows = model::defaultMonitorRows(c->dictionary());
     ASSERT_EQ(rows.size(), 7u); // d1.07 .. d1.13 in one request
     EXPECT_EQ(rows.front()->name, "d1.07");
     EXPECT_EQ(rows.back()->name, "d1.13");
-    model::MonitorScheduler monitor(*c->access);
+    model::MonitorScheduler monitor(c->access());
     QSignalSpy sampled(&monitor, &model::MonitorScheduler::sampled);
-    QSignalSpy sent(c->session.get(), &model::Session::frameSent);
+    QSignalSpy sent(&c->session(), &model::Session::frameSent);
     monitor.setModule(c->address(), rows, 50);
     monitor.start();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return sampled.count() >= 40; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return sampled.count() >= 40; }, kWaitMs));
     monitor.stop();
     EXPECT_EQ(sent.count(), sampled.count()); // one request per sample
     const double rate = monitor.achievedRate(c->address());
@@ -217,18 +219,18 @@ TEST(Session, MonitorPollsTheDisplayBlockAtTheRequestedRate)
 
 TEST(Session, MonitorSamplesGoToABoundedStoreInDisplayUnits)
 {
-    auto c = connectSim("dma-pn-v51");
+    auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
     const auto rows = model::defaultMonitorRows(c->dictionary());
     model::SampleStore store(model::monitorChannels(rows, dev::Language::English), 10);
     ASSERT_EQ(store.channelCount(), 7);
     EXPECT_EQ(store.channels().front().id, QStringLiteral("d1.07"));
-    model::MonitorScheduler monitor(*c->access);
+    model::MonitorScheduler monitor(c->access());
     model::recordSamples(monitor, c->address(), store);
     QSignalSpy sampled(&monitor, &model::MonitorScheduler::sampled);
     monitor.setModule(c->address(), rows, 0);
     monitor.start();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return sampled.count() >= 25; }, kWaitMs));
+    ASSERT_TRUE(waitUntil([&] { return sampled.count() >= 25; }, kWaitMs));
     monitor.stop();
     EXPECT_EQ(store.size(), 10); // bounded: the newest 10 of 25+
     const auto last = sampled.last().front().value<model::MonitorSample>();
@@ -250,14 +252,14 @@ TEST(Session, EveryFrameInAndOutGoesToTheTelegramLog)
     model::SessionOptions options;
     options.turnaround = std::chrono::milliseconds(30);
     options.retries = 8;
-    auto c = connectSim("dma-pn-v13", 1, faults, options);
+    auto c = openSim({"dma-pn-v13", 1, {}, faults, options});
     ASSERT_TRUE(c);
     model::TelegramLog log;
-    model::TelegramRecorder recorder(*c->session, log);
-    const auto rows = model::readableRows(c->dictionary(), c->module().version(), "1");
+    model::TelegramRecorder recorder(c->session(), log);
+    const auto rows = model::readableRows(c->dictionary(), c->simModule().version(), "1");
     std::optional<model::ReadResult> result;
-    c->access->read(c->address(), rows, Priority::User,
-                    [&](const model::ReadResult &r) { result = r; });
+    c->access().read(c->address(), rows, Priority::User,
+                     [&](const model::ReadResult &r) { result = r; });
     ASSERT_TRUE(waitFor(result, 60'000));
     EXPECT_TRUE(result->complete());
     std::map<model::TelegramRecord::Status, int> byStatus;
@@ -266,19 +268,19 @@ TEST(Session, EveryFrameInAndOutGoesToTheTelegramLog)
         if (it->direction == dev::Direction::Request) {
             ++requests;
             EXPECT_EQ(it->protocol, QStringLiteral("modbus-rtu"));
-            EXPECT_EQ(it->link, c->link->description());
+            EXPECT_EQ(it->link, c->link().description());
             EXPECT_EQ(it->module, c->address());
         } else {
             ++byStatus[it->status];
         }
     }
-    EXPECT_EQ(static_cast<quint64>(requests), c->session->counters().attempts);
+    EXPECT_EQ(static_cast<quint64>(requests), c->session().counters().attempts);
     EXPECT_EQ(static_cast<quint64>(byStatus[model::TelegramRecord::Status::Timeout]),
-              c->session->counters().timeouts);
+              c->session().counters().timeouts);
     EXPECT_GT(byStatus[model::TelegramRecord::Status::Timeout], 0);
     EXPECT_GT(byStatus[model::TelegramRecord::Status::ChecksumError], 0);
     EXPECT_EQ(byStatus[model::TelegramRecord::Status::Ok],
-              static_cast<int>(c->session->counters().requests));
+              static_cast<int>(c->session().counters().requests));
 }
 
 } // namespace

@@ -1,7 +1,7 @@
-// Connection (issue #6 "Session"): one ConnectionSpec builds link, adapter, session options and
+// Connection: one ConnectionSpec builds link, adapter, session options and
 // the module addresses for the GUI and the CLI alike; opened / failed / lost arrive as signals.
 #include "model/session/connection.h"
-#include "session_fixture.h"
+#include "sim_rig.h"
 
 #include <QSignalSpy>
 
