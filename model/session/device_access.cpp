@@ -1,8 +1,9 @@
 #include "device_access.h"
 
+#include "core/version.h"
+
 #include <QTimer>
 #include <algorithm>
-#include <cctype>
 #include <map>
 
 namespace vt::model {
@@ -49,18 +50,6 @@ void merge(dev::access::Identity &into, const dev::access::Identity &from)
 QString fromLocal(const dev::LocalText &text)
 {
     return QString::fromStdString(text.en);
-}
-
-// "34.03" → "34": dictionary rows list major versions.
-std::string majorVersion(const std::string &version)
-{
-    std::string major;
-    for (char c : version) {
-        if (!std::isdigit(static_cast<unsigned char>(c)))
-            break;
-        major.push_back(c);
-    }
-    return major;
 }
 
 } // namespace
@@ -225,7 +214,7 @@ void DeviceAccess::ReadHandle::cancel()
 std::vector<const dev::ParamMeta *>
 readableRows(const dev::Dictionary &dictionary, const std::string &version, const std::string &mode)
 {
-    const std::string major = majorVersion(version);
+    const std::string major = dev::majorVersion(version);
     std::vector<const dev::ParamMeta *> rows;
     for (const dev::ParamMeta &row : dictionary.params) {
         if (row.readable() && row.appliesTo(major, mode))
