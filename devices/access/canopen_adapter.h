@@ -36,7 +36,6 @@ public:
     // One upload per readable row with an object; rows without one are left out.
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     // HCS: step 0 uploads 0x2000 (Vers, ID 0), step 1 0x2000 + 95 (E00). DSP-408: one upload of
     // 0x1000 "device type" (CiA 301: profile number in bits 15..0, 408); its value is in
     // Reply::values and Identity::text (the ED1's db_Capability has no object to upload).

@@ -43,7 +43,6 @@ public:
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
     // Command 129/131/133 by the row's type.
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     // Command 0 in a short frame to poll address `module` (0..63).
     std::vector<Transaction> planIdentify(int module) const override;
 

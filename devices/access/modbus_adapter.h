@@ -25,7 +25,6 @@ public:
 
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     std::vector<Transaction> planIdentify(int module) const override;
 
 protected:

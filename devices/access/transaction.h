@@ -35,6 +35,23 @@ struct Transaction
     bool expectsReply = true; // Raw: false for a frame sent without waiting
 };
 
+    static Transaction read(int module, std::vector<const ParamMeta *> rows)
+    {
+        return {TransactionKind::Read, module, std::move(rows), {}, 0, {}, true};
+    }
+    static Transaction write(int module, const ParamMeta &row, RawValue value)
+    {
+        return {TransactionKind::Write, module, {&row}, {std::move(value)}, 0, {}, true};
+    }
+    static Transaction identify(int module, int step = 0)
+    {
+        return {TransactionKind::Identify, module, {}, {}, step, {}, true};
+    }
+    static Transaction rawFrame(int module, Bytes bytes, bool expectsReply = true)
+    {
+        return {TransactionKind::Raw, module, {}, {}, 0, std::move(bytes), expectsReply};
+    }
+
 enum class ReplyStatus {
     Ok, // values hold one entry per row (Read), the echoed value (Write), identity (Identify)
     DeviceException, // the device refused: code + text
@@ -84,9 +101,12 @@ public:
     // left out; the caller compares.
     virtual std::vector<Transaction> planRead(int module,
                                               std::span<const ParamMeta *const> rows) const = 0;
-    // One transaction writing `value` to `row`.
-    virtual Transaction planWrite(int module, const ParamMeta &row,
-                                  const RawValue &value) const = 0;
+    // One transaction writing `value` to `row`: every protocol writes one row per exchange;
+    // encode() refuses a value or row the protocol cannot carry.
+    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const
+    {
+        return Transaction::write(module, row, value);
+    }
     // What identifies the module (HCS: Vers and E00; HART: command 0).
     virtual std::vector<Transaction> planIdentify(int module) const = 0;
 

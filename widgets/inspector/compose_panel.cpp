@@ -416,10 +416,8 @@ bool ComposePanel::send()
     if (const auto *node = dynamic_cast<const vt::dev::access::NodeImageAdapter *>(
             &m_connection->session().adapter()))
         image = node->layout().outputBytes;
-    vt::dev::access::Transaction t;
-    t.kind = vt::dev::access::TransactionKind::Raw;
-    t.module = moduleOf(m_spec);
-    t.raw = vt::dev::inspect::wireBytes(frame, image);
+    auto t = vt::dev::access::Transaction::rawFrame(moduleOf(m_spec),
+                                                    vt::dev::inspect::wireBytes(frame, image));
     m_busy = true;
     updateSend();
     m_result->setText(tr("Sent; waiting for the answer…"));
