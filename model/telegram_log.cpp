@@ -3,6 +3,7 @@
 #include "core/hex.h"
 #include "inspect/describe_any.h"
 #include "inspect/logged_frame.h"
+#include "transports/byte_span.h"
 
 #include <QIODevice>
 #include <QTextStream>
@@ -190,12 +191,6 @@ QString TelegramLog::directionText(vt::dev::Direction direction)
 
 namespace {
 
-std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
-{
-    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
-            static_cast<std::size_t>(bytes.size())};
-}
-
 QString fromStd(const std::string &s)
 {
     return QString::fromStdString(s);
@@ -205,7 +200,7 @@ QString fromStd(const std::string &s)
 
 QString TelegramLog::hexText(const QByteArray &bytes)
 {
-    return fromStd(vt::dev::toHex(asSpan(bytes)));
+    return fromStd(vt::dev::toHex(vt::link::byteSpan(bytes)));
 }
 
 QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &options)
@@ -220,8 +215,8 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
     any.family = options.family;
     any.direction = r.direction;
     any.dictionary = options.dictionary;
-    const auto described =
-        vt::dev::inspect::describeLogged(r.protocol.toStdString(), asSpan(r.bytes), any);
+    const auto described = vt::dev::inspect::describeLogged(r.protocol.toStdString(),
+                                                            vt::link::byteSpan(r.bytes), any);
     if (!described)
         return fromStd(described.error());
     if (!described->summary.en.empty())

@@ -4,6 +4,7 @@
 
 #include "app/cli/exit_codes.h"
 #include "app/sim/can_socket.h"
+#include "transports/byte_span.h"
 
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -142,8 +143,7 @@ void SimHost::send(const std::vector<std::uint8_t> &bytes)
 {
     if (m_tcp) {
         if (m_client)
-            m_client->write(reinterpret_cast<const char *>(bytes.data()),
-                            static_cast<qint64>(bytes.size()));
+            m_client->write(link::toByteArray(bytes));
         return;
     }
     if (m_fd < 0)

@@ -6,6 +6,7 @@
 #include "inspect/logged_frame.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -53,11 +54,6 @@ QStringList fieldsOf(ComposeKind kind, bool tcp)
     case ComposeKind::SdoDownload: return {"node", "index", "subindex", "width", "value"};
     }
     return {};
-}
-
-QByteArray toQt(const vt::dev::Bytes &b)
-{
-    return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
 }
 
 } // namespace
@@ -320,9 +316,10 @@ void ComposePanel::rebuild()
         o.protocol = m_frame->protocol;
         const auto d = vt::dev::describeAny(m_frame->bytes, o);
         if (d)
-            m_detail->setFrame(toQt(m_frame->bytes), *d);
+            m_detail->setFrame(vt::link::toByteArray(m_frame->bytes), *d);
         else
-            m_detail->setUndescribed(toQt(m_frame->bytes), QString::fromStdString(d.error()));
+            m_detail->setUndescribed(vt::link::toByteArray(m_frame->bytes),
+                                     QString::fromStdString(d.error()));
     } else {
         m_bytes->clear();
         m_detail->clear();

@@ -6,6 +6,7 @@
 #include "inspect/hex_input.h"
 #include "inspect/logged_frame.h"
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -140,8 +141,7 @@ void DecodePanel::decode()
                 true);
         return;
     }
-    const QByteArray bytes(reinterpret_cast<const char *>(input->bytes.data()),
-                           static_cast<qsizetype>(input->bytes.size()));
+    const QByteArray bytes = vt::link::toByteArray(input->bytes);
 
     vt::dev::AnyOptions options;
     options.family = static_cast<vt::dev::hcs::Family>(m_family->currentData().toInt());

@@ -10,6 +10,7 @@
 #include "model/session/connection.h"
 #include "model/telegram_log_model.h"
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -34,12 +35,6 @@ namespace {
 
 // The links' protocol keys (ProtocolAdapter::protocolKey()), as the log records them.
 const char *const kLogProtocols[] = {"modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen"};
-
-std::span<const std::uint8_t> asSpan(const QByteArray &b)
-{
-    return {reinterpret_cast<const std::uint8_t *>(b.constData()),
-            static_cast<std::size_t>(b.size())};
-}
 
 } // namespace
 
@@ -369,13 +364,13 @@ void InspectorView::onCurrentRowChanged()
         const vt::model::TelegramRecord *q = request ? m_log->find(*request) : nullptr;
         if (q && q->protocol == r->protocol) {
             const auto carried = vt::dev::inspect::carriedBy(
-                q->protocol.toStdString(), asSpan(q->bytes), q->direction, o.family);
+                q->protocol.toStdString(), vt::link::byteSpan(q->bytes), q->direction, o.family);
             if (!carried.ids.empty())
                 firstId = carried.ids.front();
         }
     }
-    const auto d =
-        vt::dev::inspect::describeLogged(r->protocol.toStdString(), asSpan(r->bytes), o, firstId);
+    const auto d = vt::dev::inspect::describeLogged(r->protocol.toStdString(),
+                                                    vt::link::byteSpan(r->bytes), o, firstId);
     if (d)
         m_detail->setFrame(r->bytes, *d);
     else
