@@ -209,14 +209,15 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
         return r.note.isEmpty() ? tr("no reply") : tr("no reply: %1").arg(r.note);
     // describeLogged: the node image is the gateway telegram with padding, and a CANopen record
     // is a 16-byte SocketCAN image that is unwrapped first.
-    if (!vt::dev::inspect::protocolForLogKey(r.protocol.toStdString()))
+    const auto link = r.linkProtocol();
+    if (!link)
         return tr("%n byte(s)", nullptr, static_cast<int>(r.bytes.size()));
     vt::dev::AnyOptions any;
     any.family = options.family;
     any.direction = r.direction;
     any.dictionary = options.dictionary;
-    const auto described = vt::dev::inspect::describeLogged(r.protocol.toStdString(),
-                                                            vt::link::byteSpan(r.bytes), any);
+    const auto described =
+        vt::dev::inspect::describeLogged(*link, vt::link::byteSpan(r.bytes), any);
     if (!described)
         return fromStd(described.error());
     if (!described->summary.en.empty())

@@ -31,6 +31,11 @@ std::uint32_t lowBytes(std::uint32_t value, std::size_t width)
 
 } // namespace
 
+CanopenProfile canopenProfileOf(DeviceProtocol device)
+{
+    return device == DeviceProtocol::Hcs ? CanopenProfile::Hcs : CanopenProfile::Dsp408;
+}
+
 std::optional<CanObject> canopenObjectOf(const ParamMeta &row, CanopenProfile profile)
 {
     if (row.canopen)

@@ -36,7 +36,7 @@ public:
     HartAdapter() = default;
     explicit HartAdapter(HartAdapterOptions options) : m_options(options) {}
 
-    std::string protocolKey() const override { return "hart"; }
+    LinkProtocol protocol() const override { return LinkProtocol::Hart; }
 
     // One command 128/130/132 per readable row with IND, PNU and instance of one byte each and a
     // numeric type (HART-7 manual §4.4.1); other rows are left out.

@@ -30,7 +30,7 @@ public:
     explicit NodeImageAdapter(hcs::Family family);
     NodeImageAdapter(hcs::Family family, NodeImageLayout layout);
 
-    std::string protocolKey() const override { return "node-image"; }
+    LinkProtocol protocol() const override { return LinkProtocol::NodeImage; }
 
     // Blocks of ≤ 8 consecutive IDs (fewer when the input image cannot hold 8 values).
     std::vector<Transaction> planRead(int module,

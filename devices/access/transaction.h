@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/byte_writer.h"
+#include "core/link_protocol.h"
 #include "core/local_text.h"
 #include "dict/param_meta.h"
 #include "dict/raw_value.h"
@@ -33,7 +34,6 @@ struct Transaction
                                          // (HCS: 0 = Vers (ID 0), 1 = E00 (ID 95))
     Bytes raw;                // Raw: bytes to send as they are (the inspector's composer)
     bool expectsReply = true; // Raw: false for a frame sent without waiting
-};
 
     static Transaction read(int module, std::vector<const ParamMeta *> rows)
     {
@@ -51,6 +51,7 @@ struct Transaction
     {
         return {TransactionKind::Raw, module, {}, {}, 0, std::move(bytes), expectsReply};
     }
+};
 
 enum class ReplyStatus {
     Ok, // values hold one entry per row (Read), the echoed value (Write), identity (Identify)
@@ -93,8 +94,7 @@ class ProtocolAdapter
 public:
     virtual ~ProtocolAdapter() = default;
 
-    // "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen" (describeAny's protocol keys).
-    virtual std::string protocolKey() const = 0;
+    virtual LinkProtocol protocol() const = 0;
 
     // The fewest transactions the device allows for reading `rows` of `module` (HCS: ≤ 8
     // consecutive IDs per request; gaps are not read). Rows the protocol cannot address are

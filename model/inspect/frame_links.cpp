@@ -13,8 +13,11 @@ QStringList namesOf(const TelegramRecord &r, const vt::dev::Dictionary &dictiona
                     vt::dev::hcs::Family family)
 {
     QStringList names;
-    const auto carried = vt::dev::inspect::carriedBy(
-        r.protocol.toStdString(), vt::link::byteSpan(r.bytes), r.direction, family);
+    const auto link = r.linkProtocol();
+    if (!link)
+        return names;
+    const auto carried =
+        vt::dev::inspect::carriedBy(*link, vt::link::byteSpan(r.bytes), r.direction, family);
     for (const vt::dev::ParamMeta *p : vt::dev::inspect::rowsOf(carried, dictionary))
         names << QString::fromStdString(p->name);
     return names;

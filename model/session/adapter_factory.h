@@ -1,8 +1,11 @@
 // Builds the protocol adapter a connection needs. Qt-free on purpose: the HART adapter's headers
 // use names Qt's keyword macros take (hart::DeviceVariables::slots), so only adapter_factory.cpp,
-// which includes no Qt header, sees them (as sim_hart.h does for the simulator).
+// which includes no Qt header, sees them.
 // Pure function; any thread. The caller owns the adapter (it goes to one Session).
 #pragma once
+
+#include "core/link_protocol.h"
+#include "dict/device_protocol.h"
 
 #include <memory>
 #include <string>
@@ -13,14 +16,11 @@ class ProtocolAdapter;
 
 namespace vt::model {
 
-enum class AdapterKind { ModbusRtu, ModbusTcp, NodeImage, Hart, CanopenHcs, CanopenDsp408 };
-
 // `hcsFamily`: a dictionary family or product prefix ("opat", "dma-pn-v51", "dma"); it picks the
 // HCS exception table (OPAT and DMA codes differ). Ignored by HART and CANopen DSP-408.
-std::unique_ptr<dev::access::ProtocolAdapter> makeAdapter(AdapterKind kind,
-                                                          const std::string &hcsFamily);
-
-// "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen" (ProtocolAdapter::protocolKey()).
-const char *adapterKey(AdapterKind kind);
+// `device`: on CANopen, which objects the module has (HCS 0x2000 + ID or CiA 408).
+std::unique_ptr<dev::access::ProtocolAdapter>
+makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily,
+            dev::DeviceProtocol device = dev::DeviceProtocol::Hcs);
 
 } // namespace vt::model

@@ -152,7 +152,7 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
                     0,
                     false,
                     tr("not readable over %1")
-                        .arg(QString::fromStdString(m_session.adapter().protocolKey()))}});
+                        .arg(QString::fromLatin1(dev::key(m_session.adapter().protocol())))}});
     }
     state->total = static_cast<int>(plan.size());
 

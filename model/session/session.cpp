@@ -152,7 +152,7 @@ void Session::sendAttempt()
                        p.attempts,
                        p.sent,
                        tr("The request cannot be encoded for %1")
-                           .arg(QString::fromStdString(m_adapter->protocolKey()))});
+                           .arg(QString::fromLatin1(dev::key(m_adapter->protocol())))});
         return;
     }
     ++p.attempts;

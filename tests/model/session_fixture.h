@@ -74,7 +74,7 @@ connectSim(const std::string &family, std::size_t modules = 1,
         c->link = std::move(made).value();
     }
     std::unique_ptr<dev::access::ProtocolAdapter> adapter;
-    if (c->endpoint->spec().protocol == "modbus-tcp")
+    if (c->endpoint->spec().protocol == dev::LinkProtocol::ModbusTcp)
         adapter = std::make_unique<dev::access::ModbusTcpAdapter>(dev::access::hcsFamilyOf(family));
     else
         adapter = std::make_unique<dev::access::ModbusRtuAdapter>(dev::access::hcsFamilyOf(family));

@@ -138,10 +138,10 @@ void ComposePanel::setConnection(vt::model::Connection *connection)
             for (const char *name : {"sadr", "unit", "poll", "node"})
                 m_edits[QString::fromLatin1(name)]->setText(first);
         }
-        const QString key = connection->protocolKey();
-        if (key == QLatin1String("modbus-tcp"))
+        const vt::dev::LinkProtocol protocol = connection->protocol();
+        if (protocol == vt::dev::LinkProtocol::ModbusTcp)
             setModbusTcp(true);
-        else if (key == QLatin1String("modbus-rtu"))
+        else if (protocol == vt::dev::LinkProtocol::ModbusRtu)
             setModbusTcp(false);
     }
     updateSend();
@@ -351,14 +351,13 @@ QString ComposePanel::sendBlockedReason() const
         return tr("Not connected.");
     if (m_busy)
         return tr("Waiting for the answer to the last frame.");
-    if (m_frame->linkKey.empty())
+    if (!m_frame->link)
         return tr("No link of ValveTune carries %1 frames (PROFIBUS DP needs a master card); copy "
                   "the bytes instead.")
-            .arg(QString::fromLatin1(vt::dev::protocolName(m_frame->protocol)));
-    const QString link = m_connection->protocolKey();
-    if (link != QString::fromStdString(m_frame->linkKey))
+            .arg(QString::fromLatin1(vt::dev::key(m_frame->protocol)));
+    if (m_connection->protocol() != *m_frame->link)
         return tr("The current link speaks %1; this frame needs %2.")
-            .arg(link, QString::fromStdString(m_frame->linkKey));
+            .arg(m_connection->protocolKey(), QString::fromLatin1(vt::dev::key(*m_frame->link)));
     return {};
 }
 

@@ -23,7 +23,7 @@ std::unique_ptr<Connection> openSim(const std::string &family, std::size_t modul
     spec.kind = ConnectionKind::Sim;
     spec.sim.family = family;
     spec.sim.modules = modules;
-    spec.sim.protocol = protocol;
+    spec.sim.protocol = dev::fromKey<dev::LinkProtocol>(protocol);
     auto made = Connection::create(spec, *dev::builtinDictionaries());
     if (!made.ok()) {
         ADD_FAILURE() << made.error().toStdString();

@@ -32,7 +32,7 @@ std::unique_ptr<model::Connection> openSim(const std::string &family, std::size_
     spec.kind = model::ConnectionKind::Sim;
     spec.sim.family = family;
     spec.sim.modules = modules;
-    spec.sim.protocol = protocol;
+    spec.sim.protocol = dev::fromKey<dev::LinkProtocol>(protocol);
     auto made = model::Connection::create(spec, *dev::builtinDictionaries());
     if (!made.ok()) {
         ADD_FAILURE() << made.error().toStdString();

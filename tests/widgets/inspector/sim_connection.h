@@ -30,7 +30,7 @@ struct SimRig
         spec.kind = model::ConnectionKind::Sim;
         spec.sim.family = family;
         spec.sim.modules = count;
-        spec.sim.protocol = protocol;
+        spec.sim.protocol = dev::fromKey<dev::LinkProtocol>(protocol);
         auto made = model::Connection::create(spec, *dev::builtinDictionaries());
         if (!made.ok())
             return false;
