@@ -48,30 +48,13 @@ FrameFormat frameFormatOf(LinkProtocol protocol)
     return FrameFormat::Gateway;
 }
 
-namespace {
-
-// HCS parameter names and cooked values: one definition, shared with the telegram log.
-hcs::ParameterHooks hooksFor(const Dictionary *dict)
-{
-    return inspect::parameterHooks(dict);
-}
-
-} // namespace
-
 Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes,
                                              const AnyOptions &options)
 {
-    std::optional<hcs::Profile> profile;
-    if (!options.profile.empty()) {
-        profile = hcs::profileByKey(options.profile);
-        if (!profile)
-            return std::string("unknown CMD 15 profile '" + options.profile + "'");
-    }
-    hcs::DescribeOptions node;
-    node.family = options.family;
-    node.direction = options.direction;
-    node.profile = profile;
-    node.parameters = hooksFor(options.dictionary);
+    auto gateway = inspect::gatewayOptions(options);
+    if (!gateway.ok())
+        return gateway.error();
+    const hcs::DescribeOptions &node = *gateway;
 
     switch (options.protocol) {
     case FrameFormat::Gateway: return hcs::describe(bytes, node);

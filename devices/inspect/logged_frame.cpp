@@ -33,6 +33,20 @@ hcs::ParameterHooks parameterHooks(const Dictionary *dict)
     return hooks;
 }
 
+Result<hcs::DescribeOptions, std::string> gatewayOptions(const AnyOptions &options)
+{
+    hcs::DescribeOptions node;
+    if (!options.profile.empty()) {
+        node.profile = hcs::profileByKey(options.profile);
+        if (!node.profile)
+            return std::string("unknown CMD 15 profile '" + options.profile + "'");
+    }
+    node.family = options.family;
+    node.direction = options.direction;
+    node.parameters = parameterHooks(options.dictionary);
+    return node;
+}
+
 Description describeSocketCanImage(std::span<const std::uint8_t> image)
 {
     const auto frame = canopen::fromSocketCan(image);
@@ -100,20 +114,12 @@ Result<Description, std::string> describeLogged(LinkProtocol link,
     if (link != LinkProtocol::NodeImage)
         return describeAny(bytes, options);
     // describeAny has no padding option: ask the gateway codec directly, with the same hooks.
-    std::optional<hcs::Profile> profile;
-    if (!options.profile.empty()) {
-        profile = hcs::profileByKey(options.profile);
-        if (!profile)
-            return std::string("unknown CMD 15 profile '" + options.profile + "'");
-    }
-    hcs::DescribeOptions node;
-    node.family = options.family;
-    node.direction = options.direction;
-    node.profile = profile;
-    node.allowPadding = true;
-    node.firstId = firstId;
-    node.parameters = parameterHooks(options.dictionary);
-    return hcs::describe(bytes, node);
+    auto node = gatewayOptions(options);
+    if (!node.ok())
+        return node.error();
+    node->allowPadding = true;
+    node->firstId = firstId;
+    return hcs::describe(bytes, *node);
 }
 
 } // namespace vt::dev::inspect

@@ -25,6 +25,10 @@ describeLogged(LinkProtocol link, std::span<const std::uint8_t> bytes, AnyOption
 // HCS parameter names and cooked values from a dictionary (nullptr = none), as describeAny uses.
 hcs::ParameterHooks parameterHooks(const Dictionary *dictionary);
 
+// The gateway codec's options for `options`: family, direction, the CMD 15 profile named by its
+// key and the HCS parameter hooks. Fails for an unknown profile key.
+Result<hcs::DescribeOptions, std::string> gatewayOptions(const AnyOptions &options);
+
 // The same for a SocketCAN image alone (also the decode box's 16-byte CANopen paste).
 Description describeSocketCanImage(std::span<const std::uint8_t> image);
 
