@@ -1,6 +1,7 @@
 #include "sim_link.h"
 
 #include "link_log.h"
+#include "transports/byte_span.h"
 
 #include <QTimer>
 #include <algorithm>
@@ -84,8 +85,7 @@ void SimLink::send(const QByteArray &bytes)
     m_requestWireFree = start + wireTime(bytes.size());
     // The server sees the request at once; only its answer is held back, which is all the
     // master can observe.
-    const auto *data = reinterpret_cast<const std::uint8_t *>(bytes.constData());
-    m_server->receive(std::span<const std::uint8_t>(data, static_cast<std::size_t>(bytes.size())));
+    m_server->receive(byteSpan(bytes));
     collect(m_requestWireFree);
 }
 
@@ -100,8 +100,7 @@ void SimLink::collect(DelayLine::Clock::time_point requestArrives)
     const std::vector<std::uint8_t> answer = m_server->drain();
     if (answer.empty())
         return;
-    QByteArray bytes(reinterpret_cast<const char *>(answer.data()),
-                     static_cast<qsizetype>(answer.size()));
+    QByteArray bytes = toByteArray(answer);
     const auto start = std::max(requestArrives, m_answerWireFree);
     m_answerWireFree = start + wireTime(bytes.size());
     m_toMaster.push(std::move(bytes), m_answerWireFree);

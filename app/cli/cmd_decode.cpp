@@ -49,7 +49,7 @@ int runDecode(const QStringList &argsIn, Context &ctx)
         return ctx.fail(kExitUsage, "an option is missing its value\n" + std::string(kUsage));
     if (!protocolArg)
         return ctx.fail(kExitUsage, "--protocol is required\n" + std::string(kUsage));
-    const auto protocol = dev::protocolFromName(protocolArg->toStdString());
+    const auto protocol = dev::fromKey<dev::FrameFormat>(protocolArg->toStdString());
     if (!protocol)
         return ctx.fail(kExitUsage, "unknown protocol '" + protocolArg->toStdString() + "'");
 
@@ -121,7 +121,7 @@ int runDecode(const QStringList &argsIn, Context &ctx)
         if (d.error)
             error = Json{{"offset", d.error->offset},
                          {"reason", dev::describeError(*d.error).in(lang)}};
-        ctx.out << Json{{"protocol", dev::protocolName(*protocol)},
+        ctx.out << Json{{"protocol", dev::key(*protocol)},
                         {"ok", d.ok()},
                         {"error", error},
                         {"summary", d.summary.in(lang)},

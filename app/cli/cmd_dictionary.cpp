@@ -14,16 +14,6 @@ using Json = nlohmann::ordered_json;
 
 const char kUsage[] = "usage: valvetune-cli dictionary list | show FAMILY [--lang en|de] [--json]";
 
-const char *protocolKey(dev::DeviceProtocol p)
-{
-    switch (p) {
-    case dev::DeviceProtocol::Hcs: return "hcs";
-    case dev::DeviceProtocol::Dsp408: return "dsp408";
-    case dev::DeviceProtocol::Hart: return "hart";
-    }
-    return "?";
-}
-
 Json number(double v)
 {
     if (v == static_cast<double>(static_cast<long long>(v)))
@@ -140,7 +130,7 @@ int runDictionary(const QStringList &argsIn, Context &ctx)
                                     {"title_en", d->title.en},
                                     {"title_de", d->title.de},
                                     {"vendor", d->vendor},
-                                    {"protocol", protocolKey(d->protocol)},
+                                    {"protocol", dev::key(d->protocol)},
                                     {"versions", d->versions},
                                     {"modes", d->modes},
                                     {"rows", d->params.size()}});
@@ -169,7 +159,7 @@ int runDictionary(const QStringList &argsIn, Context &ctx)
                             {"title_en", d->title.en},
                             {"title_de", d->title.de},
                             {"vendor", d->vendor},
-                            {"protocol", protocolKey(d->protocol)},
+                            {"protocol", dev::key(d->protocol)},
                             {"source", d->source},
                             {"versions", d->versions},
                             {"modes", d->modes},

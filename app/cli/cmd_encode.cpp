@@ -11,6 +11,7 @@
 #include "hcs/cmd15.h"
 #include "hcs/node_rules.h"
 #include "hcs/telegram.h"
+#include "inspect/describe_any.h"
 #include "modbus/rtu.h"
 
 #include <nlohmann/json.hpp>
@@ -56,13 +57,14 @@ struct Args
     }
 };
 
-int printFrame(Context &ctx, const char *protocol, const dev::Bytes &bytes)
+int printFrame(Context &ctx, dev::FrameFormat format, const dev::Bytes &bytes)
 {
     if (ctx.json) {
         Json list = Json::array();
         for (auto b : bytes)
             list.push_back(b);
-        ctx.out << Json{{"protocol", protocol}, {"hex", dev::toHex(bytes)}, {"bytes", list}}.dump()
+        ctx.out << Json{{"protocol", dev::key(format)}, {"hex", dev::toHex(bytes)}, {"bytes", list}}
+                       .dump()
                 << '\n';
     } else {
         ctx.out << dev::toHex(bytes) << '\n';
@@ -81,7 +83,7 @@ int runEncode(const QStringList &argsIn, Context &ctx)
     }
     if (rest.size() < 2)
         return ctx.fail(kExitUsage, kUsage);
-    const QString protocol = rest.takeFirst();
+    const auto protocol = dev::fromKey<dev::FrameFormat>(rest.takeFirst().toStdString());
     const QString kind = rest.takeFirst();
     Args a{rest, ctx, {}};
     auto finish = [&](auto build) -> int {
@@ -93,7 +95,7 @@ int runEncode(const QStringList &argsIn, Context &ctx)
         return build();
     };
 
-    if (protocol == "gateway" && (kind == "read" || kind == "write")) {
+    if (protocol == dev::FrameFormat::Gateway && (kind == "read" || kind == "write")) {
         const auto tadr = a.number("--tadr", 0, 255);
         const auto sadr = a.number("--sadr", 0, 255);
         const auto id = a.number("--id", 0, 0xFFFF);
@@ -101,7 +103,7 @@ int runEncode(const QStringList &argsIn, Context &ctx)
             const auto count = a.number("--count", 1, dev::hcs::kMaxReadCount, 1);
             return finish([&] {
                 return printFrame(
-                    ctx, "gateway",
+                    ctx, dev::FrameFormat::Gateway,
                     dev::hcs::encode(dev::hcs::ReadRequest{
                         static_cast<std::uint8_t>(*tadr), static_cast<std::uint8_t>(*sadr),
                         static_cast<std::uint16_t>(*id), static_cast<std::uint16_t>(*count)}));
@@ -110,13 +112,13 @@ int runEncode(const QStringList &argsIn, Context &ctx)
         const auto value = a.number("--value", -32768, 65535);
         return finish([&] {
             return printFrame(
-                ctx, "gateway",
+                ctx, dev::FrameFormat::Gateway,
                 dev::hcs::encode(dev::hcs::WriteRequest{
                     static_cast<std::uint8_t>(*tadr), static_cast<std::uint8_t>(*sadr),
                     static_cast<std::uint16_t>(*id), static_cast<std::uint16_t>(*value)}));
         });
     }
-    if (protocol == "gateway" && kind == "cyclic") {
+    if (protocol == dev::FrameFormat::Gateway && kind == "cyclic") {
         bool missing = false;
         const auto familyText = takeOption(a.rest, "--family", &missing);
         const auto family =
@@ -152,10 +154,10 @@ int runEncode(const QStringList &argsIn, Context &ctx)
                                 "a " + std::string(familyText->toStdString()) +
                                     " node cannot carry " + std::to_string(request.modules.size()) +
                                     " modules in CMD 15 (" + bytes.error().detail + ")");
-            return printFrame(ctx, "gateway", *bytes);
+            return printFrame(ctx, dev::FrameFormat::Gateway, *bytes);
         });
     }
-    if (protocol == "modbus-rtu" && (kind == "read" || kind == "write")) {
+    if (protocol == dev::FrameFormat::ModbusRtu && (kind == "read" || kind == "write")) {
         const auto unit = a.number("--unit", 0, 247);
         const auto id = a.number("--id", 0, 0xFFFF);
         dev::modbus::RtuRequest request;
@@ -176,7 +178,7 @@ int runEncode(const QStringList &argsIn, Context &ctx)
             const auto bytes = dev::modbus::encodeRtu(request);
             if (!bytes.ok())
                 return ctx.fail(kExitUsage, bytes.error().detail);
-            return printFrame(ctx, "modbus-rtu", *bytes);
+            return printFrame(ctx, dev::FrameFormat::ModbusRtu, *bytes);
         });
     }
     return ctx.fail(kExitUsage, kUsage);

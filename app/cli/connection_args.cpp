@@ -80,9 +80,11 @@ dev::Result<DeviceOptions, std::string> takeDeviceOptions(QStringList &args)
             return Error("--sim: " + text(parsed.error()));
         spec.sim = *parsed;
         if (protocol) {
-            if (*protocol != "modbus-rtu" && *protocol != "modbus-tcp" && *protocol != "node-image")
+            const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
+            if (p != dev::LinkProtocol::ModbusRtu && p != dev::LinkProtocol::ModbusTcp &&
+                p != dev::LinkProtocol::NodeImage)
                 return Error("--protocol with --sim takes modbus-rtu, modbus-tcp or node-image");
-            spec.sim.protocol = protocol->toStdString();
+            spec.sim.protocol = p;
         }
     } else if (port) {
         spec.kind = model::ConnectionKind::Serial;
@@ -116,12 +118,10 @@ dev::Result<DeviceOptions, std::string> takeDeviceOptions(QStringList &args)
         spec.host = endpoint->host;
         spec.port = endpoint->port;
         if (protocol) {
-            if (*protocol == "modbus-tcp")
-                spec.tcpProtocol = model::TcpProtocol::ModbusTcp;
-            else if (*protocol == "node-image")
-                spec.tcpProtocol = model::TcpProtocol::NodeImage;
-            else
+            const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
+            if (p != dev::LinkProtocol::ModbusTcp && p != dev::LinkProtocol::NodeImage)
                 return Error("--protocol with --tcp takes modbus-tcp or node-image");
+            spec.tcpProtocol = *p;
         }
     } else if (can) {
         spec.kind = model::ConnectionKind::Can;

@@ -25,7 +25,8 @@ std::map<std::string, NodeImage> &memory()
 
 std::string keyOf(const model::SimSpec &spec)
 {
-    return spec.family + ':' + std::to_string(spec.modules) + ':' + spec.protocol + ':' +
+    const std::string protocol = spec.protocol ? dev::key(*spec.protocol) : "";
+    return spec.family + ':' + std::to_string(spec.modules) + ':' + protocol + ':' +
            std::to_string(spec.mode);
 }
 

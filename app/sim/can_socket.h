@@ -4,7 +4,7 @@
 // candump text of frames for -v. Plain POSIX; the caller owns the returned descriptor.
 #pragma once
 
-#include "app/sim/sim_device.h"
+#include "app/sim/host_error.h"
 #include "core/result.h"
 
 #include <cstdint>

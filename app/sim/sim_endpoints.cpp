@@ -5,6 +5,7 @@
 #include "app/sim/can_socket.h"
 #include "canopen/can_frame.h"
 #include "sim_host.h"
+#include "transports/byte_span.h"
 
 #include <QHostAddress>
 #include <QSocketNotifier>
@@ -360,8 +361,7 @@ void SimHost::onClientReadyRead()
     if (!m_client)
         return;
     const QByteArray data = m_client->readAll();
-    received(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t *>(data.constData()),
-                                           static_cast<std::size_t>(data.size())));
+    received(link::byteSpan(data));
 }
 
 void SimHost::onClientGone()

@@ -4,6 +4,8 @@
 
 #include "app/cli/exit_codes.h"
 #include "app/sim/can_socket.h"
+#include "dict/dictionary_loader.h"
+#include "transports/byte_span.h"
 
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -38,9 +40,21 @@ SimHost::~SimHost()
 
 dev::Result<QString, HostError> SimHost::start()
 {
-    auto device = SimDevice::build(m_options, m_clock);
+    const auto &dictionaries = dev::builtinDictionaries();
+    if (!dictionaries.ok())
+        return HostError{cli::kExitDeviceError, "the built-in dictionaries do not load"};
+    dev::sim::SimDeviceSpec spec;
+    spec.family = m_options.family;
+    spec.modules = m_options.modules;
+    spec.mode = m_options.mode;
+    spec.protocol = m_options.protocol;
+    spec.canNode = m_options.node;
+    auto device = dev::sim::SimDevice::build(m_clock, *dictionaries, spec);
     if (!device.ok())
-        return device.error();
+        return HostError{device.error().code == dev::sim::SimBuildErrc::UnknownFamily
+                             ? cli::kExitDeviceError
+                             : cli::kExitUsage,
+                         device.error().message};
     m_device = std::move(device).value();
     // 3.5 characters of start + 8 data + parity + stop bits (Modbus over Serial Line §2.5.1.1);
     // the HART de-framer uses the same quiet time to give up a broken frame.
@@ -142,8 +156,7 @@ void SimHost::send(const std::vector<std::uint8_t> &bytes)
 {
     if (m_tcp) {
         if (m_client)
-            m_client->write(reinterpret_cast<const char *>(bytes.data()),
-                            static_cast<qint64>(bytes.size()));
+            m_client->write(link::toByteArray(bytes));
         return;
     }
     if (m_fd < 0)

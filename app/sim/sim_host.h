@@ -7,9 +7,10 @@
 #pragma once
 
 #include "app/sim/fault_filter.h"
-#include "app/sim/sim_device.h"
+#include "app/sim/host_error.h"
 #include "app/sim/sim_options.h"
 #include "sim/sim_clock.h"
+#include "sim/sim_device.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -82,7 +83,7 @@ private:
 
     SimOptions m_options;
     dev::sim::SimClock m_clock;
-    std::unique_ptr<SimDevice> m_device; // after the clock: destroyed before it
+    std::unique_ptr<dev::sim::SimDevice> m_device; // after the clock: destroyed before it
     FaultFilter m_faults;
 
     QElapsedTimer m_elapsed;

@@ -15,6 +15,8 @@
 namespace vt::simapp {
 namespace {
 
+using dev::LinkProtocol;
+
 // DMA Profinet manual §1.5: CMD 15 (the node image's cyclic telegram) reaches modules 1..5 only.
 constexpr std::size_t kDmaImageModules = 5;
 constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400};
@@ -66,21 +68,6 @@ bool parseTcp(const QString &text, SimOptions &o, std::string &why)
     return true;
 }
 
-std::optional<Protocol> parseProtocol(const QString &text)
-{
-    if (text == QLatin1String("modbus-rtu"))
-        return Protocol::ModbusRtu;
-    if (text == QLatin1String("modbus-tcp"))
-        return Protocol::ModbusTcp;
-    if (text == QLatin1String("node-image"))
-        return Protocol::NodeImage;
-    if (text == QLatin1String("hart"))
-        return Protocol::Hart;
-    if (text == QLatin1String("canopen"))
-        return Protocol::Canopen;
-    return std::nullopt;
-}
-
 // The device, protocol and endpoint fit together (the options are syntactically fine).
 std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOptions &o,
                                             bool protocolGiven, bool modeGiven, bool modulesGiven)
@@ -94,17 +81,17 @@ std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOpti
         if (!can)
             return o.family + " talks PROFIBUS DP (DSP-408 profile), which a PC cannot serve; "
                               "valvetune-sim serves its CiA 408 objects on --can IFACE";
-        if (protocolGiven && o.protocol != Protocol::Canopen)
+        if (protocolGiven && o.protocol != LinkProtocol::Canopen)
             return o.family + " is served over CANopen only (--protocol canopen)";
-        o.protocol = Protocol::Canopen;
+        o.protocol = LinkProtocol::Canopen;
         if (modeGiven || modulesGiven)
             return oneDevice;
         return std::nullopt;
     }
     if (dict.protocol == dev::DeviceProtocol::Hart) {
         if (!protocolGiven)
-            o.protocol = Protocol::Hart;
-        if (o.protocol != Protocol::Hart)
+            o.protocol = LinkProtocol::Hart;
+        if (o.protocol != LinkProtocol::Hart)
             return o.family + " speaks HART only (--protocol hart)";
         if (tcp || can)
             return "HART runs on a serial line: use --pty or --serial PATH";
@@ -113,13 +100,16 @@ std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOpti
         return std::nullopt;
     }
     if (!protocolGiven)
-        o.protocol = can ? Protocol::Canopen : tcp ? Protocol::ModbusTcp : Protocol::ModbusRtu;
-    if (can && o.protocol != Protocol::Canopen)
-        return std::string(protocolName(o.protocol)) +
+        o.protocol = can   ? LinkProtocol::Canopen
+                     : tcp ? LinkProtocol::ModbusTcp
+                           : LinkProtocol::ModbusRtu;
+    if (can && o.protocol != LinkProtocol::Canopen)
+        return std::string(dev::key(o.protocol)) +
                " does not run on a CAN bus; --can and --can-fd serve --protocol canopen";
     switch (o.protocol) {
-    case Protocol::Hart: return o.family + " is an HCS device; HART is the Wandfluh SD7's protocol";
-    case Protocol::Canopen:
+    case LinkProtocol::Hart:
+        return o.family + " is an HCS device; HART is the Wandfluh SD7's protocol";
+    case LinkProtocol::Canopen:
         if (!can)
             return "canopen runs on a CAN bus: use --can IFACE (or --can-fd N)";
         // One SDO server answers for one node id; a node of several modules would need a
@@ -128,36 +118,24 @@ std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOpti
             return "canopen serves one module per node id (--node N), not --modules " +
                    std::to_string(o.modules) + "; start one valvetune-sim per module";
         break;
-    case Protocol::ModbusRtu:
+    case LinkProtocol::ModbusRtu:
         if (tcp)
             return "modbus-rtu runs on --pty or --serial; over TCP use --protocol modbus-tcp";
         break;
-    case Protocol::ModbusTcp:
-    case Protocol::NodeImage:
+    case LinkProtocol::ModbusTcp:
+    case LinkProtocol::NodeImage:
         if (!tcp)
-            return std::string(protocolName(o.protocol)) + " needs --tcp HOST:PORT";
+            return std::string(dev::key(o.protocol)) + " needs --tcp HOST:PORT";
         break;
     }
-    if (o.protocol == Protocol::NodeImage && dev::sim::hcsFamilyOf(dict) == dev::hcs::Family::Dma &&
-        o.modules > kDmaImageModules)
+    if (o.protocol == LinkProtocol::NodeImage &&
+        dev::sim::hcsFamilyOf(dict) == dev::hcs::Family::Dma && o.modules > kDmaImageModules)
         return "node-image: CMD 15 reaches DMA modules 1..5 only (DMA Profinet manual §1.5), not " +
                std::to_string(o.modules) + "; use --protocol modbus-tcp for more";
     return std::nullopt;
 }
 
 } // namespace
-
-const char *protocolName(Protocol protocol)
-{
-    switch (protocol) {
-    case Protocol::ModbusRtu: return "modbus-rtu";
-    case Protocol::ModbusTcp: return "modbus-tcp";
-    case Protocol::NodeImage: return "node-image";
-    case Protocol::Hart: return "hart";
-    case Protocol::Canopen: return "canopen";
-    }
-    return "?";
-}
 
 dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &arguments)
 {
@@ -283,7 +261,7 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
     const bool protocolGiven = p.isSet(protocol);
     if (protocolGiven) {
         const QString name = p.value(protocol);
-        const auto parsed = parseProtocol(name);
+        const auto parsed = dev::fromKey<dev::LinkProtocol>(name.toStdString());
         if (!parsed)
             return usage("unknown protocol '" + name.toStdString() +
                          "' (modbus-rtu, modbus-tcp, node-image, hart, canopen)");

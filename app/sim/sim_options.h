@@ -4,6 +4,7 @@
 // A plain value; the parser needs a QCoreApplication for QCommandLineParser's help text only.
 #pragma once
 
+#include "core/link_protocol.h"
 #include "core/result.h"
 #include "transports/fault_spec.h"
 #include "transports/serial_settings.h"
@@ -17,7 +18,6 @@
 namespace vt::simapp {
 
 enum class Endpoint { Pty, Serial, Tcp, Can, CanFd };
-enum class Protocol { ModbusRtu, ModbusTcp, NodeImage, Hart, Canopen };
 
 struct SimOptions
 {
@@ -31,14 +31,14 @@ struct SimOptions
     std::string canInterface;                      // --can: a SocketCAN interface ("can0", "vcan0")
     int canFd = -1;        // --can-fd: an open descriptor carrying struct can_frame datagrams
     std::uint8_t node = 1; // --node: CANopen node id 1..127 (SDO 0x600 + node / 0x580 + node)
-    Protocol protocol = Protocol::ModbusRtu;
+    dev::LinkProtocol protocol = dev::LinkProtocol::ModbusRtu;
     int baud = 19200; // serial line (on a pty it only sets the 3.5-character gap)
     link::Parity parity = link::Parity::Even; // serial line; a pty takes any parity
     link::FaultSpec fault;                    // applied to the device's answers (FaultSpec::rx)
     std::uint32_t seed = link::FaultSpec::kDefaultSeed; // --seed, else the spec's seed
     bool verbose = false;
 
-    bool isHart() const { return protocol == Protocol::Hart; }
+    bool isHart() const { return protocol == dev::LinkProtocol::Hart; }
     bool isCan() const { return endpoint == Endpoint::Can || endpoint == Endpoint::CanFd; }
 };
 
@@ -52,7 +52,5 @@ struct OptionsExit
 
 // `arguments` as QCoreApplication::arguments() (program name first).
 dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &arguments);
-
-const char *protocolName(Protocol protocol);
 
 } // namespace vt::simapp

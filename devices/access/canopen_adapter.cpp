@@ -31,6 +31,11 @@ std::uint32_t lowBytes(std::uint32_t value, std::size_t width)
 
 } // namespace
 
+CanopenProfile canopenProfileOf(DeviceProtocol device)
+{
+    return device == DeviceProtocol::Hcs ? CanopenProfile::Hcs : CanopenProfile::Dsp408;
+}
+
 std::optional<CanObject> canopenObjectOf(const ParamMeta &row, CanopenProfile profile)
 {
     if (row.canopen)
@@ -51,22 +56,16 @@ std::vector<Transaction> CanopenAdapter::planRead(int module,
             continue;
         if (m_profile == CanopenProfile::Dsp408 && wireBytes(row->type) == 0)
             continue; // text: no expedited transfer carries it
-        plan.push_back(Transaction{TransactionKind::Read, module, {row}, {}, 0, {}, true});
+        plan.push_back(Transaction::read(module, {row}));
     }
     return plan;
-}
-
-Transaction CanopenAdapter::planWrite(int module, const ParamMeta &row, const RawValue &value) const
-{
-    return Transaction{TransactionKind::Write, module, {&row}, {value}, 0, {}, true};
 }
 
 std::vector<Transaction> CanopenAdapter::planIdentify(int module) const
 {
     if (m_profile == CanopenProfile::Dsp408)
-        return {Transaction{TransactionKind::Identify, module, {}, {}, 0, {}, true}};
-    return {Transaction{TransactionKind::Identify, module, {}, {}, 0, {}, true},
-            Transaction{TransactionKind::Identify, module, {}, {}, 1, {}, true}};
+        return {Transaction::identify(module)};
+    return planHcsIdentify(module);
 }
 
 std::optional<CanopenAdapter::Access> CanopenAdapter::accessOf(const Transaction &t) const

@@ -7,6 +7,7 @@
 
 #include "access/transaction.h"
 #include "canopen/sdo.h"
+#include "dict/device_protocol.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +19,9 @@ enum class CanopenProfile {
     Hcs,    // manufacturer objects 0x2000 + ID, sub 0 (or the row's canopen object), 16-bit words
     Dsp408, // the rows' canopen objects (CiA 408: 0x6040, 0x6041, …), the width of the row's type
 };
+
+// The objects a device family has: HCS 0x2000 + ID, the others their CiA 408 objects.
+CanopenProfile canopenProfileOf(DeviceProtocol device);
 
 // The object of a row: the dictionary's `canopen` field; HCS rows without one: 0x2000 + ID, sub 0.
 // nullopt when the row has neither (such rows cannot be read or written over CANopen).
@@ -31,12 +35,11 @@ public:
 
     explicit CanopenAdapter(CanopenProfile profile) : m_profile(profile) {}
 
-    std::string protocolKey() const override { return "canopen"; }
+    LinkProtocol protocol() const override { return LinkProtocol::Canopen; }
 
     // One upload per readable row with an object; rows without one are left out.
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     // HCS: step 0 uploads 0x2000 (Vers, ID 0), step 1 0x2000 + 95 (E00). DSP-408: one upload of
     // 0x1000 "device type" (CiA 301: profile number in bits 15..0, 408); its value is in
     // Reply::values and Identity::text (the ED1's db_Capability has no object to upload).

@@ -96,19 +96,14 @@ std::vector<Transaction> HartAdapter::planRead(int module,
     std::vector<Transaction> plan;
     for (const ParamMeta *row : rows) {
         if (row && row->readable() && paramRefOf(*row) && hartValueType(*row))
-            plan.push_back(Transaction{TransactionKind::Read, module, {row}, {}, 0, {}, true});
+            plan.push_back(Transaction::read(module, {row}));
     }
     return plan;
 }
 
-Transaction HartAdapter::planWrite(int module, const ParamMeta &row, const RawValue &value) const
-{
-    return Transaction{TransactionKind::Write, module, {&row}, {value}, 0, {}, true};
-}
-
 std::vector<Transaction> HartAdapter::planIdentify(int module) const
 {
-    return {Transaction{TransactionKind::Identify, module, {}, {}, 0, {}, true}};
+    return {Transaction::identify(module)};
 }
 
 std::optional<hart::Address> HartAdapter::longAddressOf(int module) const

@@ -36,14 +36,13 @@ public:
     HartAdapter() = default;
     explicit HartAdapter(HartAdapterOptions options) : m_options(options) {}
 
-    std::string protocolKey() const override { return "hart"; }
+    LinkProtocol protocol() const override { return LinkProtocol::Hart; }
 
     // One command 128/130/132 per readable row with IND, PNU and instance of one byte each and a
     // numeric type (HART-7 manual §4.4.1); other rows are left out.
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
     // Command 129/131/133 by the row's type.
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     // Command 0 in a short frame to poll address `module` (0..63).
     std::vector<Transaction> planIdentify(int module) const override;
 

@@ -37,6 +37,20 @@ std::vector<HcsBlock> planHcsBlocks(std::span<const ParamMeta *const> rows,
     return blocks;
 }
 
+std::vector<Transaction> planHcsReads(int module, std::span<const ParamMeta *const> rows,
+                                      std::uint16_t maxPerBlock)
+{
+    std::vector<Transaction> plan;
+    for (HcsBlock &block : planHcsBlocks(rows, maxPerBlock))
+        plan.push_back(Transaction::read(module, std::move(block.rows)));
+    return plan;
+}
+
+std::vector<Transaction> planHcsIdentify(int module)
+{
+    return {Transaction::identify(module, 0), Transaction::identify(module, 1)};
+}
+
 double registerToRaw(const ParamMeta &row, std::uint16_t word)
 {
     switch (row.type) {

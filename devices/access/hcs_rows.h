@@ -1,8 +1,9 @@
 // What every HCS adapter (Modbus RTU, Modbus TCP, node image, CANopen 0x2000 + ID) shares: the
-// read plan in blocks of consecutive IDs, and the 16-bit register <-> raw value conversion by the
-// row's type. HCS parameters are 16-bit words addressed by ID (OPAT manual §2.1).
+// read plan in blocks of consecutive IDs, the identify plan, and the 16-bit register <-> raw value
+// conversion by the row's type. HCS parameters are 16-bit words addressed by ID (OPAT manual §2.1).
 #pragma once
 
+#include "access/transaction.h"
 #include "dict/param_meta.h"
 #include "dict/raw_value.h"
 #include "hcs/types.h"
@@ -26,6 +27,11 @@ struct HcsBlock
 // once"). A gap in the IDs (an inactive or unknown row) starts a new block: it is never read.
 std::vector<HcsBlock> planHcsBlocks(std::span<const ParamMeta *const> rows,
                                     std::uint16_t maxPerBlock = hcs::kMaxReadCount);
+// One read transaction per block of planHcsBlocks.
+std::vector<Transaction> planHcsReads(int module, std::span<const ParamMeta *const> rows,
+                                      std::uint16_t maxPerBlock = hcs::kMaxReadCount);
+// An HCS module identifies itself by two reads: step 0 Vers (ID 0), step 1 E00.
+std::vector<Transaction> planHcsIdentify(int module);
 
 // The register as the row's type reads it (int16 and int8 sign-extended).
 double registerToRaw(const ParamMeta &row, std::uint16_t word);

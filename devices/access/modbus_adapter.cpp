@@ -23,23 +23,12 @@ std::uint8_t ModbusPduAdapter::unitOf(const Transaction &t) const
 std::vector<Transaction> ModbusPduAdapter::planRead(int module,
                                                     std::span<const ParamMeta *const> rows) const
 {
-    std::vector<Transaction> plan;
-    for (HcsBlock &block : planHcsBlocks(rows))
-        plan.push_back(
-            Transaction{TransactionKind::Read, module, std::move(block.rows), {}, 0, {}, true});
-    return plan;
-}
-
-Transaction ModbusPduAdapter::planWrite(int module, const ParamMeta &row,
-                                        const RawValue &value) const
-{
-    return Transaction{TransactionKind::Write, module, {&row}, {value}, 0, {}, true};
+    return planHcsReads(module, rows);
 }
 
 std::vector<Transaction> ModbusPduAdapter::planIdentify(int module) const
 {
-    return {Transaction{TransactionKind::Identify, module, {}, {}, 0, {}, true},
-            Transaction{TransactionKind::Identify, module, {}, {}, 1, {}, true}};
+    return planHcsIdentify(module);
 }
 
 std::optional<modbus::RequestPdu> ModbusPduAdapter::requestPdu(const Transaction &t) const

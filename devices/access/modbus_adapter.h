@@ -25,7 +25,6 @@ public:
 
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     std::vector<Transaction> planIdentify(int module) const override;
 
 protected:
@@ -58,7 +57,7 @@ public:
     {
     }
 
-    std::string protocolKey() const override { return "modbus-rtu"; }
+    LinkProtocol protocol() const override { return LinkProtocol::ModbusRtu; }
     Bytes encode(const Transaction &t) override;
     std::size_t expectedReplyBytes(const Transaction &t) const override;
     std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) override;
@@ -73,7 +72,7 @@ class ModbusTcpAdapter : public ModbusPduAdapter
 public:
     using ModbusPduAdapter::ModbusPduAdapter;
 
-    std::string protocolKey() const override { return "modbus-tcp"; }
+    LinkProtocol protocol() const override { return LinkProtocol::ModbusTcp; }
     // Each call numbers a new transaction (Implementation Guide §4.1.2): a late answer to an
     // earlier attempt is recognised by its number and ignored.
     Bytes encode(const Transaction &t) override;

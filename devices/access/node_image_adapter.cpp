@@ -104,25 +104,14 @@ std::vector<Transaction> NodeImageAdapter::planRead(int module,
     const std::size_t fit = (m_layout.inputBytes - 4) / 2;
     const auto perBlock =
         static_cast<std::uint16_t>(std::min<std::size_t>(hcs::kMaxReadCount, fit));
-    std::vector<Transaction> plan;
     if (perBlock == 0)
-        return plan;
-    for (HcsBlock &block : planHcsBlocks(rows, perBlock))
-        plan.push_back(
-            Transaction{TransactionKind::Read, module, std::move(block.rows), {}, 0, {}, true});
-    return plan;
-}
-
-Transaction NodeImageAdapter::planWrite(int module, const ParamMeta &row,
-                                        const RawValue &value) const
-{
-    return Transaction{TransactionKind::Write, module, {&row}, {value}, 0, {}, true};
+        return {};
+    return planHcsReads(module, rows, perBlock);
 }
 
 std::vector<Transaction> NodeImageAdapter::planIdentify(int module) const
 {
-    return {Transaction{TransactionKind::Identify, module, {}, {}, 0, {}, true},
-            Transaction{TransactionKind::Identify, module, {}, {}, 1, {}, true}};
+    return planHcsIdentify(module);
 }
 
 Bytes NodeImageAdapter::encode(const Transaction &t)

@@ -30,12 +30,11 @@ public:
     explicit NodeImageAdapter(hcs::Family family);
     NodeImageAdapter(hcs::Family family, NodeImageLayout layout);
 
-    std::string protocolKey() const override { return "node-image"; }
+    LinkProtocol protocol() const override { return LinkProtocol::NodeImage; }
 
     // Blocks of ≤ 8 consecutive IDs (fewer when the input image cannot hold 8 values).
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
-    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const override;
     // Step 0: CMD 3 of Vers (ID 0); step 1: CMD 3 of E00 (ID 95).
     std::vector<Transaction> planIdentify(int module) const override;
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/byte_writer.h"
+#include "core/link_protocol.h"
 #include "core/local_text.h"
 #include "dict/param_meta.h"
 #include "dict/raw_value.h"
@@ -33,6 +34,23 @@ struct Transaction
                                          // (HCS: 0 = Vers (ID 0), 1 = E00 (ID 95))
     Bytes raw;                // Raw: bytes to send as they are (the inspector's composer)
     bool expectsReply = true; // Raw: false for a frame sent without waiting
+
+    static Transaction read(int module, std::vector<const ParamMeta *> rows)
+    {
+        return {TransactionKind::Read, module, std::move(rows), {}, 0, {}, true};
+    }
+    static Transaction write(int module, const ParamMeta &row, RawValue value)
+    {
+        return {TransactionKind::Write, module, {&row}, {std::move(value)}, 0, {}, true};
+    }
+    static Transaction identify(int module, int step = 0)
+    {
+        return {TransactionKind::Identify, module, {}, {}, step, {}, true};
+    }
+    static Transaction rawFrame(int module, Bytes bytes, bool expectsReply = true)
+    {
+        return {TransactionKind::Raw, module, {}, {}, 0, std::move(bytes), expectsReply};
+    }
 };
 
 enum class ReplyStatus {
@@ -76,17 +94,19 @@ class ProtocolAdapter
 public:
     virtual ~ProtocolAdapter() = default;
 
-    // "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen" (describeAny's protocol keys).
-    virtual std::string protocolKey() const = 0;
+    virtual LinkProtocol protocol() const = 0;
 
     // The fewest transactions the device allows for reading `rows` of `module` (HCS: ≤ 8
     // consecutive IDs per request; gaps are not read). Rows the protocol cannot address are
     // left out; the caller compares.
     virtual std::vector<Transaction> planRead(int module,
                                               std::span<const ParamMeta *const> rows) const = 0;
-    // One transaction writing `value` to `row`.
-    virtual Transaction planWrite(int module, const ParamMeta &row,
-                                  const RawValue &value) const = 0;
+    // One transaction writing `value` to `row`: every protocol writes one row per exchange;
+    // encode() refuses a value or row the protocol cannot carry.
+    Transaction planWrite(int module, const ParamMeta &row, const RawValue &value) const
+    {
+        return Transaction::write(module, row, value);
+    }
     // What identifies the module (HCS: Vers and E00; HART: command 0).
     virtual std::vector<Transaction> planIdentify(int module) const = 0;
 

@@ -39,17 +39,6 @@ DecodeError bad(DecodeErrc code, std::size_t offset, std::string detail)
     return DecodeError{code, offset, 0, std::move(detail)};
 }
 
-int nibble(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return -1;
-}
-
 } // namespace
 
 CanFrame makeCanFrame(std::uint32_t id, std::span<const std::uint8_t> payload)
@@ -119,7 +108,7 @@ Result<CanFrame, DecodeError> parseCandump(std::string_view text)
         return bad(DecodeErrc::BadValue, 0, "expected <id>#<data>");
     CanFrame f;
     for (char c : text.substr(0, hash)) {
-        const int n = nibble(c);
+        const int n = hexDigitValue(c);
         if (n < 0)
             return bad(DecodeErrc::BadValue, 0, "id is not hex");
         f.id = f.id << 4 | static_cast<std::uint32_t>(n);

@@ -5,17 +5,6 @@
 namespace vt::dev {
 namespace {
 
-int nibble(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return -1;
-}
-
 bool isSeparator(char c)
 {
     return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == ':' || c == '-' ||
@@ -39,7 +28,7 @@ Result<Bytes, HexError> parseHex(std::string_view text)
             i += 2;
         const std::size_t digits = i;
         while (i < text.size() && !isSeparator(text[i])) {
-            if (nibble(text[i]) < 0)
+            if (hexDigitValue(text[i]) < 0)
                 return HexError{i, std::string("not a hex digit: '") + text[i] + "'"};
             ++i;
         }
@@ -49,11 +38,12 @@ Result<Bytes, HexError> parseHex(std::string_view text)
         if (n % 2 != 0) {
             if (n != 1)
                 return HexError{start, "odd number of hex digits"};
-            out.push_back(static_cast<std::uint8_t>(nibble(text[digits])));
+            out.push_back(static_cast<std::uint8_t>(hexDigitValue(text[digits])));
             continue;
         }
         for (std::size_t k = digits; k < i; k += 2)
-            out.push_back(static_cast<std::uint8_t>(nibble(text[k]) << 4 | nibble(text[k + 1])));
+            out.push_back(static_cast<std::uint8_t>(hexDigitValue(text[k]) << 4 |
+                                                    hexDigitValue(text[k + 1])));
     }
     return out;
 }
@@ -81,6 +71,17 @@ std::string hexWord(std::uint16_t w)
 {
     const std::uint8_t b[2] = {static_cast<std::uint8_t>(w >> 8), static_cast<std::uint8_t>(w)};
     return "0x" + toHex(b, '\0');
+}
+
+int hexDigitValue(char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F')
+        return c - 'A' + 10;
+    return -1;
 }
 
 } // namespace vt::dev

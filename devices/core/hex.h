@@ -22,5 +22,6 @@ Result<Bytes, HexError> parseHex(std::string_view text);
 std::string toHex(std::span<const std::uint8_t> bytes, char separator = ' ');
 std::string hexByte(std::uint8_t b);  // "0x23"
 std::string hexWord(std::uint16_t w); // "0x03E8"
+int hexDigitValue(char c);            // '0'..'9', 'a'..'f', 'A'..'F' → 0..15; -1 otherwise
 
 } // namespace vt::dev

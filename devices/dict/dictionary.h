@@ -3,6 +3,7 @@
 // shared read-only afterwards (any thread may read).
 #pragma once
 
+#include "dict/device_protocol.h"
 #include "param_meta.h"
 
 #include <map>
@@ -11,8 +12,6 @@
 #include <vector>
 
 namespace vt::dev {
-
-enum class DeviceProtocol { Hcs, Dsp408, Hart };
 
 struct Dictionary
 {

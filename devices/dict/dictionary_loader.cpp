@@ -186,12 +186,8 @@ private:
             }
         }
         const std::string protocol = r.header.value("protocol", std::string());
-        if (protocol == "hcs")
-            dict->protocol = DeviceProtocol::Hcs;
-        else if (protocol == "dsp408")
-            dict->protocol = DeviceProtocol::Dsp408;
-        else if (protocol == "hart")
-            dict->protocol = DeviceProtocol::Hart;
+        if (const auto known = fromKey<DeviceProtocol>(protocol))
+            dict->protocol = *known;
         else
             error(file, {}, "unknown \"protocol\" '" + protocol + "'");
 

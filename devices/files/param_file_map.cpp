@@ -1,5 +1,6 @@
 #include "param_file_map.h"
 
+#include "core/version.h"
 #include "dict/cooking.h"
 
 #include <algorithm>
@@ -8,15 +9,6 @@
 
 namespace vt::dev::files {
 namespace {
-
-// "32.10" -> "32", "22" -> "22", "SD7 device type 58352" -> "" (dictionaries list majors).
-std::string versionMajor(const std::string &version)
-{
-    std::size_t n = 0;
-    while (n < version.size() && version[n] >= '0' && version[n] <= '9')
-        ++n;
-    return version.substr(0, n);
-}
 
 bool contains(const std::vector<std::string> &list, const std::string &v)
 {
@@ -112,7 +104,7 @@ void moduleNotes(MapReport &report, const ModuleRecord &record, const Dictionary
                                 "die Datei wurde für " + record.family +
                                     " geschrieben; ihre Werte werden auf " + dict.family +
                                     " abgebildet"});
-    if (explicitTarget && (versionMajor(record.version) != major || record.mode != t.mode))
+    if (explicitTarget && (majorVersion(record.version) != major || record.mode != t.mode))
         report.notes.push_back(
             {"the file was saved from version " + record.version + " in mode " + record.mode +
                  "; this module runs " + t.version + " in mode " + t.mode,
@@ -153,7 +145,7 @@ MapReport mapModule(const ModuleRecord &record, const Dictionary &dict,
     MapReport report;
     report.family = dict.family;
     const MapTarget t = target.value_or(MapTarget{record.version, record.mode});
-    const std::string major = versionMajor(t.version);
+    const std::string major = majorVersion(t.version);
     moduleNotes(report, record, dict, t, major, target.has_value());
 
     // Names first, so that an address fallback never takes a row another file row names.

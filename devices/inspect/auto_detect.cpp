@@ -14,7 +14,7 @@ namespace {
 constexpr Direction kDirections[] = {Direction::Request, Direction::Response};
 constexpr hcs::Family kFamilies[] = {hcs::Family::Dma, hcs::Family::Opat};
 
-bool decodes(std::span<const std::uint8_t> bytes, Protocol protocol, Direction direction,
+bool decodes(std::span<const std::uint8_t> bytes, FrameFormat protocol, Direction direction,
              hcs::Family family, bool padded)
 {
     AnyOptions o;
@@ -22,7 +22,8 @@ bool decodes(std::span<const std::uint8_t> bytes, Protocol protocol, Direction d
     o.direction = direction;
     o.family = family;
     // A PLC's process image is the gateway telegram plus padding (DMA Profinet manual §4.5.4).
-    const auto d = padded ? describeLogged("node-image", bytes, o) : describeAny(bytes, o);
+    const auto d =
+        padded ? describeLogged(LinkProtocol::NodeImage, bytes, o) : describeAny(bytes, o);
     return d.ok() && d->ok();
 }
 
@@ -47,17 +48,18 @@ void tryDirections(Candidate &c, std::span<const std::uint8_t> bytes, bool famil
 }
 
 // Tries both directions (and both HCS families where they matter); nullopt when nothing decodes.
-std::optional<Candidate> tryProtocol(std::span<const std::uint8_t> bytes, Protocol protocol,
+std::optional<Candidate> tryProtocol(std::span<const std::uint8_t> bytes, FrameFormat protocol,
                                      bool strong)
 {
     Candidate c;
     c.protocol = protocol;
     c.strong = strong;
-    const bool familyMatters = protocol == Protocol::Gateway || protocol == Protocol::Profidrive;
+    const bool familyMatters =
+        protocol == FrameFormat::Gateway || protocol == FrameFormat::Profidrive;
     tryDirections(c, bytes, familyMatters, false);
     // Not a bare telegram: a process image with padding? Only then, so that padding never hides
     // the SNUM rule of the family the telegram fits exactly.
-    if (c.directions.empty() && protocol == Protocol::Gateway)
+    if (c.directions.empty() && protocol == FrameFormat::Gateway)
         tryDirections(c, bytes, true, true);
     if (c.directions.empty())
         return std::nullopt;
@@ -86,10 +88,10 @@ Detection detectProtocol(std::span<const std::uint8_t> bytes, std::optional<std:
         return out;
     if (cobId) {
         Candidate c;
-        c.protocol = Protocol::Canopen;
+        c.protocol = FrameFormat::Canopen;
         c.strong = true;
         AnyOptions o;
-        o.protocol = Protocol::Canopen;
+        o.protocol = FrameFormat::Canopen;
         o.cobId = cobId;
         const auto d = describeAny(bytes, o);
         if (d.ok() && d->ok()) {
@@ -107,32 +109,32 @@ Detection detectProtocol(std::span<const std::uint8_t> bytes, std::optional<std:
     };
     // Modbus over Serial Line §2.5.1.2: CRC-16, low byte first.
     if (bytes.size() >= 4 && modbus::rtuCrcOk(bytes))
-        add(strong, tryProtocol(bytes, Protocol::ModbusRtu, true));
+        add(strong, tryProtocol(bytes, FrameFormat::ModbusRtu, true));
     if (bytes.size() >= modbus::kMbapSize + 1 && hasMbap(bytes))
-        add(strong, tryProtocol(bytes, Protocol::ModbusTcp, true));
+        add(strong, tryProtocol(bytes, FrameFormat::ModbusTcp, true));
     if (hasHartPreambles(bytes))
-        add(strong, tryProtocol(bytes, Protocol::Hart, true));
+        add(strong, tryProtocol(bytes, FrameFormat::Hart, true));
     if (bytes.size() == canopen::kSocketCanFrameSize) {
         const Description d = describeSocketCanImage(bytes);
         if (d.ok()) {
             Candidate c;
-            c.protocol = Protocol::Canopen;
+            c.protocol = FrameFormat::Canopen;
             c.strong = true;
             c.directions = {Direction::Request, Direction::Response};
             strong.push_back(c);
         }
     }
-    add(weak, tryProtocol(bytes, Protocol::Gateway, false));
+    add(weak, tryProtocol(bytes, FrameFormat::Gateway, false));
     // OPAT manual §5.6: telegram 1 (4 bytes) followed by a CMD 15 telegram; four bytes alone
     // are any four bytes.
     if (bytes.size() >= 8)
-        add(weak, tryProtocol(bytes, Protocol::Profidrive, false));
+        add(weak, tryProtocol(bytes, FrameFormat::Profidrive, false));
     if (bytes.size() == 8) {
-        add(weak, tryProtocol(bytes, Protocol::Pkw, false));
-        add(weak, tryProtocol(bytes, Protocol::Canopen, false));
+        add(weak, tryProtocol(bytes, FrameFormat::Pkw, false));
+        add(weak, tryProtocol(bytes, FrameFormat::Canopen, false));
     }
     if (bytes.size() == 14) // ED1/SD1 manual §4.5.1 telegram type 1: PKW + PZD
-        add(weak, tryProtocol(bytes, Protocol::Pzd, false));
+        add(weak, tryProtocol(bytes, FrameFormat::Pzd, false));
 
     out.candidates = strong;
     out.candidates.insert(out.candidates.end(), weak.begin(), weak.end());

@@ -17,7 +17,7 @@ namespace vt::dev::inspect {
 
 struct Candidate
 {
-    Protocol protocol = Protocol::Gateway;
+    FrameFormat protocol = FrameFormat::Gateway;
     bool strong = false;               // a checksum / header confirmed it
     std::vector<Direction> directions; // the directions in which the bytes decode
     std::vector<hcs::Family> families; // gateway / Modbus / PROFIdrive: families that decode

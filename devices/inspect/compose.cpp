@@ -63,8 +63,8 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     switch (s.kind) {
     case ComposeKind::GatewayRead:
     case ComposeKind::GatewayWrite: {
-        out.protocol = Protocol::Gateway;
-        out.linkKey = "node-image";
+        out.protocol = FrameFormat::Gateway;
+        out.link = LinkProtocol::NodeImage;
         c.in("TADR", s.tadr, 0, 255);
         c.in("SADR", s.sadr, 0, 255);
         c.in("ID", s.id, 0, 0xFFFF);
@@ -85,8 +85,8 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
         return out;
     }
     case ComposeKind::GatewayCyclic: {
-        out.protocol = Protocol::Gateway;
-        out.linkKey = "node-image";
+        out.protocol = FrameFormat::Gateway;
+        out.link = LinkProtocol::NodeImage;
         out.writes = true; // set values move the valve
         if (!c.in("TADR", s.tadr, 0, 255))
             return c.problem;
@@ -99,8 +99,8 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     }
     case ComposeKind::ModbusRead:
     case ComposeKind::ModbusWrite: {
-        out.protocol = s.modbusTcp ? Protocol::ModbusTcp : Protocol::ModbusRtu;
-        out.linkKey = s.modbusTcp ? "modbus-tcp" : "modbus-rtu";
+        out.protocol = s.modbusTcp ? FrameFormat::ModbusTcp : FrameFormat::ModbusRtu;
+        out.link = s.modbusTcp ? LinkProtocol::ModbusTcp : LinkProtocol::ModbusRtu;
         c.in("unit", s.unit, 0, 255);
         c.in("register", s.id, 0, 0xFFFF);
         c.in("transaction", s.transaction, 0, 0xFFFF);
@@ -125,7 +125,7 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     }
     case ComposeKind::PkwRead:
     case ComposeKind::PkwWrite: {
-        out.protocol = Protocol::Pkw;
+        out.protocol = FrameFormat::Pkw;
         c.in("IND", s.ind, 0, 255);
         c.in("PNU", s.pnu, 0, dsp408::kMaxPnu);
         dsp408::Pkw pkw = dsp408::readRequest(u8(s.ind), u16(s.pnu));
@@ -149,8 +149,8 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     case ComposeKind::HartCommand:
     case ComposeKind::HartParamRead:
     case ComposeKind::HartParamWrite: {
-        out.protocol = Protocol::Hart;
-        out.linkKey = "hart";
+        out.protocol = FrameFormat::Hart;
+        out.link = LinkProtocol::Hart;
         hart::Address address;
         if (s.hartDeviceType) {
             // longAddress() drops the two top bits of the expanded device type (HART-7 manual
@@ -206,8 +206,8 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     }
     case ComposeKind::SdoUpload:
     case ComposeKind::SdoDownload: {
-        out.protocol = Protocol::Canopen;
-        out.linkKey = "canopen";
+        out.protocol = FrameFormat::Canopen;
+        out.link = LinkProtocol::Canopen;
         c.in("node", s.node, 1, 127); // CiA 301 §7.3.3: node ids 1..127
         c.in("index", s.index, 0, 0xFFFF);
         c.in("sub-index", s.subindex, 0, 255);
@@ -238,12 +238,12 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
 
 Bytes wireBytes(const ComposedFrame &frame, std::size_t imageBytes)
 {
-    if (frame.protocol == Protocol::Canopen && frame.cobId) {
+    if (frame.protocol == FrameFormat::Canopen && frame.cobId) {
         const auto image = canopen::toSocketCan(canopen::makeCanFrame(*frame.cobId, frame.bytes));
         return Bytes(image.begin(), image.end());
     }
     Bytes out = frame.bytes;
-    if (frame.linkKey == "node-image" && out.size() < imageBytes)
+    if (frame.link == LinkProtocol::NodeImage && out.size() < imageBytes)
         out.resize(imageBytes, 0); // the rest of the output image (DMA Profinet manual §4.5.4)
     return out;
 }

@@ -56,20 +56,20 @@ struct ComposeSpec
 
 struct ComposedFrame
 {
-    Protocol protocol = Protocol::Gateway;
+    FrameFormat protocol = FrameFormat::Gateway;
     Bytes bytes;                        // the frame; SDO: the 8 data bytes
     std::optional<std::uint32_t> cobId; // SDO
     bool writes = false;                // changes the device: confirm before sending
-    // The link protocol key (Connection::protocolKey()) that carries this frame; empty = none
-    // of ValveTune's links does (PKW travels on PROFIBUS DP, which needs a master card).
-    std::string linkKey;
+    // The link protocol that carries this frame; nullopt = none of ValveTune's links does (PKW
+    // travels on PROFIBUS DP, which needs a master card).
+    std::optional<LinkProtocol> link;
 };
 
 // Fails with an English reason naming the field out of range.
 Result<ComposedFrame, std::string> compose(const ComposeSpec &spec);
 
-// The bytes a link of `linkKey` sends for `frame`: the SocketCAN image for "canopen", the
-// telegram padded to `imageBytes` for "node-image", the frame itself otherwise.
+// The bytes the frame's link sends: the SocketCAN image on CANopen, the telegram padded to
+// `imageBytes` on the node image, the frame itself otherwise.
 Bytes wireBytes(const ComposedFrame &frame, std::size_t imageBytes = 0);
 
 } // namespace vt::dev::inspect

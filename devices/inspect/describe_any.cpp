@@ -13,89 +13,76 @@
 
 namespace vt::dev {
 
-const std::vector<Protocol> &allProtocols()
+const char *key(FrameFormat format)
 {
-    static const std::vector<Protocol> all = {
-        Protocol::Gateway, Protocol::ModbusRtu, Protocol::ModbusTcp, Protocol::Profidrive,
-        Protocol::Pkw,     Protocol::Pzd,       Protocol::Hart,      Protocol::Canopen};
-    return all;
-}
-
-const char *protocolName(Protocol protocol)
-{
-    switch (protocol) {
-    case Protocol::Gateway: return "gateway";
-    case Protocol::ModbusRtu: return "modbus-rtu";
-    case Protocol::ModbusTcp: return "modbus-tcp";
-    case Protocol::Profidrive: return "profidrive";
-    case Protocol::Pkw: return "pkw";
-    case Protocol::Pzd: return "pzd";
-    case Protocol::Hart: return "hart";
-    case Protocol::Canopen: return "canopen";
+    switch (format) {
+    case FrameFormat::Gateway: return "gateway";
+    case FrameFormat::ModbusRtu: return "modbus-rtu";
+    case FrameFormat::ModbusTcp: return "modbus-tcp";
+    case FrameFormat::Profidrive: return "profidrive";
+    case FrameFormat::Pkw: return "pkw";
+    case FrameFormat::Pzd: return "pzd";
+    case FrameFormat::Hart: return "hart";
+    case FrameFormat::Canopen: return "canopen";
     }
     return "?";
 }
 
-std::optional<Protocol> protocolFromName(std::string_view name)
+template<> std::optional<FrameFormat> fromKey<FrameFormat>(std::string_view text)
 {
-    for (Protocol p : allProtocols())
-        if (name == protocolName(p))
-            return p;
+    for (FrameFormat f : kFrameFormats)
+        if (text == key(f))
+            return f;
     return std::nullopt;
 }
 
-namespace {
-
-// HCS parameter names and cooked values: one definition, shared with the telegram log.
-hcs::ParameterHooks hooksFor(const Dictionary *dict)
+FrameFormat frameFormatOf(LinkProtocol protocol)
 {
-    return inspect::parameterHooks(dict);
+    switch (protocol) {
+    case LinkProtocol::ModbusRtu: return FrameFormat::ModbusRtu;
+    case LinkProtocol::ModbusTcp: return FrameFormat::ModbusTcp;
+    case LinkProtocol::NodeImage: return FrameFormat::Gateway;
+    case LinkProtocol::Hart: return FrameFormat::Hart;
+    case LinkProtocol::Canopen: return FrameFormat::Canopen;
+    }
+    return FrameFormat::Gateway;
 }
-
-} // namespace
 
 Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes,
                                              const AnyOptions &options)
 {
-    std::optional<hcs::Profile> profile;
-    if (!options.profile.empty()) {
-        profile = hcs::profileByKey(options.profile);
-        if (!profile)
-            return std::string("unknown CMD 15 profile '" + options.profile + "'");
-    }
-    hcs::DescribeOptions node;
-    node.family = options.family;
-    node.direction = options.direction;
-    node.profile = profile;
-    node.parameters = hooksFor(options.dictionary);
+    auto gateway = inspect::gatewayOptions(options);
+    if (!gateway.ok())
+        return gateway.error();
+    const hcs::DescribeOptions &node = *gateway;
 
     switch (options.protocol) {
-    case Protocol::Gateway: return hcs::describe(bytes, node);
-    case Protocol::ModbusRtu:
-    case Protocol::ModbusTcp: {
+    case FrameFormat::Gateway: return hcs::describe(bytes, node);
+    case FrameFormat::ModbusRtu:
+    case FrameFormat::ModbusTcp: {
         modbus::DescribeOptions o;
         o.direction = options.direction;
         o.family = options.family;
         o.parameters = node.parameters;
-        return options.protocol == Protocol::ModbusRtu ? modbus::describeRtu(bytes, o)
-                                                       : modbus::describeTcp(bytes, o);
+        return options.protocol == FrameFormat::ModbusRtu ? modbus::describeRtu(bytes, o)
+                                                          : modbus::describeTcp(bytes, o);
     }
-    case Protocol::Profidrive: {
+    case FrameFormat::Profidrive: {
         profidrive::DescribeOptions o;
         o.direction = options.direction;
         o.node = node;
         o.node.family = hcs::Family::Opat; // OPAT manual §5: only the OPAT node speaks PROFIdrive
         return profidrive::describe(bytes, o);
     }
-    case Protocol::Pkw:
-    case Protocol::Pzd: {
+    case FrameFormat::Pkw:
+    case FrameFormat::Pzd: {
         dsp408::Options o;
         o.direction = options.direction;
-        return options.protocol == Protocol::Pkw ? dsp408::describePkw(bytes, o)
-                                                 : dsp408::describeTelegram(bytes, o);
+        return options.protocol == FrameFormat::Pkw ? dsp408::describePkw(bytes, o)
+                                                    : dsp408::describeTelegram(bytes, o);
     }
-    case Protocol::Hart: return hart::describeFrame(bytes);
-    case Protocol::Canopen: {
+    case FrameFormat::Hart: return hart::describeFrame(bytes);
+    case FrameFormat::Canopen: {
         canopen::DescribeOptions o;
         o.cobId = options.cobId;
         o.direction = options.direction;

@@ -4,11 +4,14 @@
 #pragma once
 
 #include "core/direction.h"
+#include "core/enum_key.h"
 #include "core/field_span.h"
+#include "core/link_protocol.h"
 #include "core/result.h"
 #include "dict/dictionary.h"
 #include "hcs/types.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -18,15 +21,25 @@
 
 namespace vt::dev {
 
-enum class Protocol { Gateway, ModbusRtu, ModbusTcp, Profidrive, Pkw, Pzd, Hart, Canopen };
+// The frame layouts describeAny explains: finer than LinkProtocol (a PKW or PZD telegram, a
+// PROFIdrive telegram, a bare gateway telegram travel over links ValveTune does not drive).
+enum class FrameFormat { Gateway, ModbusRtu, ModbusTcp, Profidrive, Pkw, Pzd, Hart, Canopen };
 
-const std::vector<Protocol> &allProtocols();
-const char *protocolName(Protocol protocol); // "gateway", "modbus-rtu", …
-std::optional<Protocol> protocolFromName(std::string_view name);
+inline constexpr std::array kFrameFormats{
+    FrameFormat::Gateway, FrameFormat::ModbusRtu, FrameFormat::ModbusTcp, FrameFormat::Profidrive,
+    FrameFormat::Pkw,     FrameFormat::Pzd,       FrameFormat::Hart,      FrameFormat::Canopen};
+
+// "gateway", "modbus-rtu", "modbus-tcp", "profidrive", "pkw", "pzd", "hart", "canopen".
+const char *key(FrameFormat format);
+template<> std::optional<FrameFormat> fromKey<FrameFormat>(std::string_view key);
+
+// The layout of the frames a link of `protocol` carries (the node image carries the gateway
+// telegrams of the manuals, padded to the image size: DMA Profinet manual §4.5.4).
+FrameFormat frameFormatOf(LinkProtocol protocol);
 
 struct AnyOptions
 {
-    Protocol protocol = Protocol::Gateway;
+    FrameFormat protocol = FrameFormat::Gateway;
     hcs::Family family = hcs::Family::Dma; // gateway, Modbus exception texts
     Direction direction = Direction::Request;
     std::string profile; // gateway CMD 15 layout key (hcs::allProfiles()); empty = default

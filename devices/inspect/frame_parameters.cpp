@@ -3,11 +3,9 @@
 #include "access/canopen_adapter.h"
 #include "canopen/can_frame.h"
 #include "canopen/sdo.h"
-#include "dsp408/pkw.h"
 #include "hart/device_specific.h"
 #include "hart/frame.h"
 #include "hcs/telegram.h"
-#include "inspect/logged_frame.h"
 #include "modbus/rtu.h"
 #include "modbus/tcp.h"
 
@@ -41,19 +39,15 @@ void fromSdo(CarriedParameters &out, std::span<const std::uint8_t> data)
 
 } // namespace
 
-CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> bytes,
+CarriedParameters carriedBy(LinkProtocol link, std::span<const std::uint8_t> bytes,
                             Direction direction, hcs::Family family)
 {
     CarriedParameters out;
     if (direction != Direction::Request)
         return out;
-    const auto protocol = protocolForLogKey(key);
-    if (!protocol)
-        return out;
-    switch (*protocol) {
-    case Protocol::Gateway: {
-        const auto request =
-            hcs::decodeRequest(bytes, hcs::DecodeOptions{family, key == "node-image"});
+    switch (link) {
+    case LinkProtocol::NodeImage: {
+        const auto request = hcs::decodeRequest(bytes, hcs::DecodeOptions{family, true});
         if (!request)
             break;
         if (const auto *r = std::get_if<hcs::ReadRequest>(&*request))
@@ -62,15 +56,15 @@ CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> 
             out.ids.push_back(w->id);
         break;
     }
-    case Protocol::ModbusRtu:
+    case LinkProtocol::ModbusRtu:
         if (const auto r = modbus::decodeRtuRequest(bytes))
             fromModbusPdu(out, r->pdu);
         break;
-    case Protocol::ModbusTcp:
+    case LinkProtocol::ModbusTcp:
         if (const auto r = modbus::decodeTcpRequest(bytes))
             fromModbusPdu(out, r->pdu);
         break;
-    case Protocol::Hart: {
+    case LinkProtocol::Hart: {
         const auto frame = hart::decodeFrame(bytes);
         if (!frame || frame->isResponse() || !hart::isParameterCommand(frame->command))
             break;
@@ -79,13 +73,7 @@ CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> 
                 CarriedParameters::IndPnu{access->ref.ind, access->ref.pnu, access->ref.instance};
         break;
     }
-    case Protocol::Pkw: {
-        const auto pkw = dsp408::decodePkw(bytes);
-        if (pkw && pkw->ak != 0)
-            out.indPnu = CarriedParameters::IndPnu{pkw->ind, pkw->pnu, 0};
-        break;
-    }
-    case Protocol::Canopen:
+    case LinkProtocol::Canopen:
         if (bytes.size() == canopen::kSocketCanFrameSize) {
             const auto frame = canopen::fromSocketCan(bytes);
             if (frame && !frame->extended && !frame->rtr && !frame->errorFrame)
@@ -94,8 +82,6 @@ CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> 
             fromSdo(out, bytes);
         }
         break;
-    case Protocol::Profidrive:
-    case Protocol::Pzd: break; // process data: set values, no parameter numbers
     }
     return out;
 }
@@ -112,9 +98,7 @@ std::vector<const ParamMeta *> rowsOf(const CarriedParameters &carried,
                                                        carried.indPnu->instance))
             rows.push_back(p);
     if (carried.canObject) {
-        const auto profile = dictionary.protocol == DeviceProtocol::Hcs
-                                 ? access::CanopenProfile::Hcs
-                                 : access::CanopenProfile::Dsp408;
+        const auto profile = access::canopenProfileOf(dictionary.protocol);
         for (const ParamMeta &p : dictionary.params) {
             const auto object = access::canopenObjectOf(p, profile);
             if (object && object->index == carried.canObject->index &&

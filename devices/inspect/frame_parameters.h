@@ -3,13 +3,13 @@
 #pragma once
 
 #include "core/direction.h"
+#include "core/link_protocol.h"
 #include "dict/dictionary.h"
 #include "hcs/types.h"
 
 #include <cstdint>
 #include <optional>
 #include <span>
-#include <string_view>
 #include <vector>
 
 namespace vt::dev::inspect {
@@ -21,16 +21,16 @@ struct CarriedParameters
     {
         int ind = 0, pnu = 0, instance = 0;
     };
-    std::optional<IndPnu> indPnu;       // HART 128..133, DSP-408 PKW
+    std::optional<IndPnu> indPnu;       // HART 128..133
     std::optional<CanObject> canObject; // CANopen SDO
 
     bool empty() const { return ids.empty() && !indPnu && !canObject; }
 };
 
-// `key` is the log / link protocol key ("node-image", "modbus-rtu", "canopen" 16-byte images …)
-// or describeAny's name. Only requests name parameters (a CMD 3 answer does not carry its IDs);
+// `link`: the protocol that carried the frame (a CANopen frame as a 16-byte SocketCAN image or
+// bare SDO data). Only requests name parameters (a CMD 3 answer does not carry its IDs);
 // anything that does not decode carries nothing.
-CarriedParameters carriedBy(std::string_view key, std::span<const std::uint8_t> bytes,
+CarriedParameters carriedBy(LinkProtocol link, std::span<const std::uint8_t> bytes,
                             Direction direction, hcs::Family family = hcs::Family::Dma);
 
 // The dictionary rows behind them (unknown ones left out), in frame order.

@@ -33,13 +33,18 @@ hcs::ParameterHooks parameterHooks(const Dictionary *dict)
     return hooks;
 }
 
-std::optional<Protocol> protocolForLogKey(std::string_view key)
+Result<hcs::DescribeOptions, std::string> gatewayOptions(const AnyOptions &options)
 {
-    // The node image carries the gateway telegrams of the manuals, padded to the image size
-    // (DMA Profinet manual §4.5.4); describing the telegram explains the image.
-    if (key == "node-image")
-        return Protocol::Gateway;
-    return protocolFromName(key);
+    hcs::DescribeOptions node;
+    if (!options.profile.empty()) {
+        node.profile = hcs::profileByKey(options.profile);
+        if (!node.profile)
+            return std::string("unknown CMD 15 profile '" + options.profile + "'");
+    }
+    node.family = options.family;
+    node.direction = options.direction;
+    node.parameters = parameterHooks(options.dictionary);
+    return node;
 }
 
 Description describeSocketCanImage(std::span<const std::uint8_t> image)
@@ -88,43 +93,33 @@ Description describeSocketCanImage(std::span<const std::uint8_t> image)
     return d;
 }
 
-Result<Description, std::string> describeLogged(std::string_view key,
+Result<Description, std::string> describeLogged(LinkProtocol link,
                                                 std::span<const std::uint8_t> bytes,
                                                 AnyOptions options,
                                                 std::optional<std::uint16_t> firstId)
 {
-    const auto protocol = protocolForLogKey(key);
-    if (!protocol)
-        return std::string("no description for protocol '" + std::string(key) + "'");
-    if (*protocol == Protocol::Canopen && bytes.size() == canopen::kSocketCanFrameSize)
+    const FrameFormat format = frameFormatOf(link);
+    if (format == FrameFormat::Canopen && bytes.size() == canopen::kSocketCanFrameSize)
         return describeSocketCanImage(bytes);
-    options.protocol = *protocol;
-    if (firstId && (*protocol == Protocol::ModbusRtu || *protocol == Protocol::ModbusTcp)) {
+    options.protocol = format;
+    if (firstId && (format == FrameFormat::ModbusRtu || format == FrameFormat::ModbusTcp)) {
         modbus::DescribeOptions o;
         o.direction = options.direction;
         o.family = options.family;
         o.requestStart = firstId;
         o.parameters = parameterHooks(options.dictionary);
-        return *protocol == Protocol::ModbusRtu ? modbus::describeRtu(bytes, o)
+        return format == FrameFormat::ModbusRtu ? modbus::describeRtu(bytes, o)
                                                 : modbus::describeTcp(bytes, o);
     }
-    if (*protocol != Protocol::Gateway || (key != "node-image" && !firstId))
+    if (link != LinkProtocol::NodeImage)
         return describeAny(bytes, options);
     // describeAny has no padding option: ask the gateway codec directly, with the same hooks.
-    std::optional<hcs::Profile> profile;
-    if (!options.profile.empty()) {
-        profile = hcs::profileByKey(options.profile);
-        if (!profile)
-            return std::string("unknown CMD 15 profile '" + options.profile + "'");
-    }
-    hcs::DescribeOptions node;
-    node.family = options.family;
-    node.direction = options.direction;
-    node.profile = profile;
-    node.allowPadding = key == "node-image";
-    node.firstId = firstId;
-    node.parameters = parameterHooks(options.dictionary);
-    return hcs::describe(bytes, node);
+    auto node = gatewayOptions(options);
+    if (!node.ok())
+        return node.error();
+    node->allowPadding = true;
+    node->firstId = firstId;
+    return hcs::describe(bytes, *node);
 }
 
 } // namespace vt::dev::inspect

@@ -63,8 +63,8 @@ std::optional<SdoAbort> Dsp408Objects::write(std::uint16_t index, std::uint8_t s
     if (!meta.writable())
         return SdoAbort{sdo_abort::kReadOnly};
     const std::size_t width = wireBytes(meta.type);
-    if (size != 0 && size != width) // CiA 301: length of service parameter too high / too low
-        return SdoAbort{size > width ? sdo_abort::kLengthTooHigh : sdo_abort::kLengthTooLow};
+    if (auto abort = lengthAbort(size, width))
+        return abort;
     // Unsized (s = 0): the low bytes of the 4 carry the value (fromWireBits reads only those).
     if (auto error = m_device.write(meta, fromWireBits(meta, bits)))
         return sdoAbortFor(*error);

@@ -71,8 +71,8 @@ std::optional<SdoAbort> HcsParamObjects::write(std::uint16_t index, std::uint8_t
     const ParamMeta &meta = **found;
     if (!meta.writable())
         return SdoAbort{sdo_abort::kReadOnly};
-    if (size != 0 && size != 2)
-        return SdoAbort{size > 2 ? sdo_abort::kLengthTooHigh : sdo_abort::kLengthTooLow};
+    if (auto abort = lengthAbort(size, 2)) // HCS parameters are 16-bit words
+        return abort;
     const auto word = static_cast<std::uint16_t>(bits);
     const bool isSigned = meta.type == RawType::Int8 || meta.type == RawType::Int16;
     const std::int32_t raw = isSigned ? static_cast<std::int16_t>(word) : word;

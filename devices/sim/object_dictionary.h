@@ -48,6 +48,15 @@ struct ObjectValue
     bool operator==(const ObjectValue &) const = default;
 };
 
+// A download's stated length against the object's width in bytes (CiA 301: length of service
+// parameter too high / too low); `size` 0 (not stated) always fits.
+inline std::optional<SdoAbort> lengthAbort(std::size_t size, std::size_t width)
+{
+    if (size == 0 || size == width)
+        return std::nullopt;
+    return SdoAbort{size > width ? sdo_abort::kLengthTooHigh : sdo_abort::kLengthTooLow};
+}
+
 class ObjectDictionary
 {
 public:

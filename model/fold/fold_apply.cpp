@@ -1,5 +1,6 @@
 #include "model/fold/fold_apply.h"
 
+#include "core/version.h"
 #include "model/fold/fold_apply_moves.h"
 #include "model/session/write_job.h"
 #include "model/text_language.h"
@@ -14,15 +15,6 @@ namespace {
 // DMA Profinet manual §1.5 / DMA Profibus Anleitung §1.5: E22 1..32.
 constexpr int kLowestAddress = 1;
 constexpr int kHighestAddress = 32;
-
-int majorOf(const std::string &version)
-{
-    try {
-        return version.empty() ? 0 : std::stoi(version);
-    } catch (...) {
-        return 0;
-    }
-}
 
 } // namespace
 
@@ -163,7 +155,7 @@ void FoldApply::identifyThenWrite(std::size_t index)
         FoldApplyModule &mod = m_modules[index];
         mod.info = result.module;
         const FoldModule &planned = m_plan.modules[index];
-        const int version = majorOf(result.module.identification.version);
+        const int version = dev::majorVersionNumber(result.module.identification.version);
         if (planned.version != 0 && version != 0 && version != planned.version)
             mod.notes
                 << tr("Software V%1 found, the plan says V%2.").arg(version).arg(planned.version);
@@ -187,7 +179,8 @@ void FoldApply::writeOptions(std::size_t index)
             continue;
         const dev::ParamMeta *row = dictionary.find(name);
         // Rows name major versions ("34"); the module reports "34.03".
-        const std::string major = std::to_string(majorOf(m.info->identification.version));
+        const std::string major =
+            std::to_string(dev::majorVersionNumber(m.info->identification.version));
         if (!row || !row->appliesTo(major, m.info->identification.mode)) {
             m.notes << tr("%1 does not exist on this module's software; not written.")
                            .arg(QString::fromStdString(name));

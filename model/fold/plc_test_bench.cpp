@@ -146,11 +146,8 @@ void PlcTestBench::cycle()
         return;
     }
     m_tadr = tadr;
-    dev::access::Transaction t;
-    t.kind = dev::access::TransactionKind::Raw;
-    t.module = m_modules.empty() ? 0 : m_modules.front().address;
-    t.raw = *image;
-    t.expectsReply = true;
+    auto t = dev::access::Transaction::rawFrame(m_modules.empty() ? 0 : m_modules.front().address,
+                                                *image);
     m_onWire = true;
     ++m_counters.sent;
     QPointer<PlcTestBench> self(this);

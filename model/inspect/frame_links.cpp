@@ -2,24 +2,22 @@
 
 #include "dict/dictionary.h"
 #include "inspect/frame_parameters.h"
+#include "transports/byte_span.h"
 
 #include <span>
 
 namespace vt::model {
 namespace {
 
-std::span<const std::uint8_t> asSpan(const QByteArray &b)
-{
-    return {reinterpret_cast<const std::uint8_t *>(b.constData()),
-            static_cast<std::size_t>(b.size())};
-}
-
 QStringList namesOf(const TelegramRecord &r, const vt::dev::Dictionary &dictionary,
                     vt::dev::hcs::Family family)
 {
     QStringList names;
+    const auto link = r.linkProtocol();
+    if (!link)
+        return names;
     const auto carried =
-        vt::dev::inspect::carriedBy(r.protocol.toStdString(), asSpan(r.bytes), r.direction, family);
+        vt::dev::inspect::carriedBy(*link, vt::link::byteSpan(r.bytes), r.direction, family);
     for (const vt::dev::ParamMeta *p : vt::dev::inspect::rowsOf(carried, dictionary))
         names << QString::fromStdString(p->name);
     return names;

@@ -1,5 +1,6 @@
 #include "curve_binding.h"
 
+#include "core/version.h"
 #include "dict/cooking.h"
 #include "model/curve/lcurve_table_model.h"
 #include "parameter_document.h"
@@ -58,7 +59,7 @@ void CurveBinding::reload()
         return;
     }
     const ParamModule &m = m_document.module(m_module);
-    m_curves.setDictionary(*m.dictionary, m.version.substr(0, m.version.find('.')), m.mode);
+    m_curves.setDictionary(*m.dictionary, dev::majorVersion(m.version), m.mode);
     m_curves.setValues([this](const dev::ParamMeta &row) { return displayOf(row); });
 }
 

@@ -8,34 +8,20 @@
 
 namespace vt::model {
 
-std::unique_ptr<dev::access::ProtocolAdapter> makeAdapter(AdapterKind kind,
-                                                          const std::string &hcsFamily)
+std::unique_ptr<dev::access::ProtocolAdapter>
+makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily, dev::DeviceProtocol device)
 {
     using namespace dev::access;
     const auto family = hcsFamilyOf(hcsFamily);
-    switch (kind) {
-    case AdapterKind::ModbusRtu: return std::make_unique<ModbusRtuAdapter>(family);
-    case AdapterKind::ModbusTcp: return std::make_unique<ModbusTcpAdapter>(family);
-    case AdapterKind::NodeImage: return std::make_unique<NodeImageAdapter>(family);
-    case AdapterKind::Hart: return std::make_unique<HartAdapter>();
-    case AdapterKind::CanopenHcs: return std::make_unique<CanopenAdapter>(CanopenProfile::Hcs);
-    case AdapterKind::CanopenDsp408:
-        return std::make_unique<CanopenAdapter>(CanopenProfile::Dsp408);
+    switch (protocol) {
+    case dev::LinkProtocol::ModbusRtu: return std::make_unique<ModbusRtuAdapter>(family);
+    case dev::LinkProtocol::ModbusTcp: return std::make_unique<ModbusTcpAdapter>(family);
+    case dev::LinkProtocol::NodeImage: return std::make_unique<NodeImageAdapter>(family);
+    case dev::LinkProtocol::Hart: return std::make_unique<HartAdapter>();
+    case dev::LinkProtocol::Canopen:
+        return std::make_unique<CanopenAdapter>(canopenProfileOf(device));
     }
     return nullptr;
-}
-
-const char *adapterKey(AdapterKind kind)
-{
-    switch (kind) {
-    case AdapterKind::ModbusRtu: return "modbus-rtu";
-    case AdapterKind::ModbusTcp: return "modbus-tcp";
-    case AdapterKind::NodeImage: return "node-image";
-    case AdapterKind::Hart: return "hart";
-    case AdapterKind::CanopenHcs:
-    case AdapterKind::CanopenDsp408: return "canopen";
-    }
-    return "?";
 }
 
 } // namespace vt::model

@@ -2,6 +2,9 @@
 // adapter (it goes to one Session).
 #pragma once
 
+#include "core/link_protocol.h"
+#include "dict/device_protocol.h"
+
 #include <memory>
 #include <string>
 
@@ -11,14 +14,11 @@ class ProtocolAdapter;
 
 namespace vt::model {
 
-enum class AdapterKind { ModbusRtu, ModbusTcp, NodeImage, Hart, CanopenHcs, CanopenDsp408 };
-
 // `hcsFamily`: a dictionary family or product prefix ("opat", "dma-pn-v51", "dma"); it picks the
 // HCS exception table (OPAT and DMA codes differ). Ignored by HART and CANopen DSP-408.
-std::unique_ptr<dev::access::ProtocolAdapter> makeAdapter(AdapterKind kind,
-                                                          const std::string &hcsFamily);
-
-// "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen" (ProtocolAdapter::protocolKey()).
-const char *adapterKey(AdapterKind kind);
+// `device`: on CANopen, which objects the module has (HCS 0x2000 + ID or CiA 408).
+std::unique_ptr<dev::access::ProtocolAdapter>
+makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily,
+            dev::DeviceProtocol device = dev::DeviceProtocol::Hcs);
 
 } // namespace vt::model

@@ -3,6 +3,7 @@
 #include "access/transaction.h"
 #include "dict/dictionary.h"
 #include "model/session/adapter_factory.h"
+#include "sim/sim_device.h"
 #include "transports/can_link.h"
 #include "transports/fault_link.h"
 #include "transports/serial_link.h"
@@ -41,19 +42,6 @@ std::string hcsFamilyHint(const ConnectionSpec &spec)
     return spec.product == dev::HcsProduct::Opat ? "opat" : "dma";
 }
 
-std::optional<AdapterKind> simAdapter(const std::string &protocol)
-{
-    if (protocol == "modbus-rtu")
-        return AdapterKind::ModbusRtu;
-    if (protocol == "modbus-tcp")
-        return AdapterKind::ModbusTcp;
-    if (protocol == "node-image")
-        return AdapterKind::NodeImage;
-    if (protocol == "hart")
-        return AdapterKind::Hart;
-    return std::nullopt;
-}
-
 std::vector<int> range(int first, int last)
 {
     std::vector<int> out;
@@ -87,7 +75,7 @@ SessionOptions sessionOptionsFor(const ConnectionSpec &spec)
         options.bitsPerCharacter = spec.sim.bitsPerCharacter;
     }
     if (spec.kind == ConnectionKind::Hart ||
-        (spec.kind == ConnectionKind::Sim && spec.sim.protocol == "hart"))
+        (spec.kind == ConnectionKind::Sim && spec.sim.protocol == dev::LinkProtocol::Hart))
         options.turnaround = kHartTurnaround;
     if (spec.turnaround)
         options.turnaround = *spec.turnaround;
@@ -116,17 +104,18 @@ dev::Result<std::unique_ptr<Connection>, QString>
 Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
                    std::unique_ptr<link::Link> link)
 {
-    AdapterKind adapter = AdapterKind::ModbusRtu;
+    dev::LinkProtocol protocol = dev::LinkProtocol::ModbusRtu;
+    dev::DeviceProtocol device = dev::DeviceProtocol::Hcs;
     SimEndpoint *sim = nullptr;
     switch (spec.kind) {
     case ConnectionKind::Sim: {
-        // A fold of several HCS modules is simulated behind a Modbus TCP gateway: Modbus TCP has
-        // no broadcast unit, so unit 0 reaches the OPAT master (on a serial line it would not).
-        // An unknown family: makeSimLink says so.
+        // The simulator's default protocol for the family (an unknown family: makeSimLink says
+        // so), also when the caller brings its own link to the simulator.
         const dev::Dictionary *dict = dictionaries.find(spec.sim.family);
-        if (dict && spec.sim.protocol.empty() && dict->protocol == dev::DeviceProtocol::Hcs &&
-            spec.sim.modules > 1)
-            spec.sim.protocol = "modbus-tcp";
+        if (dict && !spec.sim.protocol)
+            spec.sim.protocol = dev::sim::defaultSimProtocol(*dict, spec.sim.modules);
+        if (dict)
+            device = dict->protocol;
         if (!link) {
             auto made = makeSimLink(spec.sim, &dictionaries);
             if (!made.ok())
@@ -139,12 +128,7 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
         }
         if (spec.product == dev::HcsProduct::Unknown)
             spec.product = productOfFamily(spec.sim.family);
-        const auto kind = simAdapter(spec.sim.protocol.empty() ? "modbus-rtu" : spec.sim.protocol);
-        if (!kind)
-            return QStringLiteral(
-                       "no adapter for the simulator's protocol '%1'") // programmer error
-                .arg(QString::fromStdString(spec.sim.protocol));
-        adapter = *kind;
+        protocol = spec.sim.protocol.value_or(dev::LinkProtocol::ModbusRtu);
         break;
     }
     case ConnectionKind::Serial:
@@ -152,22 +136,21 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
             return *problem;
         if (!link)
             link = std::make_unique<link::SerialLink>(spec.serial);
-        adapter = AdapterKind::ModbusRtu;
+        protocol = dev::LinkProtocol::ModbusRtu;
         break;
     case ConnectionKind::Hart:
         if (const auto problem = spec.serial.problem())
             return *problem;
         if (!link)
             link = std::make_unique<link::SerialLink>(spec.serial);
-        adapter = AdapterKind::Hart;
+        protocol = dev::LinkProtocol::Hart;
         break;
     case ConnectionKind::Tcp:
         if (spec.host.isEmpty() || spec.port == 0)
             return tr("a TCP connection needs a host and a port");
         if (!link)
             link = std::make_unique<link::TcpLink>(spec.host, spec.port);
-        adapter = spec.tcpProtocol == TcpProtocol::NodeImage ? AdapterKind::NodeImage
-                                                             : AdapterKind::ModbusTcp;
+        protocol = spec.tcpProtocol;
         break;
     case ConnectionKind::Can:
         if (spec.canNode < 1 || spec.canNode > kCanMaxNode)
@@ -177,16 +160,17 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
                 return tr("a CAN connection needs an interface (can0, vcan0 …)");
             link = std::make_unique<link::CanLink>(spec.canInterface);
         }
-        adapter = spec.canDsp408 ? AdapterKind::CanopenDsp408 : AdapterKind::CanopenHcs;
+        protocol = dev::LinkProtocol::Canopen;
+        device = spec.canDsp408 ? dev::DeviceProtocol::Dsp408 : dev::DeviceProtocol::Hcs;
         break;
     }
     if (spec.unit && (*spec.unit < 0 || *spec.unit > 255))
         return tr("module address %1 is not 0..255").arg(*spec.unit);
 
-    auto made = makeAdapter(adapter, hcsFamilyHint(spec));
+    auto made = makeAdapter(protocol, hcsFamilyHint(spec), device);
     if (!made)
         return QStringLiteral("no protocol adapter for %1") // programmer error
-            .arg(QString::fromLatin1(adapterKey(adapter)));
+            .arg(QString::fromLatin1(dev::key(protocol)));
 
     auto c = std::unique_ptr<Connection>(new Connection(std::move(spec)));
     c->m_sim = sim;
@@ -222,9 +206,14 @@ bool Connection::isOpen() const
     return m_link->state() == link::LinkState::Open;
 }
 
+dev::LinkProtocol Connection::protocol() const
+{
+    return m_session->adapter().protocol();
+}
+
 QString Connection::protocolKey() const
 {
-    return QString::fromStdString(m_session->adapter().protocolKey());
+    return QString::fromLatin1(dev::key(protocol()));
 }
 
 void Connection::onLinkFailed(const QString &reason)
@@ -279,13 +268,13 @@ std::vector<int> Connection::scanAddresses() const
             all.push_back(m_sim->moduleAddress(i));
         return all;
     }
-    const QString protocol = protocolKey();
-    if (protocol == QLatin1String("hart"))
-        return range(0, kHartMaxPollAddress);
-    if (protocol == QLatin1String("canopen"))
-        return range(1, kCanMaxNode);
-    if (protocol == QLatin1String("modbus-rtu"))
-        return range(1, kModbusMaxUnit);
+    switch (protocol()) {
+    case dev::LinkProtocol::Hart: return range(0, kHartMaxPollAddress);
+    case dev::LinkProtocol::Canopen: return range(1, kCanMaxNode);
+    case dev::LinkProtocol::ModbusRtu: return range(1, kModbusMaxUnit);
+    case dev::LinkProtocol::ModbusTcp:
+    case dev::LinkProtocol::NodeImage: break;
+    }
     return range(0, kModbusMaxUnit);
 }
 

@@ -5,6 +5,7 @@
 // Owner: whoever connects (GUI, CLI, tests); GUI thread (the link's), used only from there.
 #pragma once
 
+#include "core/link_protocol.h"
 #include "core/result.h"
 #include "dict/identify.h"
 #include "model/session/device_access.h"
@@ -29,20 +30,19 @@ class FaultLink;
 namespace vt::model {
 
 enum class ConnectionKind { Sim, Serial, Tcp, Can, Hart };
-enum class TcpProtocol { ModbusTcp, NodeImage };
 
 // What to connect to. A plain value; any thread.
 struct ConnectionSpec
 {
     ConnectionKind kind = ConnectionKind::Sim;
-    SimSpec sim; // Sim: family, modules, protocol ("" = the default, see Connection::create)
+    SimSpec sim; // Sim: family, modules, protocol (nullopt = the family's default)
     // Serial (Modbus RTU, HCS default 19200 8E1) and Hart (1200 8O1): port and line settings.
     link::SerialSettings serial;
     QString host; // Tcp
     quint16 port = 502;
-    TcpProtocol tcpProtocol = TcpProtocol::ModbusTcp;
-    QString canInterface;   // Can: "can0", "vcan0"
-    int canNode = 1;        // Can: CANopen node id 1..127
+    dev::LinkProtocol tcpProtocol = dev::LinkProtocol::ModbusTcp; // Tcp: Modbus TCP or node image
+    QString canInterface;                                         // Can: "can0", "vcan0"
+    int canNode = 1;                                              // Can: CANopen node id 1..127
     bool canDsp408 = false; // Can: a Wandfluh ED1 (CiA 408 objects) instead of an HCS module
     // The one module address to talk to (Modbus unit / node SADR, HART poll address, CAN node);
     // unset: 1 for Modbus point-to-point, 0 for HART, canNode for CAN, every module of a sim.
@@ -83,7 +83,10 @@ public:
     DeviceAccess &access() const { return *m_access; }
     SimEndpoint *simEndpoint() const { return m_sim; }     // Sim only
     link::FaultLink *faultLink() const { return m_fault; } // with a fault spec only
-    // "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen"
+    // The protocol the session speaks on the link.
+    dev::LinkProtocol protocol() const;
+    // Its key, for status lines and logs: "modbus-rtu", "modbus-tcp", "node-image", "hart",
+    // "canopen".
     QString protocolKey() const;
 
     // The module addresses to talk to (see ConnectionSpec::unit), in node order.

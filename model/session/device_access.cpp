@@ -1,8 +1,9 @@
 #include "device_access.h"
 
+#include "core/version.h"
+
 #include <QTimer>
 #include <algorithm>
-#include <cctype>
 #include <map>
 
 namespace vt::model {
@@ -44,18 +45,6 @@ void merge(dev::access::Identity &into, const dev::access::Identity &from)
         into.capability = from.capability;
     if (!from.text.empty())
         into.text = from.text;
-}
-
-// "34.03" → "34": dictionary rows list major versions.
-std::string majorVersion(const std::string &version)
-{
-    std::string major;
-    for (char c : version) {
-        if (!std::isdigit(static_cast<unsigned char>(c)))
-            break;
-        major.push_back(c);
-    }
-    return major;
 }
 
 } // namespace
@@ -160,7 +149,7 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
                     0,
                     false,
                     tr("not readable over %1")
-                        .arg(QString::fromStdString(m_session.adapter().protocolKey()))}});
+                        .arg(QString::fromLatin1(dev::key(m_session.adapter().protocol())))}});
     }
     state->total = static_cast<int>(plan.size());
 
@@ -222,7 +211,7 @@ void DeviceAccess::ReadHandle::cancel()
 std::vector<const dev::ParamMeta *>
 readableRows(const dev::Dictionary &dictionary, const std::string &version, const std::string &mode)
 {
-    const std::string major = majorVersion(version);
+    const std::string major = dev::majorVersion(version);
     std::vector<const dev::ParamMeta *> rows;
     for (const dev::ParamMeta &row : dictionary.params) {
         if (row.readable() && row.appliesTo(major, mode))

@@ -1,23 +1,12 @@
 #include "session.h"
 
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 #include "transports/link.h"
 
 namespace vt::model {
 
 namespace {
-
-QByteArray toQByteArray(const dev::Bytes &bytes)
-{
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()),
-                      static_cast<qsizetype>(bytes.size()));
-}
-
-std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
-{
-    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
-            static_cast<std::size_t>(bytes.size())};
-}
 
 constexpr qsizetype kMaxUnmatched = 4096;
 
@@ -164,7 +153,7 @@ void Session::sendAttempt()
                        p.attempts,
                        p.sent,
                        tr("The request cannot be encoded for %1")
-                           .arg(QString::fromStdString(m_adapter->protocolKey()))});
+                           .arg(QString::fromLatin1(dev::key(m_adapter->protocol())))});
         return;
     }
     ++p.attempts;
@@ -172,7 +161,7 @@ void Session::sendAttempt()
     ++m_counters.attempts;
     if (p.attempts > 1)
         ++m_counters.retries;
-    const QByteArray frame = toQByteArray(bytes);
+    const QByteArray frame = link::toByteArray(bytes);
     emit frameSent(frame, p.transaction.module, elapsedNs());
     m_link->send(frame);
     // A link may fail inside send() (FaultLink's cut, a serial write error) and report it at
@@ -197,18 +186,18 @@ void Session::onReceived(const QByteArray &bytes)
     m_unmatched.append(bytes);
     if (m_unmatched.size() > kMaxUnmatched) // a babbling line must not grow memory
         m_unmatched.remove(0, m_unmatched.size() - kMaxUnmatched);
-    auto reply = m_adapter->feed(asSpan(bytes), p.transaction);
+    auto reply = m_adapter->feed(link::byteSpan(bytes), p.transaction);
     if (!reply)
         return;
     m_unmatched.clear();
     if (reply->status == dev::access::ReplyStatus::Mismatch) {
-        emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+        emit frameReceived(link::toByteArray(reply->frame), p.transaction.module, elapsedNs(),
                            ReceivedKind::Unmatched, tr("does not answer the request"));
         return;
     }
     m_timeout.stop();
     const bool refused = reply->status == dev::access::ReplyStatus::DeviceException;
-    emit frameReceived(toQByteArray(reply->frame), p.transaction.module, elapsedNs(),
+    emit frameReceived(link::toByteArray(reply->frame), p.transaction.module, elapsedNs(),
                        refused ? ReceivedKind::Exception : ReceivedKind::Answer,
                        refused ? localText(reply->exceptionText) : QString());
     if (p.cancelled) {

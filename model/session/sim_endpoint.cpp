@@ -1,16 +1,15 @@
 #include "sim_endpoint.h"
 
 #include "dict/dictionary_loader.h"
-#include "sim/hart_device.h"
-#include "sim/hart_server.h"
-#include "sim/hcs_node.h"
-#include "sim/modbus_rtu_server.h"
-#include "sim/modbus_tcp_server.h"
-#include "sim/node_config.h"
-#include "sim/node_image_server.h"
+#include "sim/sim_device.h"
 #include "transports/sim_link.h"
 
 namespace vt::model {
+
+bool servedOverSimLink(dev::DeviceProtocol device)
+{
+    return device != dev::DeviceProtocol::Dsp408;
+}
 
 dev::Result<SimSpec, QString> parseSimSpec(const QString &text)
 {
@@ -36,28 +35,26 @@ SimEndpoint::SimEndpoint(SimSpec spec, QObject *parent) : QObject(parent), m_spe
     connect(&m_timer, &QTimer::timeout, this, &SimEndpoint::tick);
 }
 
-SimEndpoint::~SimEndpoint()
+SimEndpoint::~SimEndpoint() = default;
+
+dev::sim::HcsNode *SimEndpoint::node() const
 {
-    if (m_hart)
-        m_clock.detach(*m_hart);
+    return m_device ? m_device->node() : nullptr;
+}
+
+dev::sim::HartDevice *SimEndpoint::hart() const
+{
+    return m_device ? m_device->hart() : nullptr;
 }
 
 int SimEndpoint::moduleAddress(std::size_t index) const
 {
-    if (m_hart)
-        return 0; // HART poll address 0 (point-to-point)
-    if (!m_node || index >= m_node->moduleCount())
-        return -1;
-    if (m_spec.protocol == "modbus-rtu" && m_node->moduleCount() == 1)
-        return 1; // point-to-point line: unit 1 reaches the one module
-    return m_node->module(index).address();
+    return m_device ? m_device->moduleAddress(index) : -1;
 }
 
 std::size_t SimEndpoint::moduleCount() const
 {
-    if (m_hart)
-        return 1;
-    return m_node ? m_node->moduleCount() : 0;
+    return m_device ? m_device->moduleCount() : 0;
 }
 
 void SimEndpoint::setRunning(bool running)
@@ -80,69 +77,55 @@ void SimEndpoint::tick()
         m_link->pump();
 }
 
-dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &specIn,
+dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &spec,
                                                                  const dev::DictionarySet *set)
 {
-    using namespace dev::sim;
-    SimSpec spec = specIn;
     if (!set) {
         const auto &builtin = dev::builtinDictionaries();
         if (!builtin.ok())
             return SimEndpoint::tr("the built-in dictionaries do not load");
         set = &*builtin;
     }
+    const QString family = QString::fromStdString(spec.family);
     const dev::Dictionary *dict = set->find(spec.family);
     if (!dict)
-        return SimEndpoint::tr("unknown device family '%1'")
-            .arg(QString::fromStdString(spec.family));
-
-    auto endpoint = std::unique_ptr<SimEndpoint>(new SimEndpoint(spec, nullptr));
-    std::shared_ptr<dev::ByteServer> server;
-    if (dict->protocol == dev::DeviceProtocol::Hart) {
-        if (spec.protocol.empty())
-            spec.protocol = "hart";
-        if (spec.protocol != "hart")
-            return SimEndpoint::tr("%1 speaks HART only").arg(QString::fromStdString(spec.family));
-        endpoint->m_hart = std::make_unique<HartDevice>(*dict);
-        endpoint->m_hartServer = std::make_shared<HartServer>(*endpoint->m_hart);
-        endpoint->m_clock.attach(*endpoint->m_hart);
-        server = endpoint->m_hartServer;
-    } else if (dict->protocol == dev::DeviceProtocol::Hcs) {
-        // One module: a point-to-point Modbus RTU line. A node: Modbus TCP to its gateway, where
-        // every module is a unit — on an RTU line the OPAT master (SADR 0) would be unit 0, the
-        // broadcast address no device answers.
-        if (spec.protocol.empty())
-            spec.protocol = spec.modules == 1 ? "modbus-rtu" : "modbus-tcp";
-        NodeConfig config;
-        config.family = spec.family;
-        config.modules = spec.modules;
-        config.mode = spec.mode;
-        auto node = makeNode(endpoint->m_clock, *set, config);
-        if (!node.ok())
-            return QString::fromStdString(node.error());
-        endpoint->m_node = std::move(node).value();
-        HcsNode &n = *endpoint->m_node;
-        if (spec.protocol == "modbus-rtu") {
-            ModbusUnitOptions units;
-            if (n.moduleCount() == 1)
-                units.pointToPointUnit = 1;
-            server = std::make_shared<ModbusRtuServer>(endpoint->m_clock, n, units);
-        } else if (spec.protocol == "modbus-tcp") {
-            server = std::make_shared<ModbusTcpServer>(endpoint->m_clock, n);
-        } else if (spec.protocol == "node-image") {
-            server = std::make_shared<NodeImageServer>(endpoint->m_clock, n);
-        } else {
-            return SimEndpoint::tr("the simulator does not serve %1 over '%2'")
-                .arg(QString::fromStdString(spec.family), QString::fromStdString(spec.protocol));
-        }
-    } else {
+        return SimEndpoint::tr("unknown device family '%1'").arg(family);
+    if (!servedOverSimLink(dict->protocol))
         return SimEndpoint::tr(
                    "%1 cannot be simulated over a PC link yet (DSP-408 needs PROFIBUS or CANopen)")
-            .arg(QString::fromStdString(spec.family));
-    }
-    endpoint->m_spec = spec;
+            .arg(family);
+    const auto notServed = [&](dev::LinkProtocol protocol) {
+        return dict->protocol == dev::DeviceProtocol::Hart
+                   ? SimEndpoint::tr("%1 speaks HART only").arg(family)
+                   : SimEndpoint::tr("the simulator does not serve %1 over '%2'")
+                         .arg(family, QString::fromLatin1(dev::key(protocol)));
+    };
+    if (spec.protocol == dev::LinkProtocol::Canopen)
+        return notServed(*spec.protocol);
 
-    auto link = std::make_unique<link::SimLink>(server, QString::fromStdString(spec.family));
+    auto endpoint = std::unique_ptr<SimEndpoint>(new SimEndpoint(spec, nullptr));
+    dev::sim::SimDeviceSpec deviceSpec;
+    deviceSpec.family = spec.family;
+    deviceSpec.modules = spec.modules;
+    deviceSpec.mode = spec.mode;
+    deviceSpec.protocol = spec.protocol;
+    auto device = dev::sim::SimDevice::build(endpoint->m_clock, *set, deviceSpec);
+    if (!device.ok()) {
+        const dev::sim::SimBuildError &error = device.error();
+        switch (error.code) {
+        case dev::sim::SimBuildErrc::UnknownFamily:
+            return SimEndpoint::tr("unknown device family '%1'").arg(family);
+        case dev::sim::SimBuildErrc::BadNode: return QString::fromStdString(error.message);
+        case dev::sim::SimBuildErrc::NotServed:
+            return notServed(spec.protocol.value_or(dev::LinkProtocol::Canopen));
+        }
+    }
+    endpoint->m_device = std::move(device).value();
+    endpoint->m_spec.protocol = endpoint->m_device->protocol(); // the protocol the simulator chose
+
+    // The link shares the device: the server it drives is part of it.
+    std::shared_ptr<dev::ByteServer> server(endpoint->m_device, &endpoint->m_device->server());
+    auto link = std::make_unique<link::SimLink>(std::move(server), family);
     if (spec.baudRate > 0)
         link->setWireTiming(spec.baudRate, spec.bitsPerCharacter);
     endpoint->m_link = link.get();

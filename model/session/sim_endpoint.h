@@ -1,12 +1,15 @@
-// SimEndpoint: the built-in simulator as a link — a simulated HCS node (makeNode) or Wandfluh SD7
-// behind the front end of the chosen protocol, driven in real time, reached through a SimLink.
+// SimEndpoint: the built-in simulator as a link — a simulated HCS node or Wandfluh SD7 behind the
+// front end of the chosen protocol (dev::sim::SimDevice), driven in real time, reached through a
+// SimLink.
 // It is what `valvetune --simulate` and `valvetune-cli --sim` connect to, and what the session's
 // end-to-end tests talk to (STYLE.md rule 8: the simulator is just another link).
 // Ownership: makeSimLink() returns the SimLink; the endpoint is the link's child QObject, so the
 // device lives exactly as long as the link. GUI thread (the link's).
 #pragma once
 
+#include "core/link_protocol.h"
 #include "core/result.h"
+#include "dict/device_protocol.h"
 #include "sim/sim_clock.h"
 
 #include <QElapsedTimer>
@@ -14,15 +17,15 @@
 #include <QString>
 #include <QTimer>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace vt::dev {
-class ByteServer;
 class DictionarySet;
 namespace sim {
 class HcsNode;
 class HartDevice;
-class HartServer;
+class SimDevice;
 } // namespace sim
 } // namespace vt::dev
 
@@ -37,11 +40,16 @@ struct SimSpec
     std::string family;      // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
     std::size_t modules = 1; // HCS node size
     int mode = 0;            // E00; 0: the family's first mode
-    std::string protocol;    // "modbus-rtu" (default for one HCS module), "modbus-tcp" (default for
-                             // a node of several), "node-image", "hart" (the SD7's only one)
-    int baudRate = 0;        // simulated wire speed; 0: no wire delay
+    // Modbus RTU, Modbus TCP, the node image or HART (the SD7's only one); nullopt: the family's
+    // default (dev::sim::defaultSimProtocol).
+    std::optional<dev::LinkProtocol> protocol;
+    int baudRate = 0; // simulated wire speed; 0: no wire delay
     int bitsPerCharacter = 11;
 };
+
+// Whether a SimLink can carry a device of this protocol: HCS and HART devices are served as byte
+// streams; a DSP-408 device needs PROFIBUS or CANopen frames, which a SimLink does not carry.
+bool servedOverSimLink(dev::DeviceProtocol device);
 
 // "dma-pn-v51:3" → family and module count; an error names what is wrong.
 dev::Result<SimSpec, QString> parseSimSpec(const QString &text);
@@ -53,8 +61,8 @@ public:
     ~SimEndpoint() override;
 
     dev::sim::SimClock &clock() { return m_clock; }
-    dev::sim::HcsNode *node() const { return m_node.get(); }    // HCS families
-    dev::sim::HartDevice *hart() const { return m_hart.get(); } // wandfluh-sd7
+    dev::sim::HcsNode *node() const;    // HCS families
+    dev::sim::HartDevice *hart() const; // wandfluh-sd7
     const SimSpec &spec() const { return m_spec; }
     // The module address a master uses for module `index` (Modbus unit / node SADR / poll address).
     int moduleAddress(std::size_t index) const;
@@ -71,9 +79,7 @@ private:
 
     SimSpec m_spec;
     dev::sim::SimClock m_clock;
-    std::unique_ptr<dev::sim::HcsNode> m_node;
-    std::unique_ptr<dev::sim::HartDevice> m_hart;       // on m_clock while it lives
-    std::shared_ptr<dev::sim::HartServer> m_hartServer; // its HART front end
+    std::shared_ptr<dev::sim::SimDevice> m_device; // shared with the link (its server)
     link::SimLink *m_link = nullptr;
     QTimer m_timer;
     QElapsedTimer m_elapsed;

@@ -3,6 +3,7 @@
 #include "core/hex.h"
 #include "inspect/describe_any.h"
 #include "inspect/logged_frame.h"
+#include "transports/byte_span.h"
 
 #include <QIODevice>
 #include <QTextStream>
@@ -190,12 +191,6 @@ QString TelegramLog::directionText(vt::dev::Direction direction)
 
 namespace {
 
-std::span<const std::uint8_t> asSpan(const QByteArray &bytes)
-{
-    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
-            static_cast<std::size_t>(bytes.size())};
-}
-
 QString fromStd(const std::string &s)
 {
     return QString::fromStdString(s);
@@ -205,7 +200,7 @@ QString fromStd(const std::string &s)
 
 QString TelegramLog::hexText(const QByteArray &bytes)
 {
-    return fromStd(vt::dev::toHex(asSpan(bytes)));
+    return fromStd(vt::dev::toHex(vt::link::byteSpan(bytes)));
 }
 
 QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &options)
@@ -214,14 +209,15 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
         return r.note.isEmpty() ? tr("no reply") : tr("no reply: %1").arg(r.note);
     // describeLogged: the node image is the gateway telegram with padding, and a CANopen record
     // is a 16-byte SocketCAN image that is unwrapped first.
-    if (!vt::dev::inspect::protocolForLogKey(r.protocol.toStdString()))
+    const auto link = r.linkProtocol();
+    if (!link)
         return tr("%n byte(s)", nullptr, static_cast<int>(r.bytes.size()));
     vt::dev::AnyOptions any;
     any.family = options.family;
     any.direction = r.direction;
     any.dictionary = options.dictionary;
     const auto described =
-        vt::dev::inspect::describeLogged(r.protocol.toStdString(), asSpan(r.bytes), any);
+        vt::dev::inspect::describeLogged(*link, vt::link::byteSpan(r.bytes), any);
     if (!described)
         return fromStd(described.error());
     if (!described->summary.en.empty())

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/direction.h"
+#include "core/link_protocol.h"
 #include "core/local_text.h"
 #include "hcs/types.h"
 
@@ -14,6 +15,7 @@
 #include <QString>
 #include <QTimer>
 #include <deque>
+#include <optional>
 
 class QIODevice;
 
@@ -39,13 +41,18 @@ struct TelegramRecord
     QDateTime wallClock;     // UTC, for saving; invalid = stamped by append()
     vt::dev::Direction direction = vt::dev::Direction::Request; // a master's out = Request
     QString link;     // Link::description(): "serial /dev/ttyUSB0 19200 8E1"
-    QString protocol; // "modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen"
+    QString protocol; // the link protocol's key, as saved: "modbus-rtu", "node-image", …
     int module = -1;  // module address; -1 = unknown
     QByteArray bytes; // empty for Timeout
     Status status = Status::Ok;
     QString note; // exception text / reason
 
     bool isError() const { return status != Status::Ok; }
+    // The link protocol the key names; nullopt for a key no link has.
+    std::optional<vt::dev::LinkProtocol> linkProtocol() const
+    {
+        return vt::dev::fromKey<vt::dev::LinkProtocol>(protocol.toStdString());
+    }
 };
 
 // The inspector's filters; the same filter selects what is saved.

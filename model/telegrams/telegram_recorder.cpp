@@ -27,7 +27,7 @@ TelegramRecorder::TelegramRecorder(Session &session, TelegramLog &log, QObject *
 {
     QPointer<TelegramLog> target(&log);
     Session *s = &session;
-    const auto protocol = [s] { return QString::fromStdString(s->adapter().protocolKey()); };
+    const auto protocol = [s] { return QString::fromLatin1(dev::key(s->adapter().protocol())); };
     connect(&session, &Session::frameSent, this,
             [s, target, protocol](const QByteArray &bytes, int module, qint64) {
                 if (target)

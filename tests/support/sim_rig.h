@@ -33,9 +33,9 @@ inline const dev::DictionarySet &dictionaries()
 // What to simulate and how to reach it.
 struct SimSetup
 {
-    std::string family;                           // "opat", "dma-pn-v51", "wandfluh-sd7" …
-    std::size_t modules = 1;                      // HCS node size
-    std::string protocol;                         // "" = the simulator's default for the family
+    std::string family;      // "opat", "dma-pn-v51", "wandfluh-sd7" …
+    std::size_t modules = 1; // HCS node size
+    std::string protocol;    // a dev::LinkProtocol key; "" = the simulator's default for the family
     std::optional<link::FaultSpec> fault;         // the link behind a FaultLink
     std::optional<model::SessionOptions> options; // instead of those the connection picks
 };
@@ -114,7 +114,13 @@ inline std::unique_ptr<SimRig> openSim(const SimSetup &setup)
     spec.kind = model::ConnectionKind::Sim;
     spec.sim.family = setup.family;
     spec.sim.modules = setup.modules;
-    spec.sim.protocol = setup.protocol;
+    if (!setup.protocol.empty()) {
+        spec.sim.protocol = dev::fromKey<dev::LinkProtocol>(setup.protocol);
+        if (!spec.sim.protocol) {
+            ADD_FAILURE() << "no link protocol '" << setup.protocol << "'";
+            return nullptr;
+        }
+    }
     spec.fault = setup.fault;
     auto made = model::Connection::create(spec, dictionaries());
     if (!made.ok()) {

@@ -40,6 +40,13 @@ dev::HcsProduct productOfKey(const QString &key)
     return dev::HcsProduct::Unknown;
 }
 
+// The link protocol saved in the current group; nullopt when none (or an unknown one) is saved.
+std::optional<dev::LinkProtocol> storedProtocol(const QSettings &s)
+{
+    return dev::fromKey<dev::LinkProtocol>(
+        s.value(QStringLiteral("protocol")).toString().toStdString());
+}
+
 // Group guard: settings.beginGroup("connection/<kind>") … endGroup(), also on early return.
 class Group
 {
@@ -80,9 +87,7 @@ void ConnectionMemory::save(const model::ConnectionSpec &spec)
     case ConnectionKind::Tcp:
         s.setValue(QStringLiteral("host"), spec.host);
         s.setValue(QStringLiteral("port"), spec.port);
-        s.setValue(QStringLiteral("protocol"), spec.tcpProtocol == model::TcpProtocol::NodeImage
-                                                   ? QStringLiteral("node-image")
-                                                   : QStringLiteral("modbus-tcp"));
+        s.setValue(QStringLiteral("protocol"), QLatin1String(dev::key(spec.tcpProtocol)));
         break;
     case ConnectionKind::Can:
         s.setValue(QStringLiteral("interface"), spec.canInterface);
@@ -93,7 +98,8 @@ void ConnectionMemory::save(const model::ConnectionSpec &spec)
         s.setValue(QStringLiteral("family"), QString::fromStdString(spec.sim.family));
         s.setValue(QStringLiteral("modules"), static_cast<int>(spec.sim.modules));
         s.setValue(QStringLiteral("mode"), spec.sim.mode);
-        s.setValue(QStringLiteral("protocol"), QString::fromStdString(spec.sim.protocol));
+        if (spec.sim.protocol)
+            s.setValue(QStringLiteral("protocol"), QLatin1String(dev::key(*spec.sim.protocol)));
         break;
     }
     if (spec.unit)
@@ -123,10 +129,9 @@ std::optional<model::ConnectionSpec> ConnectionMemory::load(ConnectionKind kind)
     case ConnectionKind::Tcp:
         spec.host = s.value(QStringLiteral("host")).toString();
         spec.port = static_cast<quint16>(s.value(QStringLiteral("port"), spec.port).toUInt());
-        spec.tcpProtocol =
-            s.value(QStringLiteral("protocol")).toString() == QLatin1String("node-image")
-                ? model::TcpProtocol::NodeImage
-                : model::TcpProtocol::ModbusTcp;
+        spec.tcpProtocol = storedProtocol(s) == dev::LinkProtocol::NodeImage
+                               ? dev::LinkProtocol::NodeImage
+                               : dev::LinkProtocol::ModbusTcp;
         break;
     case ConnectionKind::Can:
         spec.canInterface = s.value(QStringLiteral("interface")).toString();
@@ -138,7 +143,7 @@ std::optional<model::ConnectionSpec> ConnectionMemory::load(ConnectionKind kind)
         spec.sim.modules =
             static_cast<std::size_t>(std::max(1, s.value(QStringLiteral("modules"), 1).toInt()));
         spec.sim.mode = s.value(QStringLiteral("mode"), 0).toInt();
-        spec.sim.protocol = s.value(QStringLiteral("protocol")).toString().toStdString();
+        spec.sim.protocol = storedProtocol(s);
         break;
     }
     bool ok = false;

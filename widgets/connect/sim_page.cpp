@@ -17,18 +17,20 @@ namespace {
 // size, enough for every fold the node image carries (CMD 15: up to 5 DMA modules).
 constexpr int kMaxModules = 8;
 
-const char *const kAutomatic = "";
-const char *const kModbusRtu = "modbus-rtu";
-const char *const kModbusTcp = "modbus-tcp";
-const char *const kNodeImage = "node-image";
-const char *const kHart = "hart";
+// The protocol choice's item data: the link protocol's key, empty for the family's default.
+std::optional<dev::LinkProtocol> protocolOfData(const QVariant &data)
+{
+    return dev::fromKey<dev::LinkProtocol>(data.toString().toStdString());
+}
 
-// The simulator serves HCS families (makeNode) and the HART SD7; DSP-408 needs PROFIBUS or
-// CANopen, which it does not simulate on a PC link (sim_endpoint.cpp).
+QString dataOfProtocol(std::optional<dev::LinkProtocol> protocol)
+{
+    return protocol ? QString::fromLatin1(dev::key(*protocol)) : QString();
+}
+
 bool simulated(const dev::Dictionary &dict)
 {
-    return !dict.abstract && (dict.protocol == dev::DeviceProtocol::Hcs ||
-                              dict.protocol == dev::DeviceProtocol::Hart);
+    return !dict.abstract && model::servedOverSimLink(dict.protocol);
 }
 
 } // namespace
@@ -99,10 +101,12 @@ void SimPage::fillForFamily()
         if (hcs) {
             for (const std::string &mode : dict->modes)
                 m_mode->addItem(QString(), QString::fromStdString(mode).toInt());
-            for (const char *p : {kAutomatic, kModbusRtu, kModbusTcp, kNodeImage})
-                m_protocol->addItem(QString(), QString::fromLatin1(p));
+            m_protocol->addItem(QString(), dataOfProtocol(std::nullopt));
+            for (dev::LinkProtocol p : {dev::LinkProtocol::ModbusRtu, dev::LinkProtocol::ModbusTcp,
+                                        dev::LinkProtocol::NodeImage})
+                m_protocol->addItem(QString(), dataOfProtocol(p));
         } else {
-            m_protocol->addItem(QString(), QString::fromLatin1(kHart));
+            m_protocol->addItem(QString(), dataOfProtocol(dev::LinkProtocol::Hart));
         }
     }
     m_mode->setEnabled(hcs);
@@ -129,7 +133,7 @@ void SimPage::load(const model::ConnectionSpec &spec)
         m_modules->setValue(static_cast<int>(spec.sim.modules));
     const int mode = m_mode->findData(spec.sim.mode);
     m_mode->setCurrentIndex(mode >= 0 ? mode : 0);
-    const int protocol = m_protocol->findData(QString::fromStdString(spec.sim.protocol));
+    const int protocol = m_protocol->findData(dataOfProtocol(spec.sim.protocol));
     m_protocol->setCurrentIndex(protocol >= 0 ? protocol : 0);
 }
 
@@ -140,7 +144,7 @@ model::ConnectionSpec SimPage::spec() const
     spec.sim.family = m_family->currentData().toString().toStdString();
     spec.sim.modules = static_cast<std::size_t>(m_modules->value());
     spec.sim.mode = m_mode->count() > 0 ? m_mode->currentData().toInt() : 0;
-    spec.sim.protocol = m_protocol->currentData().toString().toStdString();
+    spec.sim.protocol = protocolOfData(m_protocol->currentData());
     return spec;
 }
 
@@ -152,7 +156,7 @@ QString SimPage::problem() const
     // On a serial line unit 0 is the broadcast address, and that is where the OPAT master sits
     // (sim_endpoint.cpp): a node with slaves needs its gateway's Modbus TCP or the node image.
     if (dict->family == "opat" && m_modules->value() > 1 &&
-        m_protocol->currentData().toString() == QLatin1String(kModbusRtu))
+        protocolOfData(m_protocol->currentData()) == dev::LinkProtocol::ModbusRtu)
         return tr("Over Modbus RTU the OPAT master (address 0) is the broadcast address and cannot "
                   "answer; choose Modbus TCP or the node image for a node with slaves.");
     return {};
@@ -186,18 +190,19 @@ void SimPage::retranslateChoices()
     if (m_mode->count() == 0)
         m_mode->setPlaceholderText(tr("not chosen at start-up"));
     for (int i = 0; i < m_protocol->count(); ++i) {
-        const QString key = m_protocol->itemData(i).toString();
-        QString text;
-        if (key == QLatin1String(kAutomatic))
-            text = tr("Automatic (Modbus RTU for one module, Modbus TCP for a node)");
-        else if (key == QLatin1String(kModbusRtu))
-            text = tr("Modbus RTU");
-        else if (key == QLatin1String(kModbusTcp))
-            text = tr("Modbus TCP");
-        else if (key == QLatin1String(kNodeImage))
-            text = tr("Node image (cyclic telegrams, CMD 3/6/15)");
-        else
-            text = tr("HART");
+        const auto protocol = protocolOfData(m_protocol->itemData(i));
+        QString text = tr("Automatic (Modbus RTU for one module, Modbus TCP for a node)");
+        if (protocol) {
+            switch (*protocol) {
+            case dev::LinkProtocol::ModbusRtu: text = tr("Modbus RTU"); break;
+            case dev::LinkProtocol::ModbusTcp: text = tr("Modbus TCP"); break;
+            case dev::LinkProtocol::NodeImage:
+                text = tr("Node image (cyclic telegrams, CMD 3/6/15)");
+                break;
+            case dev::LinkProtocol::Hart: text = tr("HART"); break;
+            case dev::LinkProtocol::Canopen: text = QString::fromLatin1(dev::key(*protocol)); break;
+            }
+        }
         m_protocol->setItemText(i, text);
     }
 }

@@ -34,8 +34,8 @@ TcpPage::TcpPage(QWidget *parent) : ConnectPage(parent)
     form->addRow(m_portLabel, m_port);
     m_protocol = new QComboBox(this);
     m_protocol->setObjectName(QStringLiteral("tcpProtocol"));
-    m_protocol->addItem(QString(), static_cast<int>(model::TcpProtocol::ModbusTcp));
-    m_protocol->addItem(QString(), static_cast<int>(model::TcpProtocol::NodeImage));
+    m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::ModbusTcp));
+    m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::NodeImage));
     m_protocolLabel = new QLabel(this);
     form->addRow(m_protocolLabel, m_protocol);
     m_address = new QSpinBox(this);
@@ -78,7 +78,7 @@ model::ConnectionSpec TcpPage::spec() const
     spec.kind = model::ConnectionKind::Tcp;
     spec.host = m_host->text().trimmed();
     spec.port = static_cast<quint16>(m_port->value());
-    spec.tcpProtocol = static_cast<model::TcpProtocol>(m_protocol->currentData().toInt());
+    spec.tcpProtocol = static_cast<dev::LinkProtocol>(m_protocol->currentData().toInt());
     spec.unit = m_address->value();
     spec.product = m_product->product();
     return spec;

@@ -1,5 +1,6 @@
 #include "widgets/fold/fold_modules_page.h"
 
+#include "core/version.h"
 #include "dict/dictionary.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"
@@ -21,15 +22,6 @@ namespace vt::ui {
 namespace {
 
 enum Column { ColModule, ColVersion, ColMode, ColName, ColCount };
-
-int majorOf(const std::string &version)
-{
-    try {
-        return version.empty() ? 0 : std::stoi(version);
-    } catch (...) {
-        return 0;
-    }
-}
 
 } // namespace
 
@@ -241,17 +233,17 @@ void FoldModulesPage::scanNext()
     }
     const int address = m_scanAddresses[m_scanCursor];
     m_status->setText(tr("Scanning address %1 …").arg(address));
-    connection->access().identify(
-        address, [this, address, g = m_scanGeneration,
-                  self = QPointer<FoldModulesPage>(this)](const model::IdentifyResult &r) {
-            if (!self || g != m_scanGeneration)
-                return;
-            if (r.ok)
-                m_scanFound.push_back(
-                    {address, majorOf(r.module.identification.version), r.module.mode});
-            ++m_scanCursor;
-            scanNext();
-        });
+    connection->access().identify(address, [this, address, g = m_scanGeneration,
+                                            self = QPointer<FoldModulesPage>(this)](
+                                               const model::IdentifyResult &r) {
+        if (!self || g != m_scanGeneration)
+            return;
+        if (r.ok)
+            m_scanFound.push_back(
+                {address, dev::majorVersionNumber(r.module.identification.version), r.module.mode});
+        ++m_scanCursor;
+        scanNext();
+    });
 }
 
 void FoldModulesPage::retranslate()

@@ -6,6 +6,7 @@
 #include "inspect/logged_frame.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -53,11 +54,6 @@ QStringList fieldsOf(ComposeKind kind, bool tcp)
     case ComposeKind::SdoDownload: return {"node", "index", "subindex", "width", "value"};
     }
     return {};
-}
-
-QByteArray toQt(const vt::dev::Bytes &b)
-{
-    return QByteArray(reinterpret_cast<const char *>(b.data()), static_cast<qsizetype>(b.size()));
 }
 
 } // namespace
@@ -142,10 +138,10 @@ void ComposePanel::setConnection(vt::model::Connection *connection)
             for (const char *name : {"sadr", "unit", "poll", "node"})
                 m_edits[QString::fromLatin1(name)]->setText(first);
         }
-        const QString key = connection->protocolKey();
-        if (key == QLatin1String("modbus-tcp"))
+        const vt::dev::LinkProtocol protocol = connection->protocol();
+        if (protocol == vt::dev::LinkProtocol::ModbusTcp)
             setModbusTcp(true);
-        else if (key == QLatin1String("modbus-rtu"))
+        else if (protocol == vt::dev::LinkProtocol::ModbusRtu)
             setModbusTcp(false);
     }
     updateSend();
@@ -320,9 +316,10 @@ void ComposePanel::rebuild()
         o.protocol = m_frame->protocol;
         const auto d = vt::dev::describeAny(m_frame->bytes, o);
         if (d)
-            m_detail->setFrame(toQt(m_frame->bytes), *d);
+            m_detail->setFrame(vt::link::toByteArray(m_frame->bytes), *d);
         else
-            m_detail->setUndescribed(toQt(m_frame->bytes), QString::fromStdString(d.error()));
+            m_detail->setUndescribed(vt::link::toByteArray(m_frame->bytes),
+                                     QString::fromStdString(d.error()));
     } else {
         m_bytes->clear();
         m_detail->clear();
@@ -354,14 +351,13 @@ QString ComposePanel::sendBlockedReason() const
         return tr("Not connected.");
     if (m_busy)
         return tr("Waiting for the answer to the last frame.");
-    if (m_frame->linkKey.empty())
+    if (!m_frame->link)
         return tr("No link of ValveTune carries %1 frames (PROFIBUS DP needs a master card); copy "
                   "the bytes instead.")
-            .arg(QString::fromLatin1(vt::dev::protocolName(m_frame->protocol)));
-    const QString link = m_connection->protocolKey();
-    if (link != QString::fromStdString(m_frame->linkKey))
+            .arg(QString::fromLatin1(vt::dev::key(m_frame->protocol)));
+    if (m_connection->protocol() != *m_frame->link)
         return tr("The current link speaks %1; this frame needs %2.")
-            .arg(link, QString::fromStdString(m_frame->linkKey));
+            .arg(m_connection->protocolKey(), QString::fromLatin1(vt::dev::key(*m_frame->link)));
     return {};
 }
 
@@ -416,10 +412,8 @@ bool ComposePanel::send()
     if (const auto *node = dynamic_cast<const vt::dev::access::NodeImageAdapter *>(
             &m_connection->session().adapter()))
         image = node->layout().outputBytes;
-    vt::dev::access::Transaction t;
-    t.kind = vt::dev::access::TransactionKind::Raw;
-    t.module = moduleOf(m_spec);
-    t.raw = vt::dev::inspect::wireBytes(frame, image);
+    auto t = vt::dev::access::Transaction::rawFrame(moduleOf(m_spec),
+                                                    vt::dev::inspect::wireBytes(frame, image));
     m_busy = true;
     updateSend();
     m_result->setText(tr("Sent; waiting for the answer…"));

@@ -6,6 +6,7 @@
 #include "inspect/hex_input.h"
 #include "inspect/logged_frame.h"
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -19,13 +20,13 @@ namespace vt::ui {
 namespace {
 
 using vt::dev::Direction;
-using vt::dev::Protocol;
+using vt::dev::FrameFormat;
 
 constexpr int kAuto = -1;
 
-QString protocolKey(Protocol p)
+QString protocolKey(FrameFormat p)
 {
-    return QString::fromLatin1(vt::dev::protocolName(p));
+    return QString::fromLatin1(vt::dev::key(p));
 }
 
 } // namespace
@@ -41,7 +42,7 @@ DecodePanel::DecodePanel(QWidget *parent)
     m_input->setMaximumBlockCount(2000);
     m_input->setFixedHeight(m_input->fontMetrics().height() * 4 + 12);
     m_protocol->addItem(QString(), kAuto);
-    for (Protocol p : vt::dev::allProtocols())
+    for (FrameFormat p : vt::dev::kFrameFormats)
         m_protocol->addItem(protocolKey(p), static_cast<int>(p));
     m_family->addItem(QStringLiteral("DMA"), static_cast<int>(vt::dev::hcs::Family::Dma));
     m_family->addItem(QStringLiteral("OPAT"), static_cast<int>(vt::dev::hcs::Family::Opat));
@@ -90,7 +91,7 @@ QString DecodePanel::text() const
     return m_input->toPlainText();
 }
 
-void DecodePanel::setProtocol(std::optional<Protocol> protocol)
+void DecodePanel::setProtocol(std::optional<FrameFormat> protocol)
 {
     m_protocol->setCurrentIndex(
         m_protocol->findData(protocol ? static_cast<int>(*protocol) : kAuto));
@@ -140,8 +141,7 @@ void DecodePanel::decode()
                 true);
         return;
     }
-    const QByteArray bytes(reinterpret_cast<const char *>(input->bytes.data()),
-                           static_cast<qsizetype>(input->bytes.size()));
+    const QByteArray bytes = vt::link::toByteArray(input->bytes);
 
     vt::dev::AnyOptions options;
     options.family = static_cast<vt::dev::hcs::Family>(m_family->currentData().toInt());
@@ -179,19 +179,20 @@ void DecodePanel::decode()
                      .arg(protocolKey(c->protocol),
                           options.direction == Direction::Request ? tr("request") : tr("response"));
     } else {
-        options.protocol = static_cast<Protocol>(chosen);
+        options.protocol = static_cast<FrameFormat>(chosen);
     }
 
     // A 16-byte CANopen paste is a SocketCAN image as the log records it.
-    const bool socketCan = options.protocol == Protocol::Canopen && !input->cobId &&
+    const bool socketCan = options.protocol == FrameFormat::Canopen && !input->cobId &&
                            input->bytes.size() == vt::dev::canopen::kSocketCanFrameSize;
     auto described = socketCan ? vt::dev::Result<vt::dev::Description, std::string>(
                                      vt::dev::inspect::describeSocketCanImage(input->bytes))
                                : vt::dev::describeAny(input->bytes, options);
     // A PLC process image: the gateway telegram followed by padding (DMA Profinet manual §4.5.4).
-    if (options.protocol == Protocol::Gateway && described && described->error &&
+    if (options.protocol == FrameFormat::Gateway && described && described->error &&
         described->error->code == vt::dev::DecodeErrc::TooLong)
-        described = vt::dev::inspect::describeLogged("node-image", input->bytes, options);
+        described = vt::dev::inspect::describeLogged(vt::dev::LinkProtocol::NodeImage, input->bytes,
+                                                     options);
     if (!described) {
         m_detail->setUndescribed(bytes, QString::fromStdString(described.error()));
         setStatus(QString::fromStdString(described.error()), true);

@@ -34,12 +34,12 @@ public:
     void setText(const QString &text);
     QString text() const;
     // nullopt = auto.
-    void setProtocol(std::optional<vt::dev::Protocol> protocol);
+    void setProtocol(std::optional<vt::dev::FrameFormat> protocol);
     void setDirection(vt::dev::Direction direction);
 
     // What the last decode found: the protocol used (nullopt when none), the status line and
     // the description shown.
-    std::optional<vt::dev::Protocol> decodedProtocol() const { return m_decoded; }
+    std::optional<vt::dev::FrameFormat> decodedProtocol() const { return m_decoded; }
     QString statusText() const;
     const vt::dev::Description &description() const { return m_description; }
     FrameDetail *detail() const { return m_detail; }
@@ -64,7 +64,7 @@ private:
     QLabel *m_directionLabel;
     QLabel *m_status;
     FrameDetail *m_detail;
-    std::optional<vt::dev::Protocol> m_decoded;
+    std::optional<vt::dev::FrameFormat> m_decoded;
     vt::dev::Description m_description;
 };
 

@@ -10,6 +10,7 @@
 #include "model/session/connection.h"
 #include "model/telegrams/telegram_log_model.h"
 #include "model/text_language.h"
+#include "transports/byte_span.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -30,18 +31,6 @@
 #include <QVBoxLayout>
 
 namespace vt::ui {
-namespace {
-
-// The links' protocol keys (ProtocolAdapter::protocolKey()), as the log records them.
-const char *const kLogProtocols[] = {"modbus-rtu", "modbus-tcp", "node-image", "hart", "canopen"};
-
-std::span<const std::uint8_t> asSpan(const QByteArray &b)
-{
-    return {reinterpret_cast<const std::uint8_t *>(b.constData()),
-            static_cast<std::size_t>(b.size())};
-}
-
-} // namespace
 
 InspectorView::InspectorView(QWidget *parent)
     : QWidget(parent), m_moduleLabel(new QLabel(this)), m_moduleFilter(new QComboBox(this)),
@@ -54,8 +43,10 @@ InspectorView::InspectorView(QWidget *parent)
 {
     m_moduleFilter->addItem(QString(), -1);
     m_protocolFilter->addItem(QString(), QString());
-    for (const char *key : kLogProtocols)
-        m_protocolFilter->addItem(QString::fromLatin1(key), QString::fromLatin1(key));
+    for (vt::dev::LinkProtocol protocol : vt::dev::kLinkProtocols) {
+        const QString key = QString::fromLatin1(vt::dev::key(protocol));
+        m_protocolFilter->addItem(key, key);
+    }
     m_pause->setCheckable(true);
     m_pause->setEnabled(false);
     m_clear->setEnabled(false);
@@ -367,15 +358,18 @@ void InspectorView::onCurrentRowChanged()
     if (r->direction == vt::dev::Direction::Response && m_log) {
         const auto request = vt::model::requestSeqOf(*m_log, r->seq);
         const vt::model::TelegramRecord *q = request ? m_log->find(*request) : nullptr;
-        if (q && q->protocol == r->protocol) {
+        if (q && q->protocol == r->protocol && r->linkProtocol()) {
             const auto carried = vt::dev::inspect::carriedBy(
-                q->protocol.toStdString(), asSpan(q->bytes), q->direction, o.family);
+                *r->linkProtocol(), vt::link::byteSpan(q->bytes), q->direction, o.family);
             if (!carried.ids.empty())
                 firstId = carried.ids.front();
         }
     }
+    const auto link = r->linkProtocol();
     const auto d =
-        vt::dev::inspect::describeLogged(r->protocol.toStdString(), asSpan(r->bytes), o, firstId);
+        link ? vt::dev::inspect::describeLogged(*link, vt::link::byteSpan(r->bytes), o, firstId)
+             : vt::dev::Result<vt::dev::Description, std::string>("no description for protocol '" +
+                                                                  r->protocol.toStdString() + "'");
     if (d)
         m_detail->setFrame(r->bytes, *d);
     else
@@ -408,9 +402,9 @@ void InspectorView::onContextMenu(const QPoint &pos)
     }
     QAction *copy = menu.addAction(tr("Decode a copy"));
     connect(copy, &QAction::triggered, this,
-            [this, bytes = r->bytes, protocol = r->protocol, direction = r->direction] {
-                const auto p = vt::dev::inspect::protocolForLogKey(protocol.toStdString());
-                m_decode->setProtocol(p);
+            [this, bytes = r->bytes, link = r->linkProtocol(), direction = r->direction] {
+                m_decode->setProtocol(link ? std::optional(vt::dev::frameFormatOf(*link))
+                                           : std::nullopt);
                 m_decode->setDirection(direction);
                 m_decode->setText(vt::model::TelegramLog::hexText(bytes));
                 m_tabs->setCurrentWidget(m_decode);

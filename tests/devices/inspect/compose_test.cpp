@@ -32,7 +32,7 @@ TEST(Compose, GatewayCmd3AndCmd6EqualOpatSec2_7)
     ComposedFrame f = built(s);
     EXPECT_EQ(f.bytes, kOpat27ReadRequest);
     EXPECT_FALSE(f.writes);
-    EXPECT_EQ(f.linkKey, "node-image");
+    EXPECT_EQ(f.link, LinkProtocol::NodeImage);
 
     s.kind = ComposeKind::GatewayWrite;
     s.tadr = 0x23;
@@ -74,13 +74,13 @@ TEST(Compose, ModbusRtuAndTcp)
     s.count = 1;
     ComposedFrame f = built(s);
     EXPECT_EQ(f.bytes, (Bytes{0x01, 0x03, 0x00, 0x07, 0x00, 0x01, 0x35, 0xCB}));
-    EXPECT_EQ(f.linkKey, "modbus-rtu");
+    EXPECT_EQ(f.link, LinkProtocol::ModbusRtu);
     s.modbusTcp = true;
     s.transaction = 1;
     f = built(s);
     EXPECT_EQ(f.bytes,
               (Bytes{0x00, 0x01, 0x00, 0x00, 0x00, 0x06, 0x01, 0x03, 0x00, 0x07, 0x00, 0x01}));
-    EXPECT_EQ(f.linkKey, "modbus-tcp");
+    EXPECT_EQ(f.link, LinkProtocol::ModbusTcp);
     s.kind = ComposeKind::ModbusWrite;
     s.modbusTcp = false;
     s.id = 0x30;
@@ -102,8 +102,8 @@ TEST(Compose, PkwEqualsEd1Sec4_6_1)
     ComposedFrame f = built(s);
     EXPECT_EQ(f.bytes, (Bytes{0x20, 0x49, 0x03, 0x00, 0x00, 0x00, 0x01, 0xC2}));
     EXPECT_TRUE(f.writes);
-    EXPECT_TRUE(f.linkKey.empty()); // PROFIBUS DP: no ValveTune link carries it
-    s.kind = ComposeKind::PkwRead;  // example 2: IND 3, PNU 98
+    EXPECT_FALSE(f.link);          // PROFIBUS DP: no ValveTune link carries it
+    s.kind = ComposeKind::PkwRead; // example 2: IND 3, PNU 98
     s.pnu = 98;
     EXPECT_EQ(built(s).bytes, (Bytes{0x10, 0x62, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00}));
 }
@@ -122,7 +122,7 @@ TEST(Compose, HartParameterWriteEqualsSec4_4_1)
     EXPECT_EQ(f.bytes, (Bytes{0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x82, 0xA3, 0xF0, 0x12, 0x34, 0x56,
                               0x83, 0x05, 0xFA, 0x06, 0x00, 0x01, 0xC2, 0x18}));
     EXPECT_TRUE(f.writes);
-    EXPECT_EQ(f.linkKey, "hart");
+    EXPECT_EQ(f.link, LinkProtocol::Hart);
     ComposeSpec zero;
     zero.kind = ComposeKind::HartCommand; // command 0 in a short frame (§2.3)
     zero.pollAddress = 0;

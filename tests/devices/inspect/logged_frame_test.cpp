@@ -15,7 +15,7 @@ TEST(LoggedFrame, CanopenImageIsUnwrappedWithImageOffsets)
     const auto frame =
         canopen::makeCanFrame(0x585, Bytes{0x4B, 0x41, 0x60, 0x00, 0x37, 0x02, 0x00, 0x00});
     const auto image = canopen::toSocketCan(frame);
-    const auto d = describeLogged("canopen", image, {});
+    const auto d = describeLogged(LinkProtocol::Canopen, image, {});
     ASSERT_TRUE(d.ok());
     ASSERT_TRUE(d->ok()) << d->summary.en;
     const FieldSpan *id = d->field("can.id");
@@ -35,7 +35,7 @@ TEST(LoggedFrame, BrokenCanopenImageShowsItsError)
 {
     std::array<std::uint8_t, 16> image{};
     image[4] = 12; // CAN FD length
-    const auto d = describeLogged("canopen", image, {});
+    const auto d = describeLogged(LinkProtocol::Canopen, image, {});
     ASSERT_TRUE(d.ok());
     EXPECT_FALSE(d->ok());
 }
@@ -47,14 +47,15 @@ TEST(LoggedFrame, NodeImageIsAPaddedGatewayTelegram)
     image.resize(42, 0);
     AnyOptions o;
     o.direction = Direction::Request;
-    const auto d = describeLogged("node-image", image, o);
+    const auto d = describeLogged(LinkProtocol::NodeImage, image, o);
     ASSERT_TRUE(d.ok());
     EXPECT_TRUE(d->ok());
     ASSERT_NE(d->field("ID"), nullptr);
     EXPECT_EQ(d->field("ID")->offset, 3u);
     // The same bytes as a bare gateway telegram are too long.
-    const auto bare = describeLogged("gateway", image, o);
+    o.protocol = FrameFormat::Gateway;
+    const auto bare = describeAny(image, o);
     ASSERT_TRUE(bare.ok());
     EXPECT_FALSE(bare->ok());
-    EXPECT_FALSE(describeLogged("no-such-link", image, o).ok());
+    EXPECT_FALSE(fromKey<LinkProtocol>("no-such-link"));
 }

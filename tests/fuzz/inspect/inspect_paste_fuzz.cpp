@@ -45,23 +45,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             o.cobId = input->cobId;
             if (!c->families.empty())
                 o.family = c->families.front();
-            const auto d = c->protocol == Protocol::Gateway
-                               ? describeLogged("node-image", bytes, o)
-                               : describeLogged(protocolName(c->protocol), bytes, o);
+            const auto d = c->protocol == FrameFormat::Gateway
+                               ? describeLogged(LinkProtocol::NodeImage, bytes, o)
+                               : describeAny(bytes, o);
             require(d.ok());
             checkFields(*d, bytes.size());
         }
     }
-    for (const char *key : {"gateway", "node-image", "modbus-rtu", "modbus-tcp", "profidrive",
-                            "pkw", "pzd", "hart", "canopen"}) {
-        for (Direction dir : {Direction::Request, Direction::Response}) {
-            AnyOptions o;
-            o.direction = dir;
-            o.cobId = input->cobId;
-            const auto d = describeLogged(key, bytes, o);
+    for (Direction dir : {Direction::Request, Direction::Response}) {
+        AnyOptions o;
+        o.direction = dir;
+        o.cobId = input->cobId;
+        for (FrameFormat format : kFrameFormats) {
+            o.protocol = format;
+            const auto d = describeAny(bytes, o);
             if (d.ok())
                 checkFields(*d, bytes.size());
-            (void)carriedBy(key, bytes, dir);
+        }
+        for (LinkProtocol link : kLinkProtocols) {
+            const auto d = describeLogged(link, bytes, o);
+            if (d.ok())
+                checkFields(*d, bytes.size());
+            (void)carriedBy(link, bytes, dir);
         }
     }
     return 0;

@@ -34,7 +34,7 @@ struct Endpoint
     std::unique_ptr<model::Session> session;
     std::unique_ptr<model::DeviceAccess> access;
 
-    bool open(std::unique_ptr<link::Link> l, model::AdapterKind kind, const std::string &family,
+    bool open(std::unique_ptr<link::Link> l, dev::LinkProtocol kind, const std::string &family,
               model::SessionOptions options = {})
     {
         link = std::move(l);
@@ -111,7 +111,7 @@ TEST(SessionLinks, ModbusRtuOverAPseudoTerminal)
     Endpoint e;
     ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(link::SerialSettings::hcsDefault(
                            QStringLiteral("/dev/../../..") + symlink)),
-                       model::AdapterKind::ModbusRtu, "dma-pn-v51", options));
+                       dev::LinkProtocol::ModbusRtu, "dma-pn-v51", options));
     const auto id = e.identify(1);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
     EXPECT_EQ(id.module.dictionary->family, "dma-pn-v51");
@@ -128,7 +128,7 @@ TEST(SessionLinks, ModbusTcpOnLoopbackToAThreeModuleNode)
     const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
     Endpoint e;
     ASSERT_TRUE(e.open(std::make_unique<link::TcpLink>(QStringLiteral("127.0.0.1"), port),
-                       model::AdapterKind::ModbusTcp, "dma-pb-v32"));
+                       dev::LinkProtocol::ModbusTcp, "dma-pb-v32"));
     for (int address = 1; address <= 3; ++address) {
         const auto id = e.identify(address);
         ASSERT_TRUE(id.ok) << address << ": " << id.message.toStdString();
@@ -148,7 +148,7 @@ TEST(SessionLinks, NodeImageOnLoopback)
     const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
     Endpoint e;
     ASSERT_TRUE(e.open(std::make_unique<link::TcpLink>(QStringLiteral("127.0.0.1"), port),
-                       model::AdapterKind::NodeImage, "dma-pn-v13"));
+                       dev::LinkProtocol::NodeImage, "dma-pn-v13"));
     const auto id = e.identify(2);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
     EXPECT_EQ(id.module.dictionary->family, "dma-pn-v13");
@@ -168,7 +168,7 @@ TEST(SessionLinks, CanopenSdoThroughASocketpair)
     Endpoint e;
     ASSERT_TRUE(e.open(std::make_unique<link::CanLink>(link::CanLink::AdoptedFd{fds[0]},
                                                        QStringLiteral("socketpair")),
-                       model::AdapterKind::CanopenHcs, "dma-pn-v51"));
+                       dev::LinkProtocol::Canopen, "dma-pn-v51"));
     const auto id = e.identify(5);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
     EXPECT_EQ(id.module.dictionary->family, "dma-pn-v51");
@@ -190,8 +190,8 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     options.baudRate = settings.baudRate;
     options.bitsPerCharacter = settings.bitsPerCharacter();
     Endpoint e;
-    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(settings), model::AdapterKind::Hart, {},
-                       options));
+    ASSERT_TRUE(
+        e.open(std::make_unique<link::SerialLink>(settings), dev::LinkProtocol::Hart, {}, options));
     const auto id = e.identify(0);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
     EXPECT_EQ(id.module.dictionary->family, "wandfluh-sd7");

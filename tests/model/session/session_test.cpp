@@ -36,7 +36,7 @@ TEST(Session, AnOpatNodeIsReachedModuleByModuleThroughItsGateway)
 {
     auto c = openSim("opat", 3); // master SADR 0 + CAN slaves 1 and 2, Modbus TCP
     ASSERT_TRUE(c);
-    EXPECT_EQ(c->simEndpoint()->spec().protocol, "modbus-tcp");
+    EXPECT_EQ(c->simEndpoint()->spec().protocol, dev::LinkProtocol::ModbusTcp);
     for (std::size_t i = 0; i < 3; ++i) {
         std::optional<model::IdentifyResult> result;
         c->access().identify(c->address(i), [&](const model::IdentifyResult &r) { result = r; });

@@ -85,7 +85,7 @@ TEST(ConnectDialog, TcpFieldsMakeATcpSpec)
     child<QLineEdit>(dialog, "tcpHost")->setText(QStringLiteral(" 127.0.0.1 "));
     child<QSpinBox>(dialog, "tcpPort")->setValue(1502);
     selectData(child<QComboBox>(dialog, "tcpProtocol"),
-               static_cast<int>(model::TcpProtocol::NodeImage));
+               static_cast<int>(dev::LinkProtocol::NodeImage));
     child<QSpinBox>(dialog, "tcpAddress")->setValue(0);
     selectData(child<QComboBox>(dialog, "tcpProduct"), static_cast<int>(dev::HcsProduct::Opat));
 
@@ -94,7 +94,7 @@ TEST(ConnectDialog, TcpFieldsMakeATcpSpec)
     EXPECT_EQ(spec.kind, ConnectionKind::Tcp);
     EXPECT_EQ(spec.host, QStringLiteral("127.0.0.1"));
     EXPECT_EQ(spec.port, 1502);
-    EXPECT_EQ(spec.tcpProtocol, model::TcpProtocol::NodeImage);
+    EXPECT_EQ(spec.tcpProtocol, dev::LinkProtocol::NodeImage);
     EXPECT_EQ(spec.unit, 0); // the OPAT master
     EXPECT_EQ(spec.product, dev::HcsProduct::Opat);
 }
@@ -154,7 +154,7 @@ TEST(ConnectDialog, SimulatorFieldsMakeASimSpec)
     EXPECT_EQ(spec.sim.family, "opat");
     EXPECT_EQ(spec.sim.modules, 3u);
     EXPECT_EQ(spec.sim.mode, 4);
-    EXPECT_EQ(spec.sim.protocol, "node-image");
+    EXPECT_EQ(spec.sim.protocol, dev::LinkProtocol::NodeImage);
 
     // The SD7 has one module, no start-up mode and HART only.
     selectData(child<QComboBox>(dialog, "simFamily"), QStringLiteral("wandfluh-sd7"));
@@ -163,7 +163,7 @@ TEST(ConnectDialog, SimulatorFieldsMakeASimSpec)
     const model::ConnectionSpec sd7 = dialog.spec();
     EXPECT_EQ(sd7.sim.family, "wandfluh-sd7");
     EXPECT_EQ(sd7.sim.modules, 1u);
-    EXPECT_EQ(sd7.sim.protocol, "hart");
+    EXPECT_EQ(sd7.sim.protocol, dev::LinkProtocol::Hart);
 }
 
 TEST(ConnectDialog, SimulatorOffersEveryFamilyItCanServe)

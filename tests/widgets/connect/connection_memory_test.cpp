@@ -43,7 +43,7 @@ TEST(ConnectionMemory, EveryKindRoundTripsThroughAFile)
     tcp.kind = ConnectionKind::Tcp;
     tcp.host = QStringLiteral("192.168.0.10");
     tcp.port = 1502;
-    tcp.tcpProtocol = model::TcpProtocol::NodeImage;
+    tcp.tcpProtocol = dev::LinkProtocol::NodeImage;
     tcp.unit = 0;
     tcp.product = dev::HcsProduct::Opat;
 
@@ -63,7 +63,7 @@ TEST(ConnectionMemory, EveryKindRoundTripsThroughAFile)
     sim.sim.family = "opat";
     sim.sim.modules = 3;
     sim.sim.mode = 6;
-    sim.sim.protocol = "node-image";
+    sim.sim.protocol = dev::LinkProtocol::NodeImage;
 
     {
         auto settings = temp.open();
@@ -88,7 +88,7 @@ TEST(ConnectionMemory, EveryKindRoundTripsThroughAFile)
     ASSERT_TRUE(t);
     EXPECT_EQ(t->host, tcp.host);
     EXPECT_EQ(t->port, tcp.port);
-    EXPECT_EQ(t->tcpProtocol, model::TcpProtocol::NodeImage);
+    EXPECT_EQ(t->tcpProtocol, dev::LinkProtocol::NodeImage);
     EXPECT_EQ(t->unit, 0);
     EXPECT_EQ(t->product, dev::HcsProduct::Opat);
 
@@ -109,7 +109,7 @@ TEST(ConnectionMemory, EveryKindRoundTripsThroughAFile)
     EXPECT_EQ(m->sim.family, "opat");
     EXPECT_EQ(m->sim.modules, 3u);
     EXPECT_EQ(m->sim.mode, 6);
-    EXPECT_EQ(m->sim.protocol, "node-image");
+    EXPECT_EQ(m->sim.protocol, dev::LinkProtocol::NodeImage);
 
     // Everything lives in the "connection" group.
     EXPECT_EQ(settings->childGroups(), QStringList{QStringLiteral("connection")});

@@ -16,7 +16,7 @@
 
 using namespace vt;
 using vt::dev::Direction;
-using vt::dev::Protocol;
+using vt::dev::FrameFormat;
 using vt::ui::DecodePanel;
 
 namespace {
@@ -41,7 +41,7 @@ struct Case
 {
     const char *section;
     dev::Bytes bytes;
-    std::optional<Protocol> protocol; // nullopt = auto
+    std::optional<FrameFormat> protocol; // nullopt = auto
     Direction direction;
     const char *key;
     int offset, length;
@@ -60,15 +60,15 @@ TEST(DecodePanel, WorkedExamplesDecodeAndHighlightTheirFields)
          "1000"},
         {"DMA §3.7 CMD 3 answer", kDma37ReadResponse, std::nullopt, Direction::Response, "CNT", 3,
          1, "2"},
-        {"OPAT §2.3 error", kOpat23ReadError, Protocol::Gateway, Direction::Response, "EXCE", 3, 1,
-         "5"},
+        {"OPAT §2.3 error", kOpat23ReadError, FrameFormat::Gateway, Direction::Response, "EXCE", 3,
+         1, "5"},
         {"OPAT §3.4.2 CMD 15", kOpat342Request, std::nullopt, Direction::Request, "SNUM", 1, 1,
          "2"},
         {"OPAT §5.6 PROFIdrive + CMD 15", kSec56Request, std::nullopt, Direction::Request, "STW1",
          0, 2, nullptr},
         {"ED1/SD1 §4.6.1 ex. 1 PKW",
          {0x20, 0x49, 0x03, 0x00, 0x00, 0x00, 0x01, 0xC2},
-         Protocol::Pkw,
+         FrameFormat::Pkw,
          Direction::Request,
          "pkw.pnu",
          0,
@@ -85,7 +85,7 @@ TEST(DecodePanel, WorkedExamplesDecodeAndHighlightTheirFields)
          "450 (0x01C2)"},
         {"CiA 301 expedited download",
          {0x2B, 0x40, 0x60, 0x00, 0x0F, 0x00, 0x00, 0x00},
-         Protocol::Canopen,
+         FrameFormat::Canopen,
          Direction::Request,
          "sdo.index",
          1,
@@ -150,14 +150,14 @@ TEST(DecodePanel, CorruptedFramesShowTheirErrorWithoutCrashing)
     panel.resize(900, 600);
     panel.show();
     // Modbus RTU with a broken CRC (Modbus over Serial Line §2.5.1.2).
-    panel.setProtocol(Protocol::ModbusRtu);
+    panel.setProtocol(FrameFormat::ModbusRtu);
     panel.setText(QStringLiteral("01 03 00 07 00 01 35 CC"));
     ASSERT_FALSE(panel.description().ok());
     EXPECT_EQ(panel.description().error->code, dev::DecodeErrc::BadChecksum);
     EXPECT_TRUE(panel.detail()->headline().contains(QStringLiteral("byte 6")));
     EXPECT_EQ(panel.detail()->hexView()->errorOffset(), 6);
     // A truncated CMD 6 (OPAT manual §2.4 needs 7 bytes).
-    panel.setProtocol(Protocol::Gateway);
+    panel.setProtocol(FrameFormat::Gateway);
     panel.setText(QStringLiteral("23 00 06 00 30"));
     ASSERT_FALSE(panel.description().ok());
     EXPECT_EQ(panel.description().error->code, dev::DecodeErrc::Truncated);
@@ -181,12 +181,12 @@ TEST(DecodePanel, AutoSaysWhenItCannotDecide)
     // A candump frame is unambiguous.
     panel.setText(QStringLiteral("605#2B4060000F000000"));
     ASSERT_TRUE(panel.decodedProtocol().has_value());
-    EXPECT_EQ(*panel.decodedProtocol(), Protocol::Canopen);
+    EXPECT_EQ(*panel.decodedProtocol(), FrameFormat::Canopen);
     // A Modbus RTU answer: auto picks the response direction by itself.
     panel.setDirection(Direction::Request);
     panel.setText(QStringLiteral("01 83 02 C0 F1"));
     ASSERT_TRUE(panel.decodedProtocol().has_value());
-    EXPECT_EQ(*panel.decodedProtocol(), Protocol::ModbusRtu);
+    EXPECT_EQ(*panel.decodedProtocol(), FrameFormat::ModbusRtu);
     EXPECT_TRUE(panel.description().ok());
 }
 

@@ -1,0 +1,25 @@
+#include "core/link_protocol.h"
+
+namespace vt::dev {
+
+const char *key(LinkProtocol protocol)
+{
+    switch (protocol) {
+    case LinkProtocol::ModbusRtu: return "modbus-rtu";
+    case LinkProtocol::ModbusTcp: return "modbus-tcp";
+    case LinkProtocol::NodeImage: return "node-image";
+    case LinkProtocol::Hart: return "hart";
+    case LinkProtocol::Canopen: return "canopen";
+    }
+    return "?";
+}
+
+template<> std::optional<LinkProtocol> fromKey<LinkProtocol>(std::string_view text)
+{
+    for (LinkProtocol p : kLinkProtocols)
+        if (text == key(p))
+            return p;
+    return std::nullopt;
+}
+
+} // namespace vt::dev

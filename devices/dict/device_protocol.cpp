@@ -1,0 +1,23 @@
+#include "dict/device_protocol.h"
+
+namespace vt::dev {
+
+const char *key(DeviceProtocol protocol)
+{
+    switch (protocol) {
+    case DeviceProtocol::Hcs: return "hcs";
+    case DeviceProtocol::Dsp408: return "dsp408";
+    case DeviceProtocol::Hart: return "hart";
+    }
+    return "?";
+}
+
+template<> std::optional<DeviceProtocol> fromKey<DeviceProtocol>(std::string_view text)
+{
+    for (DeviceProtocol p : kDeviceProtocols)
+        if (text == key(p))
+            return p;
+    return std::nullopt;
+}
+
+} // namespace vt::dev
