@@ -18,12 +18,6 @@ const dev::access::NodeImageAdapter *nodeImageOf(const Session &session)
     return dynamic_cast<const dev::access::NodeImageAdapter *>(&session.adapter());
 }
 
-QString local(const dev::LocalText &text)
-{
-    const bool german = textLanguage() == dev::Language::German;
-    return QString::fromStdString(text.in(german ? dev::Language::German : dev::Language::English));
-}
-
 } // namespace
 
 PlcTestBench::PlcTestBench(Session &session, dev::hcs::Family family, std::size_t modules,
@@ -174,8 +168,8 @@ void PlcTestBench::onOutcome(const Outcome &outcome, std::uint8_t tadr)
             const dev::DecodeError &error = decoded.error();
             if (error.code == dev::DecodeErrc::DeviceException) {
                 ++m_counters.exceptions;
-                m_lastError = local(dev::hcs::exceptionTextOrUnknown(m_family, dev::hcs::kCmdCyclic,
-                                                                     error.deviceCode));
+                m_lastError = localText(dev::hcs::exceptionTextOrUnknown(
+                    m_family, dev::hcs::kCmdCyclic, error.deviceCode));
                 emit exceptionReceived(error.deviceCode, m_lastError);
             } else {
                 ++m_counters.stale; // a CMD 3/6 answer or other frame, not ours
