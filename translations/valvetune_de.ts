@@ -1155,10 +1155,6 @@
 <context>
     <name>vt::model::ParameterDocument</name>
     <message>
-        <source>, mode %1</source>
-        <translation>, Modus %1</translation>
-    </message>
-    <message>
         <source>Set %1 to %2</source>
         <translation>%1 auf %2 setzen</translation>
     </message>
@@ -1192,6 +1188,14 @@
             <numerusform>%1 nimmt höchstens %n Zeichen.</numerusform>
             <numerusform>%1 nimmt höchstens %n Zeichen.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1, mode %2</source>
+        <translation>%1, Modus %2</translation>
+    </message>
+    <message>
+        <source>%1 %2, mode %3</source>
+        <translation>%1 %2, Modus %3</translation>
     </message>
 </context>
 <context>

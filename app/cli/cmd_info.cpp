@@ -33,7 +33,7 @@ int runInfo(const QStringList &argsIn, Context &ctx)
     for (const model::IdentifyResult &r : results) {
         if (!r.ok) {
             const std::string why = r.failure.status != model::OutcomeStatus::Ok
-                                        ? outcomeText(r.failure)
+                                        ? outcomeText(r.failure, run.lang())
                                         : str(model::identifyMessage(r, run.lang()));
             code =
                 std::max(code, r.failure.status == model::OutcomeStatus::LinkLost || run.linkLost()

@@ -24,24 +24,24 @@ struct ModuleRead
     model::ReadResult result;
 };
 
-Json failuresJson(const model::ReadResult &result)
+Json failuresJson(const model::ReadResult &result, dev::Language lang)
 {
     Json list = Json::array();
     for (const model::RowFailure &f : result.failures) {
         Json names = Json::array();
         for (const dev::ParamMeta *row : f.rows)
             names.push_back(row->name);
-        list.push_back(Json{{"names", names}, {"error", outcomeText(f.outcome)}});
+        list.push_back(Json{{"names", names}, {"error", outcomeText(f.outcome, lang)}});
     }
     return list;
 }
 
 // One line per distinct reason (a lost link fails every exchange still queued alike).
-void reportFailures(Context &ctx, int address, const model::ReadResult &result)
+void reportFailures(Context &ctx, int address, const model::ReadResult &result, dev::Language lang)
 {
     std::vector<std::pair<std::string, std::vector<std::string>>> byReason;
     for (const model::RowFailure &f : result.failures) {
-        const std::string reason = outcomeText(f.outcome);
+        const std::string reason = outcomeText(f.outcome, lang);
         auto it = std::find_if(byReason.begin(), byReason.end(),
                                [&](const auto &r) { return r.first == reason; });
         if (it == byReason.end())
@@ -114,7 +114,7 @@ int runRead(const QStringList &argsIn, Context &ctx)
                                                             module->identification.mode));
         if (!result)
             return run.failDeadline("module " + std::to_string(address) + ": read");
-        reportFailures(ctx, address, *result);
+        reportFailures(ctx, address, *result, run.lang());
         for (const model::RowFailure &f : result->failures) {
             // Rows this protocol cannot carry (text rows over HART) are reported, not an error.
             if (f.outcome.status != model::OutcomeStatus::NotEncodable || f.outcome.sent)
@@ -141,7 +141,7 @@ int runRead(const QStringList &argsIn, Context &ctx)
                     values.push_back(valueJson(*v.row, v.value, run.lang()));
                 m["values"] = values;
             }
-            m["failures"] = failuresJson(r.result);
+            m["failures"] = failuresJson(r.result, run.lang());
             modules.push_back(m);
         }
         Json doc{{"connection", str(run.connection().describe())}};

@@ -100,11 +100,11 @@ std::string moduleText(const model::ModuleInfo &module, const char *noun)
     return s;
 }
 
-std::string outcomeText(const model::Outcome &outcome)
+std::string outcomeText(const model::Outcome &outcome, dev::Language lang)
 {
     if (outcome.status == model::OutcomeStatus::DeviceException &&
         !outcome.reply.exceptionText.en.empty())
-        return "refused by the device: " + outcome.reply.exceptionText.en;
+        return "refused by the device: " + outcome.reply.exceptionText.in(lang);
     if (!outcome.reason.isEmpty())
         return str(outcome.reason);
     return str(model::outcomeStatusText(outcome.status));

@@ -38,8 +38,9 @@ Json moduleJson(const model::ModuleInfo &module);
 // "module 1: dma-pn-v51 V51.03, mode 3" (`noun` "address": "address 1: …")
 std::string moduleText(const model::ModuleInfo &module, const char *noun = "module");
 
-// Why an exchange failed, for people: the device's exception text or the session's reason.
-std::string outcomeText(const model::Outcome &outcome);
+// Why an exchange failed, for people: the device's exception text in `lang` or the session's
+// reason.
+std::string outcomeText(const model::Outcome &outcome, dev::Language lang);
 // Link lost: 3; the device refused or did not answer: 1.
 int exitCodeOf(const model::Outcome &outcome);
 

@@ -327,7 +327,7 @@ void DeviceRun::wake()
 int DeviceRun::failExchange(int address, const std::string &what, const model::Outcome &outcome)
 {
     const int code = m_lost ? kExitConnection : exitCodeOf(outcome);
-    std::string reason = outcomeText(outcome);
+    std::string reason = outcomeText(outcome, lang());
     if (m_lost && outcome.status != model::OutcomeStatus::LinkLost)
         reason = str(m_lostReason);
     return m_ctx.fail(code,

@@ -10,16 +10,20 @@
 namespace vt::model {
 namespace {
 
+// "opat 51.03, mode 3": the family, version and mode as one sentence of the language shown.
 QString moduleIdentity(const dev::Dictionary &dict, const std::string &version,
                        const std::string &mode)
 {
-    QString text = QString::fromStdString(dict.family);
-    if (!version.empty())
-        text += QLatin1Char(' ') + QString::fromStdString(version);
-    if (!mode.empty())
-        text += QCoreApplication::translate("vt::model::ParameterDocument", ", mode %1")
-                    .arg(QString::fromStdString(mode));
-    return text;
+    const QString family = QString::fromStdString(dict.family);
+    const QString v = QString::fromStdString(version);
+    const QString m = QString::fromStdString(mode);
+    if (mode.empty())
+        return version.empty() ? family : QStringLiteral("%1 %2").arg(family, v);
+    if (version.empty())
+        return QCoreApplication::translate("vt::model::ParameterDocument", "%1, mode %2")
+            .arg(family, m);
+    return QCoreApplication::translate("vt::model::ParameterDocument", "%1 %2, mode %3")
+        .arg(family, v, m);
 }
 
 std::string valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev::Language lang)

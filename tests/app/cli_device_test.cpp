@@ -2,6 +2,7 @@
 // monitor against the built-in simulator (dma-pn-v51, opat:3, dma-pb-v32) in text and --json,
 // the error exits (usage 2, device 1, connection 3), and one run over a real valvetune-sim --tcp.
 // Files (read --out, diff, write): cli_device_file_test.cpp.
+#include "app/cli/device_output.h"
 #include "app/cli/exit_codes.h"
 #include "cli_device_fixture.h"
 #include "sim_process.h"
@@ -178,6 +179,24 @@ TEST_F(CliDevice, TheDeviceRefusingExitsOne)
     EXPECT_EQ(doc["results"][0]["status"], "refused");
     EXPECT_NE(doc["results"][0]["reason"].get<std::string>().find("wrong ID"), std::string::npos)
         << r.out;
+}
+
+// The device's refusal is printed in the language --lang chose, as every device text is.
+TEST_F(CliDevice, TheDeviceRefusalInTheChosenLanguage)
+{
+    model::Outcome refused;
+    refused.status = model::OutcomeStatus::DeviceException;
+    refused.reply.exceptionText = {"wrong ID", "Falsche ID"};
+    EXPECT_EQ(cli::outcomeText(refused, dev::Language::German),
+              "refused by the device: Falsche ID");
+    EXPECT_EQ(cli::outcomeText(refused, dev::Language::English), "refused by the device: wrong ID");
+
+    const CliRun de = cli({"get", "--sim", "opat:3", "--lang", "de", "r2.01"});
+    EXPECT_EQ(de.code, kExitDeviceError) << what(de);
+    EXPECT_TRUE(de.complains("Falsche ID")) << de.err;
+    const CliRun en = cli({"get", "--sim", "opat:3", "r2.01"});
+    EXPECT_EQ(en.code, kExitDeviceError) << what(en);
+    EXPECT_TRUE(en.complains("wrong ID")) << en.err;
 }
 
 TEST_F(CliDevice, ALinkCutExitsThree)

@@ -1,6 +1,7 @@
 // The model's own sentences go through tr() and the devices' {en, de} texts stay bilingual until
 // shown: after a switch of the language a fold check finding (on the check page, too), a write
-// job's refusals and a parameter edit's refusal read German; switching back restores English.
+// job's refusals, a parameter edit's refusal and a module's identity read German; switching back
+// restores English.
 #include "app/gui/language.h"
 #include "dict/dictionary_loader.h"
 #include "model/curve/lcurve.h"
@@ -148,6 +149,19 @@ TEST(ModelTextsLanguage, ParameterEditRefusalInGerman)
     }
     doc.setLanguage(model::textLanguage());
     EXPECT_EQ(doc.edit(0, dma.find("d1.11"), 5.0), QStringLiteral("d1.11 is read only."));
+}
+
+TEST(ModelTextsLanguage, ModuleIdentityInGerman)
+{
+    const dev::Dictionary &dma = *dictionaries().find("dma-pn-v51");
+    model::ParameterDocument doc;
+    {
+        German german;
+        doc.createNew({&dma, "51", "3", 3, 1}, dictionaries());
+        EXPECT_EQ(doc.module(0).identity, QStringLiteral("dma-pn-v51 51, Modus 3"));
+    }
+    doc.createNew({&dma, "51", "3", 3, 1}, dictionaries());
+    EXPECT_EQ(doc.module(0).identity, QStringLiteral("dma-pn-v51 51, mode 3"));
 }
 
 TEST(ModelTextsLanguage, LinearisationTextsInGerman)
