@@ -440,6 +440,14 @@
         <source>Serial port %1 was disconnected</source>
         <translation>Serielle Schnittstelle %1 wurde getrennt</translation>
     </message>
+    <message>
+        <source>Cannot open %1: it is not a serial port or terminal.</source>
+        <translation>%1 kann nicht geöffnet werden: Es ist weder eine serielle Schnittstelle noch ein Terminal.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2 baud is not a rate the port supports.</source>
+        <translation>%1 kann nicht geöffnet werden: %2 Baud unterstützt die Schnittstelle nicht.</translation>
+    </message>
 </context>
 <context>
     <name>vt::link::SimLink</name>

@@ -1,4 +1,5 @@
-// SerialWorker: the blocking half of SerialLink. It owns the libserialport handle and lives on
+// SerialWorker: the blocking half of SerialLink. It owns the open port (serial_port_io.h:
+// libserialport where it can open the port, POSIX termios for any other terminal) and lives on
 // SerialLink's worker QThread; SerialLink reaches it only through queued calls and it answers
 // only through queued signals (STYLE.md rule 9). Every call and signal carries the session id of
 // the open() it belongs to, so the link can ignore what a previous session left in flight.
@@ -10,11 +11,14 @@
 #include <QByteArray>
 #include <QObject>
 #include <QString>
+#include <memory>
 
-struct sp_port;
 class QSocketNotifier;
 
 namespace vt::link {
+
+class SerialPortIo;
+struct OpenFailure;
 
 class SerialWorker : public QObject
 {
@@ -40,10 +44,9 @@ private:
     void fail(const QString &reason);
     void release();
     void warnIfNotApplied() const;
-    // libserialport's description of its last error ("No such file or directory").
-    static QString lastError();
+    QString openFailureText(const OpenFailure &failure) const;
 
-    sp_port *m_port = nullptr;
+    std::unique_ptr<SerialPortIo> m_port;
     QSocketNotifier *m_notifier = nullptr;
     quint64 m_session = 0;
     SerialSettings m_settings;

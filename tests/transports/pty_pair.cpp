@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 namespace vt::test {
@@ -62,13 +61,6 @@ bool PtyPair::write(const QByteArray &bytes)
     return n == bytes.size();
 }
 
-dev_t PtyPair::slaveDevice() const
-{
-    struct stat st;
-    const QByteArray path = m_slavePath.toLocal8Bit();
-    return ::stat(path.constData(), &st) == 0 ? st.st_rdev : dev_t{};
-}
-
 bool PtyPair::slaveTermios(termios *out) const
 {
     return m_master >= 0 && ::tcgetattr(m_master, out) == 0;
@@ -84,11 +76,6 @@ void PtyPair::closeMaster()
         ::close(m_master);
         m_master = -1;
     }
-}
-
-QString libserialportPath(const QString &absoluteSymlink)
-{
-    return QStringLiteral("/dev/../../..") + absoluteSymlink;
 }
 
 } // namespace vt::test

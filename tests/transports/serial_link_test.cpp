@@ -1,17 +1,19 @@
 // SerialLink against a pseudo-terminal pair: the test holds the master, the link opens the slave
-// (serial link on libserialport, settings, unplug, reopen).
-// libserialport needs two test-only workarounds on a pty: the symlink path (pty_pair.h) and the
-// TIOCMGET shim (ioctl_shim.cpp).
-#include "ioctl_shim.h"
+// through a symlink, as a user opens one end of `socat pty,link=…`. libserialport refuses a pty
+// (no sysfs entry, no modem lines), so this is the termios way of the product code, unchanged:
+// settings, unplug, reopen. The termios a UART would receive (parity, character size, which a
+// pty drops) is checked on applyLineSettings() itself.
 #include "pty_pair.h"
 #include "qt_printers.h"
 #include "test_wait.h"
 #include "transports/serial_link.h"
 #include "transports/serial_ports.h"
+#include "transports/termios_line.h"
 
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <cstring>
 #include <gtest/gtest.h>
 #include <memory>
 
@@ -45,22 +47,13 @@ protected:
         ASSERT_TRUE(QFile::link(m_pty->slavePath(), m_symlink));
     }
 
-    QString portName() const { return vt::test::libserialportPath(m_symlink); }
+    QString portName() const { return m_symlink; }
 
     // What the pty itself kept: speed, stop bits, PARODD, the raw-mode flags.
     termios slaveTermios() const
     {
         termios t{};
         EXPECT_TRUE(m_pty->slaveTermios(&t));
-        return t;
-    }
-
-    // What libserialport asked the driver for; the only place PARENB and CSIZE survive on a
-    // pty (see ioctl_shim.h).
-    termios requested() const
-    {
-        termios t{};
-        EXPECT_TRUE(vt::test::lastTermiosRequest(m_pty->slaveDevice(), &t));
         return t;
     }
 
@@ -114,13 +107,8 @@ TEST_F(SerialLinkPty, HcsDefaultIs19200Baud8E1OnTheLine)
     EXPECT_EQ(kept.c_lflag & (ICANON | ECHO | ISIG), 0u);
     EXPECT_EQ(kept.c_iflag & (ICRNL | INLCR | IGNCR), 0u);
     EXPECT_EQ(kept.c_oflag & OPOST, 0u);
-
-    const termios asked = requested();
-    EXPECT_EQ(cfgetospeed(&asked), static_cast<speed_t>(B19200));
-    EXPECT_EQ(asked.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
-    EXPECT_NE(asked.c_cflag & PARENB, 0u);
-    EXPECT_EQ(asked.c_cflag & PARODD, 0u);
-    EXPECT_EQ(asked.c_cflag & CSTOPB, 0u);
+    EXPECT_EQ(kept.c_cc[VMIN], 1);
+    EXPECT_EQ(kept.c_cc[VTIME], 0);
     EXPECT_EQ(link.description(), QStringLiteral("serial %1 19200 8E1").arg(portName()));
 }
 
@@ -133,13 +121,6 @@ TEST_F(SerialLinkPty, HartPresetIs1200Baud8O1OnTheLine)
     EXPECT_EQ(cfgetospeed(&kept), static_cast<speed_t>(B1200));
     EXPECT_NE(kept.c_cflag & PARODD, 0u);
     EXPECT_EQ(kept.c_cflag & CSTOPB, 0u);
-
-    const termios asked = requested();
-    EXPECT_EQ(cfgetospeed(&asked), static_cast<speed_t>(B1200));
-    EXPECT_EQ(asked.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
-    EXPECT_NE(asked.c_cflag & PARENB, 0u);
-    EXPECT_NE(asked.c_cflag & PARODD, 0u);
-    EXPECT_EQ(asked.c_cflag & CSTOPB, 0u);
 }
 
 TEST_F(SerialLinkPty, NoParityTwoStopBitsAndSevenDataBits)
@@ -154,12 +135,7 @@ TEST_F(SerialLinkPty, NoParityTwoStopBitsAndSevenDataBits)
     const termios kept = slaveTermios();
     EXPECT_EQ(cfgetospeed(&kept), static_cast<speed_t>(B9600));
     EXPECT_NE(kept.c_cflag & CSTOPB, 0u);
-    EXPECT_NE(kept.c_iflag & IGNPAR, 0u); // libserialport's mark for "no parity"
-
-    const termios asked = requested();
-    EXPECT_EQ(asked.c_cflag & CSIZE, static_cast<tcflag_t>(CS7));
-    EXPECT_EQ(asked.c_cflag & PARENB, 0u);
-    EXPECT_NE(asked.c_cflag & CSTOPB, 0u);
+    EXPECT_NE(kept.c_iflag & IGNPAR, 0u); // the mark for "no parity", as libserialport sets it
     EXPECT_EQ(link.description(), QStringLiteral("serial %1 9600 7N2").arg(portName()));
 }
 
@@ -200,8 +176,122 @@ TEST_F(SerialLinkPty, DestroyingAnOpenLinkJoinsTheWorker)
     link.reset();
     // The port was released: a new link on the same pty opens again.
     SerialLink again(SerialSettings::hcsDefault(portName()));
+    QSignalSpy failed(&again, &SerialLink::failed);
     again.open();
-    EXPECT_TRUE(waitForState(again, LinkState::Open));
+    EXPECT_TRUE(waitForState(again, LinkState::Open))
+        << failed.value(0).value(0).toString().toStdString();
+}
+
+// The path the kernel gave the pty, without a symlink: what `valvetune-sim --pty` prints.
+TEST_F(SerialLinkPty, OpensThePtyByItsOwnPath)
+{
+    SerialLink link(SerialSettings::hcsDefault(m_pty->slavePath()));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open))
+        << failed.value(0).value(0).toString().toStdString();
+    m_pty->startReading();
+    link.send(QByteArrayLiteral("\x01\x03"));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().size() == 2; }));
+}
+
+TEST_F(SerialLinkPty, ARateTermiosLacksFailsWithTheRateInTheReason)
+{
+    SerialSettings s = SerialSettings::hcsDefault(portName());
+    s.baudRate = 12345;
+    SerialLink link(s);
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+    EXPECT_TRUE(failed.first().value(0).toString().contains(QStringLiteral("12345")))
+        << failed.first().value(0).toString().toStdString();
+}
+
+// A character device that is no terminal is refused, not opened as a port.
+TEST(SerialLink, NonTerminalIsRefused)
+{
+    SerialLink link(SerialSettings::hcsDefault(QStringLiteral("/dev/null")));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+    const QString reason = failed.first().value(0).toString();
+    EXPECT_TRUE(reason.contains(QStringLiteral("/dev/null")) &&
+                reason.contains(QStringLiteral("not a serial port or terminal")))
+        << reason.toStdString();
+}
+
+// What the termios way asks a UART for (a pty drops PARENB and CSIZE, so the request is checked
+// here): the HCS default 8E1, HART 8O1, 7N2, each raw.
+TEST(TermiosLine, SettingsBecomeTheRawLine)
+{
+    termios t{};
+    t.c_lflag = ICANON | ECHO | ISIG;
+    t.c_iflag = ICRNL | IXON;
+    t.c_oflag = OPOST;
+    t.c_cflag = CRTSCTS;
+    ASSERT_TRUE(vt::link::applyLineSettings(t, SerialSettings::hcsDefault(QStringLiteral("p"))));
+    EXPECT_EQ(cfgetospeed(&t), static_cast<speed_t>(B19200));
+    EXPECT_EQ(cfgetispeed(&t), static_cast<speed_t>(B19200));
+    EXPECT_EQ(t.c_cflag & CSIZE, static_cast<tcflag_t>(CS8));
+    EXPECT_NE(t.c_cflag & PARENB, 0u);
+    EXPECT_EQ(t.c_cflag & (PARODD | CSTOPB | CRTSCTS), 0u);
+    EXPECT_NE(t.c_cflag & (CLOCAL | CREAD), 0u);
+    EXPECT_NE(t.c_iflag & INPCK, 0u);
+    EXPECT_EQ(t.c_iflag & (IGNPAR | ICRNL | IXON), 0u);
+    EXPECT_EQ(t.c_lflag & (ICANON | ECHO | ISIG), 0u);
+    EXPECT_EQ(t.c_oflag & OPOST, 0u);
+    EXPECT_EQ(t.c_cc[VMIN], 1);
+    EXPECT_EQ(t.c_cc[VTIME], 0);
+
+    ASSERT_TRUE(vt::link::applyLineSettings(t, SerialSettings::hart(QStringLiteral("p"))));
+    EXPECT_EQ(cfgetospeed(&t), static_cast<speed_t>(B1200));
+    EXPECT_EQ(t.c_cflag & (PARENB | PARODD), static_cast<tcflag_t>(PARENB | PARODD));
+
+    SerialSettings s;
+    s.baudRate = 9600;
+    ASSERT_TRUE(s.setFormatText(u"7N2"));
+    ASSERT_TRUE(vt::link::applyLineSettings(t, s));
+    EXPECT_EQ(t.c_cflag & CSIZE, static_cast<tcflag_t>(CS7));
+    EXPECT_EQ(t.c_cflag & PARENB, 0u);
+    EXPECT_NE(t.c_cflag & CSTOPB, 0u);
+    EXPECT_NE(t.c_iflag & IGNPAR, 0u);
+    EXPECT_EQ(t.c_iflag & INPCK, 0u);
+}
+
+// What a pty holds after an 8E1 request (CS8, no parity) counts as the request; a different rate
+// or a cooked line does not.
+TEST(TermiosLine, OnlyTheCharacterFormatMayBeDropped)
+{
+    termios wanted{};
+    ASSERT_TRUE(
+        vt::link::applyLineSettings(wanted, SerialSettings::hcsDefault(QStringLiteral("p"))));
+    termios held = wanted;
+    held.c_cflag = (held.c_cflag & ~static_cast<tcflag_t>(CSIZE | PARENB)) | CS8;
+    EXPECT_TRUE(vt::link::differsOnlyInCharacterFormat(held, wanted));
+    termios slower = held;
+    cfsetospeed(&slower, B9600);
+    EXPECT_FALSE(vt::link::differsOnlyInCharacterFormat(slower, wanted));
+    termios cooked = held;
+    cooked.c_lflag |= ICANON;
+    EXPECT_FALSE(vt::link::differsOnlyInCharacterFormat(cooked, wanted));
+    termios twoStops = held;
+    twoStops.c_cflag |= CSTOPB;
+    EXPECT_FALSE(vt::link::differsOnlyInCharacterFormat(twoStops, wanted));
+}
+
+TEST(TermiosLine, UnknownRateLeavesTheTermiosAlone)
+{
+    termios t{};
+    ASSERT_TRUE(vt::link::applyLineSettings(t, SerialSettings::hcsDefault(QStringLiteral("p"))));
+    const termios before = t;
+    SerialSettings s = SerialSettings::hcsDefault(QStringLiteral("p"));
+    s.baudRate = 12345;
+    EXPECT_FALSE(vt::link::applyLineSettings(t, s));
+    EXPECT_EQ(std::memcmp(&t, &before, sizeof t), 0);
+    EXPECT_EQ(vt::link::termiosBaud(*vt::link::termiosSpeed(115200)), 115200);
+    EXPECT_FALSE(vt::link::termiosSpeed(0));
 }
 
 TEST(SerialLink, MissingPortFailsWithItsNameInTheReason)
