@@ -5,8 +5,8 @@
 //  2. Monitor: d1.07..d1.13 polled back to back over the in-process simulator paced to 115200
 //     baud 8E1; reported: achieved samples/s against the wire limit (request + answer bytes on
 //     the wire, zero device turnaround).
-// Not a test: it prints figures (docs/PERFORMANCE.md says how to run it). The pty needs the
-// test-only ioctl shim (tests/transports/ioctl_shim.cpp) for libserialport, as the tests do.
+// Not a test: it prints figures (docs/PERFORMANCE.md says how to run it). SerialLink opens the pty
+// the way it opens any terminal libserialport refuses (plain termios).
 #include "access/hcs_rows.h"
 #include "access/modbus_adapter.h"
 #include "dict/dictionary_loader.h"
@@ -104,14 +104,7 @@ double libmodbusReadAll(const QString &pty, const std::vector<dev::access::HcsBl
 double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict,
                         const std::vector<const dev::ParamMeta *> &rows)
 {
-    // libserialport looks a port up in sysfs; a pty has no entry. The tests' symlink trick:
-    // "/dev/../../..<symlink>" (tests/transports/pty_pair.h).
-    const QString link =
-        QStringLiteral("/tmp/vt-bench-pty-%1").arg(QCoreApplication::applicationPid());
-    QFile::remove(link);
-    QFile::link(pty, link);
-    link::SerialLink serial(
-        link::SerialSettings::hcsDefault(QStringLiteral("/dev/../../..") + link));
+    link::SerialLink serial(link::SerialSettings::hcsDefault(pty));
     model::SessionOptions options;
     options.baudRate = 19200;
     options.turnaround = std::chrono::milliseconds(1000);
@@ -142,7 +135,6 @@ double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict,
     }
     const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9 / kRounds;
     serial.close();
-    QFile::remove(link);
     return seconds;
 }
 

@@ -1,6 +1,6 @@
 // End to end against the simulator over every link: the session engine through a real
-// SerialLink on a pseudo-terminal (with the test-only libserialport workarounds), a TcpLink on
-// loopback (Modbus TCP and the node image) and a CanLink on a SOCK_SEQPACKET socketpair, each
+// SerialLink on a pseudo-terminal (opened as a user's is, with no test-only workaround), a TcpLink
+// on loopback (Modbus TCP and the node image) and a CanLink on a SOCK_SEQPACKET socketpair, each
 // against a valvetune-sim process: identify, read all, write + verify. (The in-process SimLink is
 // covered by session_test.cpp / write_job_test.cpp.)
 #include "../../app/sim_process.h"
@@ -16,7 +16,6 @@
 #include "transports/serial_settings.h"
 #include "transports/tcp_link.h"
 
-#include <QFile>
 #include <QSignalSpy>
 #include <QTest>
 #include <fcntl.h>
@@ -100,24 +99,16 @@ TEST(SessionLinks, ModbusRtuOverAPseudoTerminal)
     Sim sim({"--device", "dma-pn-v51", "--pty"});
     const QString pty = sim.listening();
     ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
-    // libserialport looks ports up in sysfs: the "/dev/../../..<symlink>" path of
-    // tests/transports/pty_pair.h (the ioctl shim in this binary handles the modem lines).
-    const QString symlink =
-        QStringLiteral("/tmp/vt-session-pty-%1").arg(QCoreApplication::applicationPid());
-    QFile::remove(symlink);
-    ASSERT_TRUE(QFile::link(pty, symlink));
     model::SessionOptions options;
     options.baudRate = 19200;
     Endpoint e;
-    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(link::SerialSettings::hcsDefault(
-                           QStringLiteral("/dev/../../..") + symlink)),
+    ASSERT_TRUE(e.open(std::make_unique<link::SerialLink>(link::SerialSettings::hcsDefault(pty)),
                        dev::LinkProtocol::ModbusRtu, "dma-pn-v51", options));
     const auto id = e.identify(1);
     ASSERT_TRUE(id.ok) << id.message.toStdString();
     EXPECT_EQ(id.module.dictionary->family, "dma-pn-v51");
     expectDefaults(e.readAll(1, id.module), "dma-pn-v51", 1, 0);
     e.writeOne(1, *id.module.dictionary, "C1.07", 1000);
-    QFile::remove(symlink);
 }
 
 TEST(SessionLinks, ModbusTcpOnLoopbackToAThreeModuleNode)
@@ -181,11 +172,7 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     Sim sim({"--device", "wandfluh-sd7", "--pty"});
     const QString pty = sim.listening();
     ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
-    const QString symlink =
-        QStringLiteral("/tmp/vt-session-hart-%1").arg(QCoreApplication::applicationPid());
-    QFile::remove(symlink);
-    ASSERT_TRUE(QFile::link(pty, symlink));
-    const auto settings = link::SerialSettings::hart(QStringLiteral("/dev/../../..") + symlink);
+    const auto settings = link::SerialSettings::hart(pty);
     model::SessionOptions options;
     options.baudRate = settings.baudRate;
     options.bitsPerCharacter = settings.bitsPerCharacter();
@@ -207,7 +194,6 @@ TEST(SessionLinks, HartOverAPseudoTerminal)
     EXPECT_TRUE(result->complete())
         << (result->failures.empty() ? std::string()
                                      : result->failures.front().outcome.reason.toStdString());
-    QFile::remove(symlink);
 }
 
 } // namespace
