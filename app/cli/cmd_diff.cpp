@@ -1,7 +1,9 @@
 // valvetune-cli diff CONNECTION FILE [--module ADDRESS] [--lang en|de] [--json]: compare a .vtpar
 // file with the device, row by row. Compared are the settable parameters (read/write rows) —
-// what `write FILE` would change; live display values and the version are not. Exit 0 whether
-// or not they differ (the output says); 2 for a file that does not fit, 1/3 when reading fails.
+// what `write FILE` would change; live display values and the version are not. On a whole node
+// each module of the file is compared with the node's module at its address, and a module on one
+// side only is listed. Exit 0 whether or not values differ (the output says); 2 for a file that
+// does not fit (another family, or a module on one side only), 1/3 when reading fails.
 #include "commands.h"
 #include "file_plan.h"
 
@@ -30,7 +32,7 @@ int runDiff(const QStringList &argsIn, Context &ctx)
 
     Json modules = Json::array();
     bool equal = true;
-    for (const ModulePlan &plan : *plans) {
+    for (const ModulePlan &plan : plans->modules) {
         const auto current = readCurrent(run, plan, &code);
         if (!current)
             return code;
@@ -71,9 +73,26 @@ int runDiff(const QStringList &argsIn, Context &ctx)
             ctx.out << "  " << r->row->name << "  file " << displayOf(*r->row, r->value, run.lang())
                     << ", device " << displayOf(*r->row, current->at(r->row), run.lang()) << '\n';
     }
-    if (ctx.json)
-        ctx.out << Json{{"file", str(args.front())}, {"equal", equal}, {"modules", modules}}.dump(2)
+    const std::vector<UnmatchedModule> &unmatched = plans->unmatched;
+    if (ctx.json) {
+        ctx.out << Json{{"file", str(args.front())},
+                        {"equal", equal && unmatched.empty()},
+                        {"modules", modules},
+                        {"unmatched", unmatchedJson(unmatched)}}
+                       .dump(2)
                 << '\n';
+    } else {
+        for (const UnmatchedModule &u : unmatched) {
+            if (u.inFile)
+                ctx.out << "module " << u.address << ": in the file (" << u.family
+                        << "), not on the node\n";
+            else
+                ctx.out << moduleText(u.module) << ": on the node, not in the file\n";
+        }
+    }
+    if (!unmatched.empty())
+        return ctx.fail(kExitUsage,
+                        str(args.front()) + " does not fit the node: " + unmatchedText(unmatched));
     return kExitOk;
 }
 

@@ -1,5 +1,6 @@
 // valvetune-cli info CONNECTION [--module ADDRESS] [--json]: identify the modules (family,
-// software version, mode, address).
+// software version, mode, address): every module of a node (DeviceRun::identifyModules()), or
+// the one --module or --unit names.
 #include "commands.h"
 #include "device_run.h"
 
@@ -22,15 +23,17 @@ int runInfo(const QStringList &argsIn, Context &ctx)
     DeviceRun run(ctx, *options);
     if (const int c = run.connect())
         return c;
-    const auto addresses = run.select(true);
-    if (!addresses)
-        return kExitUsage;
-
-    const auto results = run.identifyEach(*addresses);
+    const auto results = run.identifyModules(&code);
+    if (!results)
+        return code;
+    std::vector<int> addresses;
+    for (const model::IdentifyResult &r : *results)
+        addresses.push_back(r.module.address);
+    const std::string connection = run.describe(addresses);
     Json modules = Json::array();
     if (!ctx.json)
-        ctx.out << "connection: " << str(run.connection().describe()) << '\n';
-    for (const model::IdentifyResult &r : results) {
+        ctx.out << "connection: " << connection << '\n';
+    for (const model::IdentifyResult &r : *results) {
         if (!r.ok) {
             const std::string why = r.failure.status != model::OutcomeStatus::Ok
                                         ? outcomeText(r.failure, run.lang())
@@ -55,9 +58,7 @@ int runInfo(const QStringList &argsIn, Context &ctx)
                     << str(model::identifyMessage(r, run.lang())) << '\n';
     }
     if (ctx.json)
-        ctx.out
-            << Json{{"connection", str(run.connection().describe())}, {"modules", modules}}.dump(2)
-            << '\n';
+        ctx.out << Json{{"connection", connection}, {"modules", modules}}.dump(2) << '\n';
     return code;
 }
 

@@ -1,7 +1,7 @@
 // valvetune-cli read CONNECTION [--module ADDRESS] [--out FILE] [--lang en|de] [--json]: read every
-// readable row of every module (or one); print name and value, or save a .vtpar parameter file
-// (docs/FILE-FORMAT.md). Rows that could not be read are listed and make the exit code 1; a file
-// still holds what was read.
+// readable row of every module of the node (DeviceRun::identifyModules()) or of the one --module
+// names; print name and value, or save a .vtpar parameter file (docs/FILE-FORMAT.md). Rows that
+// could not be read are listed and make the exit code 1; a file still holds what was read.
 #include "arg_parse.h"
 #include "commands.h"
 #include "device_run.h"
@@ -81,6 +81,14 @@ std::optional<std::string> save(const QString &path, const std::vector<ModuleRea
     return std::nullopt;
 }
 
+std::vector<int> addressesOf(const std::vector<ModuleRead> &reads)
+{
+    std::vector<int> addresses;
+    for (const ModuleRead &r : reads)
+        addresses.push_back(r.module.address);
+    return addresses;
+}
+
 } // namespace
 
 int runRead(const QStringList &argsIn, Context &ctx)
@@ -99,16 +107,18 @@ int runRead(const QStringList &argsIn, Context &ctx)
     DeviceRun run(ctx, *options);
     if (const int c = run.connect())
         return c;
-    const auto addresses = run.select(true);
-    if (!addresses)
-        return kExitUsage;
+    const auto identified = run.identifyModules(&code);
+    if (!identified)
+        return code;
 
     std::vector<ModuleRead> reads;
-    for (int address : *addresses) {
-        int c = kExitOk;
-        auto module = run.identify(address, &c);
+    for (const model::IdentifyResult &r : *identified) {
+        // A file that misses a module of the node is no backup of it: a module that does not
+        // identify ends the command before anything is saved.
+        auto module = run.accept(r, &code);
         if (!module)
-            return c;
+            return code;
+        const int address = module->address;
         auto result = run.read(address, model::readableRows(*module->dictionary,
                                                             module->identification.version,
                                                             module->identification.mode));
@@ -144,7 +154,7 @@ int runRead(const QStringList &argsIn, Context &ctx)
             m["failures"] = failuresJson(r.result, run.lang());
             modules.push_back(m);
         }
-        Json doc{{"connection", str(run.connection().describe())}};
+        Json doc{{"connection", run.describe(addressesOf(reads))}};
         doc["file"] = outPath ? Json(str(*outPath)) : Json(nullptr);
         doc["modules"] = modules;
         ctx.out << doc.dump(2) << '\n';

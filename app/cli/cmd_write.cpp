@@ -2,7 +2,10 @@
 // a .vtpar file's settable values on the device — only the ones that differ, each range-checked
 // before sending, paced and read back (WriteJob). A file of another family, or with a value out of
 // range, is refused whole (exit 2, nothing sent). --dry-run reads the device and lists what would
-// change. Exit 4 when a read back differs, 1 when the device refuses, 3 when the link is lost.
+// change. On a whole node every module of the file goes to its own module; a file that lacks a
+// module of the node, or holds one the node lacks, is refused whole (exit 2, nothing sent) —
+// --module writes one. Exit 4 when a read back differs, 1 when the device refuses, 3 when the
+// link is lost.
 #include "arg_parse.h"
 #include "commands.h"
 #include "file_plan.h"
@@ -33,10 +36,14 @@ int runWrite(const QStringList &argsIn, Context &ctx)
     const auto plans = planFile(run, kName, args.front(), true, &code);
     if (!plans)
         return code;
+    if (!plans->unmatched.empty())
+        return ctx.fail(kExitUsage, str(args.front()) + " does not fit the node: " +
+                                        unmatchedText(plans->unmatched) +
+                                        "; nothing was sent (--module ADDRESS writes one module)");
 
     Json modules = Json::array();
     bool complete = true;
-    for (const ModulePlan &plan : *plans) {
+    for (const ModulePlan &plan : plans->modules) {
         const auto current = readCurrent(run, plan, &code);
         if (!current)
             return code;

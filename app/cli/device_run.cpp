@@ -4,6 +4,7 @@
 #include "dict/dictionary_loader.h"
 #include "model/session/write_job.h"
 #include "sim_memory.h"
+#include "transports/fault_link.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -236,9 +237,74 @@ std::vector<model::IdentifyResult> DeviceRun::identifyEach(const std::vector<int
     return out;
 }
 
+bool DeviceRun::nodeLink() const
+{
+    return m_options.spec.kind == model::ConnectionKind::Tcp && !m_options.spec.unit;
+}
+
+bool DeviceRun::wholeNode() const
+{
+    return !m_options.module && (nodeLink() || m_connection->moduleAddresses().size() > 1);
+}
+
+std::optional<std::vector<model::IdentifyResult>> DeviceRun::identifyModules(int *exitCode)
+{
+    if (!nodeLink() || m_options.module) {
+        const auto addresses = select(true);
+        if (!addresses) {
+            *exitCode = kExitUsage;
+            return std::nullopt;
+        }
+        return identifyEach(*addresses);
+    }
+    const std::vector<int> tried = m_connection->scanAddresses();
+    const std::vector<model::IdentifyResult> results = identifyEach(tried);
+    if (m_lost) {
+        *exitCode = m_ctx.fail(kExitConnection, "the link was lost while looking for the node's "
+                                                "modules: " +
+                                                    str(m_lostReason));
+        return std::nullopt;
+    }
+    std::vector<model::IdentifyResult> found;
+    for (const model::IdentifyResult &r : results) {
+        // A gateway answers for an address without a module with an exception ("timeout
+        // (Modbus)"), others stay silent: neither is a module. Something that answers but is not
+        // identified is one, and is reported.
+        if (r.ok || r.failure.status == model::OutcomeStatus::Ok)
+            found.push_back(r);
+    }
+    if (found.empty()) {
+        *exitCode =
+            m_ctx.fail(kExitDeviceError, "no module answered on " + describe({}) + " (addresses " +
+                                             std::to_string(tried.front()) + ".." +
+                                             std::to_string(tried.back()) + " tried)");
+        return std::nullopt;
+    }
+    return found;
+}
+
+std::string DeviceRun::describe(const std::vector<int> &addresses) const
+{
+    if (!nodeLink() || m_options.module)
+        return str(m_connection->describe());
+    const link::Link &wire =
+        m_connection->faultLink() ? m_connection->faultLink()->inner() : m_connection->link();
+    std::string text = str(wire.description()) + ", " + str(m_connection->protocolKey());
+    if (!addresses.empty())
+        text += (addresses.size() == 1 ? ", module " : ", modules ") + joined(addresses);
+    if (m_options.spec.fault)
+        text += " [fault " + str(m_options.spec.fault->toString()) + "]";
+    return text;
+}
+
 std::optional<model::ModuleInfo> DeviceRun::identify(int address, int *exitCode)
 {
-    const model::IdentifyResult r = identifyEach({address}).front();
+    return accept(identifyEach({address}).front(), exitCode);
+}
+
+std::optional<model::ModuleInfo> DeviceRun::accept(const model::IdentifyResult &r, int *exitCode)
+{
+    const int address = r.module.address;
     if (r.ok) {
         if (!model::identifyMessage(r, lang()).isEmpty())
             m_ctx.err << "valvetune-cli: warning: module " << address << ": "

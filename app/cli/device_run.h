@@ -46,6 +46,25 @@ public:
     // nullopt after printing a usage error (--module names no module of a simulator).
     std::optional<std::vector<int>> select(bool all);
 
+    // A node link: TCP (a Modbus TCP gateway or the node image) without --unit. Its modules are
+    // the addresses that answer a scan, found as the GUI's Device ▸ Scan finds them.
+    bool nodeLink() const;
+    // The command covers every module of a node (a node link or a simulated node), not one
+    // module: no --module and no --unit.
+    bool wholeNode() const;
+    // The modules info, read, diff and write work on, identified, in address order: --module's;
+    // on a node link every address that answers a scan (Connection::scanAddresses()); else every
+    // module of the connection. Results that failed are included (not ok) except addresses that
+    // only told that no module is there. nullopt after printing why (*exitCode: 2 usage, 3 the
+    // link was lost, 1 no module answered).
+    std::optional<std::vector<model::IdentifyResult>> identifyModules(int *exitCode);
+    // The module of an identification, its warning printed; nullopt after printing why it
+    // failed (*exitCode says how to exit).
+    std::optional<model::ModuleInfo> accept(const model::IdentifyResult &result, int *exitCode);
+    // The connection with the modules a command worked on: "tcp 127.0.0.1:502, modbus-tcp,
+    // modules 1, 2, 3" (Connection::describe() names the modules it was given, not found ones).
+    std::string describe(const std::vector<int> &addresses) const;
+
     // Identifies one module (bounded). nullopt after printing why; *exitCode says how to exit.
     std::optional<model::ModuleInfo> identify(int address, int *exitCode);
     // The module a single-module command (get, set, monitor) works on: --module or the first,

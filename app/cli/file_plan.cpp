@@ -41,57 +41,91 @@ std::optional<dev::files::ParamFile> load(Context &ctx, const QString &path, int
     return *parsed;
 }
 
-// Which record of the file goes onto which address.
-std::optional<std::vector<std::pair<const dev::files::ModuleRecord *, int>>>
-pair(DeviceRun &run, const char *command, const dev::files::ParamFile &file, const QString &path,
-     int *code)
+struct Pairing
 {
-    const auto addresses = run.select(true);
-    if (!addresses) {
-        *code = kExitUsage;
+    std::vector<std::pair<const dev::files::ModuleRecord *, model::ModuleInfo>> pairs;
+    std::vector<UnmatchedModule> unmatched;
+};
+
+// Which record of the file goes onto which module.
+std::optional<Pairing> pair(DeviceRun &run, const char *command, const dev::files::ParamFile &file,
+                            const QString &path, int *code)
+{
+    const auto identified = run.identifyModules(code);
+    if (!identified)
+        return std::nullopt;
+    std::vector<model::ModuleInfo> modules;
+    for (const model::IdentifyResult &r : *identified) {
+        auto module = run.accept(r, code);
+        if (!module)
+            return std::nullopt;
+        modules.push_back(*module);
+    }
+    const auto recordAt = [&](int address) -> const dev::files::ModuleRecord * {
+        for (const dev::files::ModuleRecord &record : file.modules)
+            if (record.address == address)
+                return &record;
+        return nullptr;
+    };
+    Pairing pairing;
+    if (!run.wholeNode() && modules.size() == 1) {
+        const model::ModuleInfo &module = modules.front();
+        if (file.modules.size() == 1) {
+            pairing.pairs.emplace_back(&file.modules.front(), module);
+            return pairing;
+        }
+        if (const dev::files::ModuleRecord *record = recordAt(module.address)) {
+            if (!run.options().module) {
+                for (const dev::files::ModuleRecord &other : file.modules)
+                    if (other.address != module.address) {
+                        *code =
+                            failUsage(run.ctx(), command,
+                                      str(path) + ": its module " + std::to_string(other.address) +
+                                          " is not on this connection (use --module)");
+                        return std::nullopt;
+                    }
+            }
+            pairing.pairs.emplace_back(record, module);
+            return pairing;
+        }
+        *code = failUsage(run.ctx(), command,
+                          str(path) + " holds no module " + std::to_string(module.address));
         return std::nullopt;
     }
-    std::vector<std::pair<const dev::files::ModuleRecord *, int>> pairs;
-    if (file.modules.size() == 1 && addresses->size() == 1) {
-        pairs.emplace_back(&file.modules.front(), addresses->front());
-        return pairs;
+    for (const model::ModuleInfo &module : modules) {
+        if (const dev::files::ModuleRecord *record = recordAt(module.address))
+            pairing.pairs.emplace_back(record, module);
+        else
+            pairing.unmatched.push_back({module.address, false, {}, module});
     }
     for (const dev::files::ModuleRecord &record : file.modules) {
-        if (std::find(addresses->begin(), addresses->end(), record.address) != addresses->end())
-            pairs.emplace_back(&record, record.address);
-        else if (!run.options().module) {
-            *code = failUsage(run.ctx(), command,
-                              str(path) + ": its module " + std::to_string(record.address) +
-                                  " is not on this connection (use --module)");
-            return std::nullopt;
-        }
+        const bool onNode = std::any_of(modules.begin(), modules.end(),
+                                        [&](const auto &m) { return m.address == record.address; });
+        if (!onNode)
+            pairing.unmatched.push_back({record.address, true, record.family, {}});
     }
-    if (pairs.empty()) {
-        *code = failUsage(run.ctx(), command,
-                          str(path) + " holds no module " + std::to_string(addresses->front()));
-        return std::nullopt;
-    }
-    return pairs;
+    return pairing;
 }
 
 } // namespace
 
-std::optional<std::vector<ModulePlan>> planFile(DeviceRun &run, const char *command,
-                                                const QString &path, bool forWrite, int *code)
+std::optional<FilePlan> planFile(DeviceRun &run, const char *command, const QString &path,
+                                 bool forWrite, int *code)
 {
     Context &ctx = run.ctx();
     const auto file = load(ctx, path, code);
     if (!file)
         return std::nullopt;
-    const auto pairs = pair(run, command, *file, path, code);
-    if (!pairs)
+    const auto pairing = pair(run, command, *file, path, code);
+    if (!pairing)
         return std::nullopt;
 
-    std::vector<ModulePlan> plans;
-    for (const auto &[record, address] : *pairs) {
-        auto module = run.identify(address, code);
-        if (!module)
-            return std::nullopt;
+    FilePlan filePlan;
+    filePlan.unmatched = pairing->unmatched;
+    std::vector<ModulePlan> &plans = filePlan.modules;
+    for (const auto &[record, info] : pairing->pairs) {
+        const model::ModuleInfo *module = &info;
+        const int address = module->address;
         if (record->family != module->identification.family) {
             *code = ctx.fail(kExitUsage, str(path) + " is for " + record->family + "; " +
                                              moduleText(*module) +
@@ -136,7 +170,32 @@ std::optional<std::vector<ModulePlan>> planFile(DeviceRun &run, const char *comm
         }
         plans.push_back(std::move(plan));
     }
-    return plans;
+    return filePlan;
+}
+
+std::string unmatchedText(const std::vector<UnmatchedModule> &unmatched)
+{
+    std::string text;
+    for (const UnmatchedModule &u : unmatched) {
+        text += text.empty() ? "" : "; ";
+        if (u.inFile)
+            text += "the file's module " + std::to_string(u.address) + " (" + u.family +
+                    ") is not on the node";
+        else
+            text += "the node's module " + std::to_string(u.address) + " (" +
+                    u.module.identification.family + ") is not in the file";
+    }
+    return text;
+}
+
+Json unmatchedJson(const std::vector<UnmatchedModule> &unmatched)
+{
+    Json list = Json::array();
+    for (const UnmatchedModule &u : unmatched)
+        list.push_back(Json{{"address", u.address},
+                            {"family", u.inFile ? u.family : u.module.identification.family},
+                            {"in", u.inFile ? "file" : "node"}});
+    return list;
 }
 
 std::optional<std::map<const dev::ParamMeta *, dev::RawValue>>
