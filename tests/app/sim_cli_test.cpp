@@ -102,8 +102,8 @@ TEST(SimCli, MbpollWritesOverTcp)
 }
 
 // Modbus RTU over a socat pseudo-terminal pair, the way a master without a null-modem cable
-// reaches the simulator: valvetune-sim --serial on one end (plain termios, no libserialport, so
-// no pty shim), mbpoll on the other, one mbpoll run per transaction. C1.07 of a DMA-2 V51 reads
+// reaches the simulator: valvetune-sim --serial on one end (plain termios), mbpoll on the other,
+// one mbpoll run per transaction. C1.07 of a DMA-2 V51 reads
 // its default, takes a write and reads it back; 10000 (above 9999) gets exception 3 and leaves
 // the value alone. The runs after the first one also pin down that an empty line is no end of
 // file for --serial (VMIN 1).
