@@ -62,9 +62,9 @@ TEST_F(CliNode, InfoNamesEveryModuleAndModuleNarrowsToOne)
     const CliRun all = node({"info"});
     ASSERT_EQ(all.code, kExitOk) << what(all);
     EXPECT_TRUE(all.says(", modbus-tcp, modules 1, 2, 3\n")) << all.out;
-    for (const char *line : {"module 1: dma-pn-v51 V51.00, mode 3 — ",
-                             "module 2: dma-pn-v51 V51.00, mode 3 — ",
-                             "module 3: dma-pn-v51 V51.00, mode 3 — "})
+    for (const char *line :
+         {"module 1: dma-pn-v51 V51.00, mode 3 — ", "module 2: dma-pn-v51 V51.00, mode 3 — ",
+          "module 3: dma-pn-v51 V51.00, mode 3 — "})
         EXPECT_TRUE(all.says(line)) << all.out;
 
     const CliRun one = node({"--json", "info", "--module", "2"});
@@ -136,7 +136,8 @@ TEST_F(CliNode, AModuleTheNodeLacksIsReportedAndNothingIsSent)
     const CliRun write = node({"write", four});
     EXPECT_EQ(write.code, kExitUsage) << what(write);
     EXPECT_EQ(write.errLines(), 1) << write.err;
-    EXPECT_TRUE(write.complains("the file's module 4 (dma-pn-v51) is not on the node")) << write.err;
+    EXPECT_TRUE(write.complains("the file's module 4 (dma-pn-v51) is not on the node"))
+        << write.err;
     EXPECT_TRUE(write.complains("nothing was sent")) << write.err;
     EXPECT_TRUE(write.out.empty()) << write.out;
     EXPECT_EQ(node({"get", "--module", "3", "C1.07"}).out, "C1.07          0.000 V\n");
@@ -170,7 +171,8 @@ TEST_F(CliNode, AModuleTheFileLacksIsReported)
     });
     const CliRun write = node({"write", two});
     EXPECT_EQ(write.code, kExitUsage) << what(write);
-    EXPECT_TRUE(write.complains("the node's module 3 (dma-pn-v51) is not in the file")) << write.err;
+    EXPECT_TRUE(write.complains("the node's module 3 (dma-pn-v51) is not in the file"))
+        << write.err;
     EXPECT_EQ(node({"get", "--module", "2", "C1.07"}).out, "C1.07          0.000 V\n");
 
     const CliRun diff = node({"diff", two});
