@@ -285,7 +285,7 @@ std::optional<std::vector<model::IdentifyResult>> DeviceRun::identifyModules(int
 
 std::string DeviceRun::describe(const std::vector<int> &addresses) const
 {
-    if (!nodeLink() || m_options.module)
+    if (!nodeLink())
         return str(m_connection->describe());
     const link::Link &wire =
         m_connection->faultLink() ? m_connection->faultLink()->inner() : m_connection->link();

@@ -61,8 +61,9 @@ public:
     // The module of an identification, its warning printed; nullopt after printing why it
     // failed (*exitCode says how to exit).
     std::optional<model::ModuleInfo> accept(const model::IdentifyResult &result, int *exitCode);
-    // The connection with the modules a command worked on: "tcp 127.0.0.1:502, modbus-tcp,
-    // modules 1, 2, 3" (Connection::describe() names the modules it was given, not found ones).
+    // The connection with the modules a command worked on: on a node link "tcp 127.0.0.1:502,
+    // modbus-tcp, modules 1, 2, 3" (Connection::describe() names the default unit there, not the
+    // modules found or --module's); elsewhere Connection::describe().
     std::string describe(const std::vector<int> &addresses) const;
 
     // Identifies one module (bounded). nullopt after printing why; *exitCode says how to exit.

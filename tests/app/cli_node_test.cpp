@@ -71,6 +71,7 @@ TEST_F(CliNode, InfoNamesEveryModuleAndModuleNarrowsToOne)
     ASSERT_EQ(one.code, kExitOk) << what(one);
     ASSERT_EQ(one.json()["modules"].size(), 1u);
     EXPECT_EQ(one.json()["modules"][0]["address"], 2);
+    EXPECT_EQ(one.json()["connection"], "tcp " + m_tcp.toStdString() + ", modbus-tcp, module 2");
 }
 
 TEST_F(CliNode, ReadWriteAndDiffCoverEveryModule)
