@@ -60,9 +60,9 @@ const std::vector<Command> &commands()
     return list;
 }
 
-int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err)
+int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err, Console console)
 {
-    Context ctx{out, err};
+    Context ctx{out, err, false, console};
     QStringList rest = arguments.mid(1);
     // Global options come before the command; --json is also accepted after it.
     while (!rest.isEmpty() && rest.first().startsWith(QLatin1String("--"))) {

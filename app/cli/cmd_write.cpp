@@ -1,10 +1,14 @@
-// valvetune-cli write CONNECTION FILE [--dry-run] [--module ADDRESS] [--lang en|de] [--json]: put
-// a .vtpar file's settable values on the device — only the ones that differ, each range-checked
-// before sending, paced and read back (WriteJob). A file of another family, or with a value out of
-// range, is refused whole (exit 2, nothing sent). --dry-run reads the device and lists what would
-// change. Exit 4 when a read back differs, 1 when the device refuses, 3 when the link is lost.
+// valvetune-cli write CONNECTION FILE [--dry-run] [--yes] [--module ADDRESS] [--lang en|de]
+// [--json]: put a .vtpar file's settings on the device — only the ones that differ, each
+// range-checked before sending, paced and read back (WriteJob); process and live values in the
+// file are listed and never written. A file of another family, or with a value out of range, is
+// refused whole (exit 2, nothing sent); a change that can move the actuator (E17, internal set
+// values) passes the confirmation gate first (confirm_gate.h). --dry-run reads the device and
+// lists what would change. Exit 4 when a read back differs, 1 when the device refuses, 3 when the
+// link is lost.
 #include "arg_parse.h"
 #include "commands.h"
+#include "confirm_gate.h"
 #include "file_plan.h"
 
 namespace vt::cli {
@@ -13,7 +17,9 @@ namespace {
 
 const char kName[] = "write";
 const char kSynopsis[] =
-    "write CONNECTION FILE [--dry-run] [--module ADDRESS] [--lang en|de] [--json]";
+    "write CONNECTION FILE [--dry-run] [--yes] [--module ADDRESS] [--lang en|de] [--json]\n"
+    "  --yes  write E17, internal set values and enables without asking (needed without a "
+    "terminal)";
 
 } // namespace
 
@@ -25,6 +31,7 @@ int runWrite(const QStringList &argsIn, Context &ctx)
     if (!options)
         return code;
     const bool dryRun = takeFlag(args, QStringLiteral("--dry-run"));
+    ConfirmGate gate(ctx, args);
     if (!checkPositional(args, ctx, kName, 1, 1, &code))
         return code;
     DeviceRun run(ctx, *options);
@@ -33,6 +40,14 @@ int runWrite(const QStringList &argsIn, Context &ctx)
     const auto plans = planFile(run, kName, args.front(), true, &code);
     if (!plans)
         return code;
+    if (!dryRun) {
+        std::vector<GateItem> gated;
+        for (const ModulePlan &plan : *plans)
+            for (const PlannedRow &r : plan.rows)
+                gated.push_back({&plan.module, r.row, r.value, std::nullopt});
+        if (const int c = gate.pass(run, std::move(gated)))
+            return c;
+    }
 
     Json modules = Json::array();
     bool complete = true;

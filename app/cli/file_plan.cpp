@@ -110,6 +110,10 @@ std::optional<std::vector<ModulePlan>> planFile(DeviceRun &run, const char *comm
         for (const dev::files::RowMapping &m : report.rows) {
             if (m.status == dev::files::MapStatus::Missing)
                 continue;
+            if (m.ignoredForWriting) { // a process or live value: named in a note above
+                plan.skipped.push_back({m.name, "not-a-setting", key(m.meta->kind)});
+                continue;
+            }
             const bool settable = m.meta && m.meta->writable();
             if (m.applies()) {
                 if (settable)

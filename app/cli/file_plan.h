@@ -2,7 +2,8 @@
 // load and check the file (docs/FILE-FORMAT.md), pair its modules with the connection's (by
 // address; a one-module file goes onto the one selected module), refuse a file of another family,
 // map each record onto the module's dictionary (param_file_map.h) and keep the settable rows
-// (read/write) with the file's raw values. CLI thread.
+// (read/write settings; process and live values are skipped) with the file's raw values. CLI
+// thread.
 #pragma once
 
 #include "device_run.h"
@@ -25,7 +26,9 @@ struct PlannedRow
 struct SkippedRow
 {
     std::string name;
-    std::string status; // "unknown", "not-applicable", "out-of-range", "type-mismatch"
+    // "unknown", "not-applicable", "out-of-range", "type-mismatch", "not-a-setting" (reason:
+    // "process" or "live", never written)
+    std::string status;
     std::string reason;
 };
 
