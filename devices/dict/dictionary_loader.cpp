@@ -235,7 +235,10 @@ private:
         const Json block = row.value("block", Json());
         if (!block.is_string() || !blockDefaults.contains(block.get<std::string>()))
             return;
-        for (const auto &[key, value] : blockDefaults[block.get<std::string>()].items())
+        const Json &defaults = blockDefaults[block.get<std::string>()];
+        if (!defaults.is_object())
+            return; // reported by checkBlockDefaults
+        for (const auto &[key, value] : defaults.items())
             if (key != "note" && !row.contains(key))
                 row[key] = value;
     }
@@ -256,10 +259,8 @@ private:
             for (const auto &[key, value] : defaults.items())
                 if (key != "row_kind" && key != "moves_actuator" && key != "note")
                     error(file, {},
-                          "block_defaults '" + block +
-                              "' may set only row_kind and "
-                              "moves_actuator (and a note), not '" +
-                              key + "'");
+                          "block_defaults '" + block + "' may set only " +
+                              "row_kind and moves_actuator (and a note), not '" + key + "'");
             if (!blocks.count(block))
                 error(file, {}, "block_defaults names block '" + block + "', which no row has");
         }

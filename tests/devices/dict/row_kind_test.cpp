@@ -315,6 +315,9 @@ TEST(RowKind, LoaderRefusesUnknownWords)
               std::vector<std::string>{"k.json: block_defaults names block 'a', which no row has"});
     EXPECT_EQ(errors(hcsFile(R"("block_defaults":[],)", hcsRow("A1.01", 31, "A", "rw"))),
               std::vector<std::string>{"k.json: \"block_defaults\" must be an object"});
+    EXPECT_EQ(
+        errors(hcsFile(R"("block_defaults":{"A":"process"},)", hcsRow("A1.01", 31, "A", "rw"))),
+        std::vector<std::string>{"k.json: block_defaults 'A' must be an object"});
     // A block default is checked like a row's own word.
     EXPECT_EQ(
         errors(hcsFile(R"("block_defaults":{"d":{"row_kind":"live"}},)",
