@@ -28,8 +28,10 @@ void printHelp(std::ostream &out)
             out << "  " << c.name << std::string(c.name.size() < 12 ? 12 - c.name.size() : 1, ' ')
                 << c.summary << '\n';
     }
-    out << "\nExit codes: 0 ok, 1 device or protocol error, 2 usage error, 3 connection error,\n"
-        << "4 verification failed.\n";
+    out << "\nWrites that can move the valve (set values, E17, control words) ask on a terminal\n"
+        << "and need --yes without one.\n"
+        << "\nExit codes: 0 ok, 1 device or protocol error, 2 usage error (also: a valve-moving\n"
+        << "write not confirmed), 3 connection error, 4 verification failed.\n";
 }
 
 } // namespace
@@ -48,10 +50,12 @@ const std::vector<Command> &commands()
         {"dictionary", "list device families, show a family's parameters", runDictionary},
         {"info", "identify the modules of a connection (family, version, mode, address)", runInfo},
         {"scan", "list the addresses that answer", runScan},
-        {"read", "read every parameter; print it or save a .vtpar file (--out)", runRead},
+        {"read", "read every parameter; print it or save the settings as a .vtpar file (--out)",
+         runRead},
         {"get", "read parameters by name", runGet},
-        {"set", "write parameters in display units, checked and verified", runSet},
-        {"write", "write a .vtpar file's changed values, verified (--dry-run: list them)",
+        {"set", "write parameters in display units, verified; asks first if the valve can move",
+         runSet},
+        {"write", "write a .vtpar file's changed settings, verified (--dry-run: list them)",
          runWrite},
         {"diff", "compare a .vtpar file with the device", runDiff},
         {"monitor", "poll display values at a rate for a time (--csv)", runMonitor},
@@ -60,9 +64,9 @@ const std::vector<Command> &commands()
     return list;
 }
 
-int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err)
+int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err, Console console)
 {
-    Context ctx{out, err};
+    Context ctx{out, err, false, console};
     QStringList rest = arguments.mid(1);
     // Global options come before the command; --json is also accepted after it.
     while (!rest.isEmpty() && rest.first().startsWith(QLatin1String("--"))) {

@@ -8,17 +8,27 @@
 
 #include <QStringList>
 #include <functional>
+#include <istream>
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace vt::cli {
 
+// Where valvetune-cli can ask the person a question (confirm_gate.h): stdin, when it is a
+// terminal. The default has nobody to ask, as for a script, a pipe or a test.
+struct Console
+{
+    bool terminal = false;
+    std::istream *in = nullptr; // the answers, line by line
+};
+
 struct Context
 {
     std::ostream &out;
     std::ostream &err;
     bool json = false;
+    Console console;
 
     // Prints "valvetune-cli: <message>" on stderr and returns the code.
     int fail(int code, const std::string &message) const;
@@ -36,6 +46,7 @@ struct Command
 const std::vector<Command> &commands();
 
 // arguments include the program name.
-int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err);
+int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err,
+           Console console = {});
 
 } // namespace vt::cli

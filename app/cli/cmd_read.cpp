@@ -1,10 +1,12 @@
 // valvetune-cli read CONNECTION [--module ADDRESS] [--out FILE] [--lang en|de] [--json]: read every
 // readable row of every module of the node (DeviceRun::identifyModules()) or of the one --module
-// names; print name and value, or save a .vtpar parameter file (docs/FILE-FORMAT.md). Rows that
+// names; print name and value, or save a .vtpar parameter file (docs/FILE-FORMAT.md) of the
+// settings (files/file_rows.h: no process or live values). Rows that
 // could not be read are listed and make the exit code 1; a file still holds what was read.
 #include "arg_parse.h"
 #include "commands.h"
 #include "device_run.h"
+#include "files/file_rows.h"
 #include "files/param_file.h"
 
 #include <QSaveFile>
@@ -68,7 +70,8 @@ std::optional<std::string> save(const QString &path, const std::vector<ModuleRea
         record.version = r.module.identification.version;
         record.mode = r.module.identification.mode;
         for (const model::RowValue &v : r.result.values)
-            record.values.push_back(dev::files::makeValueRow(*v.row, v.value));
+            if (dev::files::isFileRow(*v.row))
+                record.values.push_back(dev::files::makeValueRow(*v.row, v.value));
         file.modules.push_back(std::move(record));
     }
     const std::string text = dev::files::writeParamFile(file, &dictionaries, lang);
@@ -161,8 +164,10 @@ int runRead(const QStringList &argsIn, Context &ctx)
     } else if (outPath) {
         std::size_t values = 0;
         for (const ModuleRead &r : reads)
-            values += r.result.values.size();
-        ctx.out << "wrote " << values << " values of " << reads.size() << " module(s) to "
+            values += static_cast<std::size_t>(std::count_if(
+                r.result.values.begin(), r.result.values.end(),
+                [](const model::RowValue &v) { return dev::files::isFileRow(*v.row); }));
+        ctx.out << "wrote " << values << " settings of " << reads.size() << " module(s) to "
                 << str(*outPath) << '\n';
     } else {
         for (const ModuleRead &r : reads) {

@@ -1,11 +1,13 @@
-// valvetune-cli set CONNECTION NAME=VALUE... [--module ADDRESS] [--lang en|de] [--json]: write
-// parameters of one module (default: the first) in display units ("C1.07=1.000", German
+// valvetune-cli set CONNECTION NAME=VALUE... [--yes] [--module ADDRESS] [--lang en|de] [--json]:
+// write parameters of one module (default: the first) in display units ("C1.07=1.000", German
 // "C1.07=1,000", an enum label, text for text rows). Every value is parsed and range-checked
 // against the dictionary before anything is sent: a value out of range, for a read-only or an
-// unknown parameter exits 2 and nothing reaches the device. Then a safe write (WriteJob): only
-// changed values, paced, each read back — exit 4 when a read back differs, 1 when the device
-// refuses, 3 when the link is lost.
+// unknown parameter exits 2 and nothing reaches the device. A change that can move the actuator
+// (a set value, E17, a control word) passes the confirmation gate (confirm_gate.h). Then a safe
+// write (WriteJob): only changed values, paced, each read back — exit 4 when a read back differs,
+// 1 when the device refuses, 3 when the link is lost.
 #include "commands.h"
+#include "confirm_gate.h"
 #include "device_run.h"
 #include "dict/cooking.h"
 
@@ -14,13 +16,16 @@ namespace vt::cli {
 namespace {
 
 const char kName[] = "set";
-const char kSynopsis[] = "set CONNECTION NAME=VALUE... [--module ADDRESS] [--lang en|de] [--json]";
+const char kSynopsis[] =
+    "set CONNECTION NAME=VALUE... [--yes] [--module ADDRESS] [--lang en|de] [--json]\n"
+    "  --yes  write set values, E17 and control words without asking (needed without a terminal)";
 
 } // namespace
 
 int runSet(const QStringList &argsIn, Context &ctx)
 {
     QStringList args = argsIn;
+    ConfirmGate gate(ctx, args);
     int code = kExitOk;
     auto options = startCommand(args, ctx, kName, kSynopsis, &code);
     if (!options || !checkPositional(args, ctx, kName, 1, 4096, &code))
@@ -91,6 +96,8 @@ int runSet(const QStringList &argsIn, Context &ctx)
         }
     }
 
+    if (const int c = gate.pass(run, *module, items))
+        return c;
     const std::vector<model::WriteItem> done = run.write(*module, std::move(items));
     code = exitCodeOf(done, run.linkLost());
     if (ctx.json) {

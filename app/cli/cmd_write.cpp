@@ -1,13 +1,16 @@
-// valvetune-cli write CONNECTION FILE [--dry-run] [--module ADDRESS] [--lang en|de] [--json]: put
-// a .vtpar file's settable values on the device — only the ones that differ, each range-checked
-// before sending, paced and read back (WriteJob). A file of another family, or with a value out of
-// range, is refused whole (exit 2, nothing sent). --dry-run reads the device and lists what would
-// change. On a whole node every module of the file goes to its own module; a file that lacks a
-// module of the node, or holds one the node lacks, is refused whole (exit 2, nothing sent) —
-// --module writes one. Exit 4 when a read back differs, 1 when the device refuses, 3 when the
-// link is lost.
+// valvetune-cli write CONNECTION FILE [--dry-run] [--yes] [--module ADDRESS] [--lang en|de]
+// [--json]: put a .vtpar file's settings on the device — only the ones that differ, each
+// range-checked before sending, paced and read back (WriteJob); process and live values in the
+// file are listed and never written. A file of another family, or with a value out of range, is
+// refused whole (exit 2, nothing sent); a change that can move the actuator (E17, internal set
+// values) passes the confirmation gate first (confirm_gate.h). --dry-run reads the device and
+// lists what would change. On a whole node every module of the file goes to its own module; a
+// file that lacks a module of the node, or holds one the node lacks, is refused whole (exit 2,
+// nothing sent) — --module writes one. Exit 4 when a read back differs, 1 when the device
+// refuses, 3 when the link is lost.
 #include "arg_parse.h"
 #include "commands.h"
+#include "confirm_gate.h"
 #include "file_plan.h"
 
 namespace vt::cli {
@@ -16,7 +19,9 @@ namespace {
 
 const char kName[] = "write";
 const char kSynopsis[] =
-    "write CONNECTION FILE [--dry-run] [--module ADDRESS] [--lang en|de] [--json]";
+    "write CONNECTION FILE [--dry-run] [--yes] [--module ADDRESS] [--lang en|de] [--json]\n"
+    "  --yes  write E17, internal set values and enables without asking (needed without a "
+    "terminal)";
 
 } // namespace
 
@@ -28,6 +33,7 @@ int runWrite(const QStringList &argsIn, Context &ctx)
     if (!options)
         return code;
     const bool dryRun = takeFlag(args, QStringLiteral("--dry-run"));
+    ConfirmGate gate(ctx, args);
     if (!checkPositional(args, ctx, kName, 1, 1, &code))
         return code;
     DeviceRun run(ctx, *options);
@@ -40,6 +46,14 @@ int runWrite(const QStringList &argsIn, Context &ctx)
         return ctx.fail(kExitUsage, str(args.front()) + " does not fit the node: " +
                                         unmatchedText(plans->unmatched) +
                                         "; nothing was sent (--module ADDRESS writes one module)");
+    if (!dryRun) {
+        std::vector<GateItem> gated;
+        for (const ModulePlan &plan : plans->modules)
+            for (const PlannedRow &r : plan.rows)
+                gated.push_back({&plan.module, r.row, r.value, std::nullopt});
+        if (const int c = gate.pass(run, std::move(gated)))
+            return c;
+    }
 
     Json modules = Json::array();
     bool complete = true;

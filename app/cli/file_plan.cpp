@@ -144,6 +144,10 @@ std::optional<FilePlan> planFile(DeviceRun &run, const char *command, const QStr
         for (const dev::files::RowMapping &m : report.rows) {
             if (m.status == dev::files::MapStatus::Missing)
                 continue;
+            if (m.ignoredForWriting) { // a process or live value: named in a note above
+                plan.skipped.push_back({m.name, "not-a-setting", key(m.meta->kind)});
+                continue;
+            }
             const bool settable = m.meta && m.meta->writable();
             if (m.applies()) {
                 if (settable)

@@ -4,8 +4,8 @@
 // at that address, and the modules either side lacks named (FilePlan::unmatched); on one module
 // (--module, --unit, a serial line) a one-module file goes onto it, a larger file gives the
 // record at its address —, refuse a file of another family, map each record onto the module's
-// dictionary (param_file_map.h) and keep the settable rows (read/write) with the file's raw
-// values. CLI thread.
+// dictionary (param_file_map.h) and keep the settable rows (read/write settings; process and
+// live values are skipped) with the file's raw values. CLI thread.
 #pragma once
 
 #include "device_run.h"
@@ -28,7 +28,9 @@ struct PlannedRow
 struct SkippedRow
 {
     std::string name;
-    std::string status; // "unknown", "not-applicable", "out-of-range", "type-mismatch"
+    // "unknown", "not-applicable", "out-of-range", "type-mismatch", "not-a-setting" (reason:
+    // "process" or "live", never written)
+    std::string status;
     std::string reason;
 };
 

@@ -2,6 +2,7 @@
 
 #include "core/version.h"
 #include "dict/cooking.h"
+#include "file_rows.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,7 @@ LocalText notApplicable(const ParamMeta &meta, const std::string &major, const s
 RowMapping classify(const ValueRow &row, const ParamMeta &meta, bool byAddress,
                     const std::string &family, const std::string &major, const std::string &mode)
 {
-    RowMapping out{MapStatus::Mapped, 0, row.name, &meta, {}};
+    RowMapping out{MapStatus::Mapped, 0, row.name, &meta, {}, false};
     if (!meta.appliesTo(major, mode)) {
         out.status = MapStatus::NotApplicable;
         out.reason = notApplicable(meta, major, mode);
@@ -76,8 +77,8 @@ RowMapping classify(const ValueRow &row, const ParamMeta &meta, bool byAddress,
             return out;
         }
         // Only values that can be written are range-checked: a read-only row (a live display
-        // value, a HART NaN "not available") is never sent back.
-        if (meta.writable()) {
+        // value, a HART NaN "not available") and a process value are never sent back.
+        if (meta.writable() && isFileRow(meta)) {
             if (auto err = checkRange(meta, v)) {
                 out.status = MapStatus::OutOfRange;
                 out.reason = err->message;
@@ -119,6 +120,32 @@ void moduleNotes(MapReport &report, const ModuleRecord &record, const Dictionary
         report.notes.push_back(
             {dict.family + " describes mode " + joined(dict.modes) + ", not mode " + t.mode,
              dict.family + " beschreibt Modus " + joined(dict.modes) + ", nicht Modus " + t.mode});
+}
+
+// One note per kind, naming the rows, so an old file that saved set values or display values
+// says that they stay out of every write.
+void ignoredNotes(MapReport &report)
+{
+    std::vector<std::string> process, live;
+    for (RowMapping &m : report.rows) {
+        if (!m.meta || isFileRow(*m.meta))
+            continue;
+        m.ignoredForWriting = true;
+        (m.meta->kind == RowKind::Process ? process : live).push_back(m.name);
+    }
+    if (!process.empty())
+        report.notes.push_back(
+            {"process values, not settings, kept in the file and ignored for writing: " +
+                 joined(process),
+             "Prozesswerte, keine Einstellungen, bleiben in der Datei und werden nicht "
+             "geschrieben: " +
+                 joined(process)});
+    if (!live.empty())
+        report.notes.push_back(
+            {"live values, not settings, kept in the file and ignored for writing: " + joined(live),
+             "Live-Werte, keine Einstellungen, bleiben in der Datei und werden nicht "
+             "geschrieben: " +
+                 joined(live)});
 }
 
 } // namespace
@@ -174,7 +201,8 @@ MapReport mapModule(const ModuleRecord &record, const Dictionary &dict,
                      {row.name + ": its " + addressOf(*meta) + " belongs to " + meta->name +
                           ", which the file sets as well",
                       row.name + ": die " + addressOf(*meta) + " gehört zu " + meta->name +
-                          ", das die Datei ebenfalls setzt"}};
+                          ", das die Datei ebenfalls setzt"},
+                     false};
             } else {
                 m = {MapStatus::Unknown,
                      0,
@@ -182,21 +210,26 @@ MapReport mapModule(const ModuleRecord &record, const Dictionary &dict,
                      nullptr,
                      {row.name + " is not in " + dict.family + ": kept in the file, not applied",
                       row.name + " ist nicht in " + dict.family +
-                          ": bleibt in der Datei, wird nicht übernommen"}};
+                          ": bleibt in der Datei, wird nicht übernommen"},
+                     false};
             }
         }
         m.row = i;
         report.rows.push_back(std::move(m));
     }
+    ignoredNotes(report);
+    // A process value the file does not hold is not missing: files carry settings only.
     for (const ParamMeta &p : dict.params) {
-        if (p.access != Access::ReadWrite || !p.appliesTo(major, t.mode) || taken.count(&p))
+        if (p.access != Access::ReadWrite || !isFileRow(p) || !p.appliesTo(major, t.mode) ||
+            taken.count(&p))
             continue;
         report.rows.push_back({MapStatus::Missing,
                                RowMapping::kNoRow,
                                p.name,
                                &p,
                                {p.name + " is not in the file: the module keeps its value",
-                                p.name + " fehlt in der Datei: das Modul behält seinen Wert"}});
+                                p.name + " fehlt in der Datei: das Modul behält seinen Wert"},
+                               false});
     }
     return report;
 }
@@ -219,6 +252,15 @@ std::vector<const RowMapping *> MapReport::problems() const
     std::vector<const RowMapping *> out;
     for (const RowMapping &r : rows)
         if (r.status != MapStatus::Mapped)
+            out.push_back(&r);
+    return out;
+}
+
+std::vector<const RowMapping *> MapReport::ignoredForWriting() const
+{
+    std::vector<const RowMapping *> out;
+    for (const RowMapping &r : rows)
+        if (r.ignoredForWriting)
             out.push_back(&r);
     return out;
 }

@@ -37,6 +37,9 @@ struct RowMapping
     std::string name;                // the file's name (the dictionary's for Missing)
     const ParamMeta *meta = nullptr; // the dictionary row, when there is one
     LocalText reason;                // empty for Mapped
+    // A process or live value (file_rows.h): kept in the file, named in a module note, never
+    // written; the status still says whether its value would have mapped.
+    bool ignoredForWriting = false;
 
     bool applies() const
     {
@@ -53,8 +56,10 @@ struct MapTarget
 
 struct MapReport
 {
-    std::string family;           // the dictionary mapped onto
-    std::vector<LocalText> notes; // module level: other family, version or mode than the file's
+    std::string family; // the dictionary mapped onto
+    // Module level: other family, version or mode than the file's; process and live values the
+    // file holds, by name, ignored for writing.
+    std::vector<LocalText> notes;
     std::vector<RowMapping> rows; // file rows in file order, then Missing rows in dictionary order
 
     std::size_t count(MapStatus status) const;
@@ -62,6 +67,8 @@ struct MapReport
     bool clean() const;
     // Rows that need the user's attention (all but Mapped).
     std::vector<const RowMapping *> problems() const;
+    // File rows that are process or live values: never written, whatever their status.
+    std::vector<const RowMapping *> ignoredForWriting() const;
     // "180 mapped, 1 by address, 2 unknown, 1 out of range, 3 missing"
     LocalText summary() const;
 };

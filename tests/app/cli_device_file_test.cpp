@@ -30,7 +30,7 @@ TEST_F(CliDeviceFile, ReadDiffSetDiffWriteRoundTrip)
 
     const CliRun read = cli(QStringList{"read", "--out", file} + sim);
     ASSERT_EQ(read.code, kExitOk) << what(read);
-    EXPECT_TRUE(read.says(" values of 1 module(s) to ")) << read.out;
+    EXPECT_TRUE(read.says(" settings of 1 module(s) to ")) << read.out;
     QFile saved(file);
     ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
     const QByteArray text = saved.readAll();

@@ -1,8 +1,10 @@
-// Test helpers for parameter files: a module record holding every row of a built-in dictionary
-// at its factory value (or a plausible in-range value where the manual gives none).
+// Test helpers for parameter files: a module record holding the settings of a built-in dictionary
+// (or, as older versions saved them, every row) at their factory values (or a plausible in-range
+// value where the manual gives none).
 #pragma once
 
 #include "dict/dictionary_loader.h"
+#include "files/file_rows.h"
 #include "files/param_file.h"
 
 #include <algorithm>
@@ -19,8 +21,12 @@ inline const Dictionary &dictionary(const std::string &family)
     return *d;
 }
 
+// Settings: what this version saves (file_rows.h). All: also the process and live values older
+// versions saved.
+enum class Rows { Settings, All };
+
 inline ModuleRecord moduleFromDefaults(const std::string &family, int address, std::string version,
-                                       std::string mode)
+                                       std::string mode, Rows rows = Rows::Settings)
 {
     ModuleRecord m;
     m.address = address;
@@ -28,6 +34,8 @@ inline ModuleRecord moduleFromDefaults(const std::string &family, int address, s
     m.version = std::move(version);
     m.mode = std::move(mode);
     for (const ParamMeta &p : dictionary(family).params) {
+        if (rows == Rows::Settings && !isFileRow(p))
+            continue;
         if (p.isString()) {
             m.values.push_back(
                 makeValueRow(p, std::string("VT-" + p.name)

@@ -11,6 +11,7 @@ using namespace vt::dev;
 using namespace vt::dev::files;
 using vt::dev::files::test::dictionary;
 using vt::dev::files::test::moduleFromDefaults;
+using vt::dev::files::test::Rows;
 
 namespace {
 
@@ -142,7 +143,7 @@ TEST(ParamFileMap, RowsOfANewerVersionAreNotApplicableToAnOlderModule)
 TEST(ParamFileMap, WandfluhRowsFallBackToIndPnuAndStringsAreChecked)
 {
     const Dictionary &sd7 = dictionary("wandfluh-sd7");
-    ModuleRecord m = moduleFromDefaults("wandfluh-sd7", 0, "", "vpoc");
+    ModuleRecord m = moduleFromDefaults("wandfluh-sd7", 0, "", "vpoc", Rows::All);
     rowOf(m, "db_DeviceMode").name = "db_DevMode";
     rowOf(m, "hart_Tag").raw = std::string("TOO-LONG-TAG");
     rowOf(m, "hart_PvValue").raw = std::nan(""); // read-only live value: not range-checked
@@ -156,4 +157,51 @@ TEST(ParamFileMap, WandfluhRowsFallBackToIndPnuAndStringsAreChecked)
     bool byAddress = true;
     EXPECT_EQ(findMeta(sd7, m.values.front(), &byAddress), &sd7.params.front());
     EXPECT_FALSE(byAddress);
+}
+
+// An older file saved every row it read, set values and display values included. It opens as
+// before, but the process and live values are named in a note and never written (DMA Profinet
+// manual §4.5.3: A1.01 and A1.02 are the "Process Value1/2" of the cyclic telegram; §6: d-values
+// are read only).
+TEST(ParamFileMap, ProcessAndLiveValuesOfAnOldFileAreIgnoredForWriting)
+{
+    ModuleRecord m = moduleFromDefaults("dma-pn-v51", 1, "51.02", "3", Rows::All);
+    rowOf(m, "A1.01").raw = 2000.0;
+    rowOf(m, "A2.01").raw = 99999.0; // out of range, but never written: not a reason to refuse
+    const MapReport r = mapModule(m, dictionary("dma-pn-v51"));
+
+    ASSERT_EQ(r.notes.size(), 2u);
+    EXPECT_EQ(r.notes[0].en, "process values, not settings, kept in the file and ignored for "
+                             "writing: A1.01, A1.02, A2.01, A2.02, 0xB0");
+    EXPECT_EQ(r.notes[0].de, "Prozesswerte, keine Einstellungen, bleiben in der Datei und werden "
+                             "nicht geschrieben: A1.01, A1.02, A2.01, A2.02, 0xB0");
+    EXPECT_EQ(r.notes[1].en.rfind("live values, not settings, kept in the file and ignored for "
+                                  "writing: d1.01, d1.02, ",
+                                  0),
+              0u)
+        << r.notes[1].en;
+    EXPECT_NE(r.notes[1].en.find("So.in"), std::string::npos);
+    EXPECT_FALSE(r.clean());
+
+    std::vector<std::string> ignored;
+    for (const RowMapping *row : r.ignoredForWriting())
+        ignored.push_back(row->name);
+    EXPECT_EQ(ignored.size(), 21u + 1u + 5u); // d1.01..d2.13, So.in; A1.01..A2.02, 0xB0
+    EXPECT_EQ(rowNamed(r, "A2.01")->status, MapStatus::Mapped);
+    EXPECT_TRUE(rowNamed(r, "A1.01")->ignoredForWriting);
+    EXPECT_FALSE(rowNamed(r, "C1.07")->ignoredForWriting);
+    EXPECT_FALSE(rowNamed(r, "S1.01")->ignoredForWriting); // a stored internal set value
+    EXPECT_TRUE(r.problems().empty());
+}
+
+// A file of this version holds settings only; the set values it leaves out are not "missing".
+TEST(ParamFileMap, ProcessValuesAreNeverMissing)
+{
+    const ModuleRecord m = moduleFromDefaults("dma-pb-v32", 1, "32.10", "3");
+    EXPECT_EQ(m.find("A1.01"), nullptr);
+    EXPECT_EQ(m.find("d1.11"), nullptr);
+    ASSERT_NE(m.find("E17"), nullptr);
+    const MapReport r = mapModule(m, dictionary("dma-pb-v32"));
+    EXPECT_EQ(r.count(MapStatus::Missing), 0u);
+    EXPECT_TRUE(r.clean()) << r.summary().en;
 }

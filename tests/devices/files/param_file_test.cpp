@@ -10,6 +10,7 @@ using namespace vt::dev;
 using namespace vt::dev::files;
 using vt::dev::files::test::dictionary;
 using vt::dev::files::test::moduleFromDefaults;
+using vt::dev::files::test::Rows;
 
 namespace {
 
@@ -19,8 +20,11 @@ ParamFile foldFile()
     f.tool = "ValveTune 0.1.0";
     f.created = "2024-05-02T09:30:00Z";
     f.note = "Press 1 after commissioning";
-    f.modules.push_back(moduleFromDefaults("dma-pn-v51", 1, "51.02", "3"));
-    f.modules.push_back(moduleFromDefaults("wandfluh-sd7", 2, "SD7 device type 58352", "vpoc"));
+    // Every row, process and live values included: the codec keeps whatever a file holds, as
+    // older versions saved it.
+    f.modules.push_back(moduleFromDefaults("dma-pn-v51", 1, "51.02", "3", Rows::All));
+    f.modules.push_back(
+        moduleFromDefaults("wandfluh-sd7", 2, "SD7 device type 58352", "vpoc", Rows::All));
     f.modules[0].label = "Axis A, \"main\" cylinder";
     return f;
 }
