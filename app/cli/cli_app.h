@@ -4,6 +4,7 @@
 // in-process.
 #pragma once
 
+#include "app/cmdline/arg_parse.h"
 #include "exit_codes.h"
 
 #include <QStringList>
@@ -13,6 +14,11 @@
 #include <vector>
 
 namespace vt::cli {
+
+// The subcommands read their own options with the helpers valvetune's command line shares.
+using cmdline::parseInteger;
+using cmdline::takeFlag;
+using cmdline::takeOption;
 
 struct Context
 {

@@ -2,7 +2,6 @@
 //   fold plan --node opat|dma-pb|dma-pn --modules N [--product NUMBER] [--lang en|de]
 // prints what the PLC programmer configures for a node with N modules in all (OPAT: the master
 // plus N-1 CAN slaves): GSD file and module, output/input lengths and the byte map per module.
-#include "arg_parse.h"
 #include "commands.h"
 #include "core/hex.h"
 #include "model/fold/fold_export.h"

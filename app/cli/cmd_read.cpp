@@ -2,7 +2,6 @@
 // readable row of every module (or one); print name and value, or save a .vtpar parameter file
 // (docs/FILE-FORMAT.md). Rows that could not be read are listed and make the exit code 1; a file
 // still holds what was read.
-#include "arg_parse.h"
 #include "commands.h"
 #include "device_run.h"
 #include "files/param_file.h"

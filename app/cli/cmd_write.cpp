@@ -3,7 +3,6 @@
 // before sending, paced and read back (WriteJob). A file of another family, or with a value out of
 // range, is refused whole (exit 2, nothing sent). --dry-run reads the device and lists what would
 // change. Exit 4 when a read back differs, 1 when the device refuses, 3 when the link is lost.
-#include "arg_parse.h"
 #include "commands.h"
 #include "file_plan.h"
 

@@ -1,6 +1,5 @@
 #include "device_run.h"
 
-#include "arg_parse.h"
 #include "dict/dictionary_loader.h"
 #include "model/session/write_job.h"
 #include "sim_memory.h"
@@ -42,7 +41,7 @@ std::string joined(const std::vector<int> &addresses)
 
 std::string deviceUsage(const char *synopsis)
 {
-    return std::string("usage: valvetune-cli ") + synopsis + "\n" + kConnectionSynopsis;
+    return std::string("usage: valvetune-cli ") + synopsis + "\n" + deviceSynopsis();
 }
 
 std::optional<DeviceOptions> startCommand(QStringList &args, Context &ctx, const char *name,
