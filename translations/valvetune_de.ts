@@ -46,6 +46,14 @@
         <source>Not every change reached the device; see the write results.</source>
         <translation>Nicht alle Änderungen haben das Gerät erreicht; siehe Schreibergebnisse.</translation>
     </message>
+    <message>
+        <source>Connection Failed</source>
+        <translation>Verbindung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>ValveTune could not connect: %1</source>
+        <translation>ValveTune konnte keine Verbindung herstellen: %1</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::FileController</name>
