@@ -11,8 +11,8 @@
 #include "test_wait.h"
 
 #include <QMessageBox>
-#include <QTcpServer>
 #include <QSignalSpy>
+#include <QTcpServer>
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
 

@@ -54,9 +54,8 @@ public:
                     return *response;
                 }
             }
-            if (deadline.hasExpired() ||
-                !m_socket.waitForReadyRead(
-                    static_cast<int>(std::max<qint64>(1, deadline.remainingTime()))))
+            if (deadline.hasExpired() || !m_socket.waitForReadyRead(static_cast<int>(
+                                             std::max<qint64>(1, deadline.remainingTime()))))
                 return std::nullopt;
             m_buffer += m_socket.readAll();
         }
@@ -170,12 +169,13 @@ TEST(SimTcpClients, NodeImageTurnsASecondMasterAway)
     ASSERT_TRUE(second.connected()); // accepted by the kernel, then closed by the node
     EXPECT_TRUE(second.socket().state() == QAbstractSocket::UnconnectedState ||
                 second.socket().waitForDisconnected(kWaitMs));
-    EXPECT_TRUE(sim.waitForStderr("node image: refused 127.0.0.1:")) << sim.stderrSeen().toStdString();
+    EXPECT_TRUE(sim.waitForStderr("node image: refused 127.0.0.1:"))
+        << sim.stderrSeen().toStdString();
     EXPECT_TRUE(sim.stderrSeen().contains("belongs to client 1"));
     EXPECT_EQ(first.socket().state(), QAbstractSocket::ConnectedState);
 
-    const ProcessRun info = run(QStringLiteral(VT_CLI_PATH),
-                                {"info", "--tcp", where, "--protocol", "node-image"});
+    const ProcessRun info =
+        run(QStringLiteral(VT_CLI_PATH), {"info", "--tcp", where, "--protocol", "node-image"});
     ASSERT_TRUE(info.finished);
     EXPECT_EQ(info.code, 3) << info.out.toStdString() << info.err.toStdString(); // connection
 }
