@@ -5,10 +5,13 @@
 #pragma once
 
 #include "app/cmdline/arg_parse.h"
+#include "app/i18n/translation.h"
+#include "core/local_text.h"
 #include "exit_codes.h"
 
 #include <QStringList>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -25,9 +28,14 @@ struct Context
     std::ostream &out;
     std::ostream &err;
     bool json = false;
+    // --lang: the catalogue in force while the command runs, removed when runCli returns, so an
+    // in-process run leaves the language as it found it.
+    std::unique_ptr<i18n::Translation> translation{};
 
     // Prints "valvetune-cli: <message>" on stderr and returns the code.
     int fail(int code, const std::string &message) const;
+    // Texts worded through tr() (the session's, the links', the model's) come out in `lang`.
+    void useLanguage(dev::Language lang);
 };
 
 struct Command
@@ -37,6 +45,9 @@ struct Command
     // args: the subcommand's own arguments (without the program and subcommand name).
     std::function<int(const QStringList &args, Context &ctx)> run;
 };
+
+// Makes the process's QCoreApplication when there is none yet (runCli() called in-process).
+void ensureApplication();
 
 // Registered subcommands, in --help order.
 const std::vector<Command> &commands();

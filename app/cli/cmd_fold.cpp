@@ -117,6 +117,7 @@ int runPlan(QStringList rest, Context &ctx)
     }
     if (missing)
         return ctx.fail(kExitUsage, "fold plan: an option is missing its value (see fold --help)");
+    ctx.useLanguage(lang);
     if (!rest.isEmpty())
         return ctx.fail(kExitUsage,
                         "fold plan: unexpected argument '" + rest.first().toStdString() + "'");
