@@ -1015,6 +1015,116 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldSheetText</name>
+    <message numerus="yes">
+        <source>Fold plan: %1 (%2), %n module(s)</source>
+        <translation>
+            <numerusform>Modulplan: %1 (%2), %n Modul</numerusform>
+            <numerusform>Modulplan: %1 (%2), %n Module</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Title:</source>
+        <translation>Titel:</translation>
+    </message>
+    <message>
+        <source>GSD file:</source>
+        <translation>GSD-Datei:</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Gerät:</translation>
+    </message>
+    <message>
+        <source>GSD module:</source>
+        <translation>GSD-Modul:</translation>
+    </message>
+    <message>
+        <source>Output:</source>
+        <translation>Ausgang:</translation>
+    </message>
+    <message>
+        <source>%1 bytes (PLC to node, CMD 15 request, SNUM = %2)</source>
+        <translation>%1 Byte (SPS zum Knoten, CMD-15-Anfrage, SNUM = %2)</translation>
+    </message>
+    <message>
+        <source>Input:</source>
+        <translation>Eingang:</translation>
+    </message>
+    <message>
+        <source>%1 bytes (node to PLC, one module per answer)</source>
+        <translation>%1 Byte (Knoten zur SPS, ein Modul je Antwort)</translation>
+    </message>
+    <message>
+        <source>Reserved:</source>
+        <translation>Reserviert:</translation>
+    </message>
+    <message>
+        <source>%1 / %2 bytes out / in by the GSD module</source>
+        <translation>%1 / %2 Byte aus / ein durch das GSD-Modul</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>Quelle:</translation>
+    </message>
+    <message>
+        <source>Output image (PLC to node)</source>
+        <translation>Ausgangsabbild (SPS zum Knoten)</translation>
+    </message>
+    <message>
+        <source>byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): %3, output bytes %4..%5</source>
+        <translation>Modul %1 (%2): %3, Ausgangsbytes %4..%5</translation>
+    </message>
+    <message>
+        <source>Module %1: %2, output bytes %3..%4</source>
+        <translation>Modul %1: %2, Ausgangsbytes %3..%4</translation>
+    </message>
+    <message>
+        <source>answer with SADR = %1: VALUE1 = %2; VALUE2 = %3</source>
+        <translation>Antwort mit SADR = %1: VALUE1 = %2; VALUE2 = %3</translation>
+    </message>
+    <message>
+        <source>control byte bits: %1</source>
+        <translation>Steuerbyte-Bits: %1</translation>
+    </message>
+    <message>
+        <source>status high byte: %1</source>
+        <translation>Status High-Byte: %1</translation>
+    </message>
+    <message>
+        <source>status low byte: %1</source>
+        <translation>Status Low-Byte: %1</translation>
+    </message>
+    <message>
+        <source>no signals in this mode (error number while ERROR is set)</source>
+        <translation>keine Signale in diesem Modus (Fehlernummer solange ERROR gesetzt ist)</translation>
+    </message>
+    <message>
+        <source>%1 (error number while ERROR is set)</source>
+        <translation>%1 (Fehlernummer solange ERROR gesetzt ist)</translation>
+    </message>
+    <message>
+        <source>Input image (node to PLC, multiplexed: SADR names the module)</source>
+        <translation>Eingangsabbild (Knoten zur SPS, gemultiplext: SADR nennt das Modul)</translation>
+    </message>
+    <message>
+        <source>Example CMD 15 telegram (TADR 0x01, control byte 0x00, VALUE1 = 1000 = 1.000 V, VALUE2 = 0 for every module):</source>
+        <translation>Beispiel CMD-15-Telegramm (TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 = 1,000 V, VALUE2 = 0 für jedes Modul):</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::LCurve</name>
     <message>
         <source>%1 is read-only</source>
