@@ -1015,6 +1015,157 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldSheetHtml</name>
+    <message>
+        <source>PLC configuration</source>
+        <translation>SPS-Konfiguration</translation>
+    </message>
+    <message>
+        <source>PLC configuration of the fold</source>
+        <translation>SPS-Konfiguration des Knotens</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Modules</source>
+        <translation>Module</translation>
+    </message>
+    <message>
+        <source>Product number</source>
+        <translation>Produktnummer</translation>
+    </message>
+    <message>
+        <source>GSD file</source>
+        <translation>GSD-Datei</translation>
+    </message>
+    <message>
+        <source>Catalogue device</source>
+        <translation>Katalog-Gerät</translation>
+    </message>
+    <message>
+        <source>GSD module</source>
+        <translation>GSD-Modul</translation>
+    </message>
+    <message>
+        <source>Output (PLC → node)</source>
+        <translation>Ausgang (SPS → Knoten)</translation>
+    </message>
+    <message>
+        <source>%1 bytes, SNUM = %2</source>
+        <translation>%1 Byte, SNUM = %2</translation>
+    </message>
+    <message>
+        <source>Input (node → PLC)</source>
+        <translation>Eingang (Knoten → SPS)</translation>
+    </message>
+    <message>
+        <source>%1 bytes, one module per answer</source>
+        <translation>%1 Byte, ein Modul je Antwort</translation>
+    </message>
+    <message>
+        <source>Reserved by the GSD module</source>
+        <translation>Vom GSD-Modul reserviert</translation>
+    </message>
+    <message>
+        <source>%1 bytes out / %2 bytes in</source>
+        <translation>%1 Byte aus / %2 Byte ein</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Modules and addresses</source>
+        <translation>Module und Adressen</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Software / mode</source>
+        <translation>Software / Modus</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation>Optionen</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>Byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Output image (PLC → node, CMD 15 request)</source>
+        <translation>Ausgangsabbild (SPS → Knoten, CMD-15-Anfrage)</translation>
+    </message>
+    <message>
+        <source>Input image (node → PLC, multiplexed: SADR names the module)</source>
+        <translation>Eingangsabbild (Knoten → SPS, gemultiplext: SADR nennt das Modul)</translation>
+    </message>
+    <message>
+        <source>Bits per module</source>
+        <translation>Bits je Modul</translation>
+    </message>
+    <message>
+        <source>Only the bits of each module&apos;s own mode apply (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
+        <translation>Nur die Bits entsprechend dem Modus des jeweiligen Moduls gelten (DMA Profibus Anleitung §6, DMA-Profinet-Handbuch §5).</translation>
+    </message>
+    <message>
+        <source>Module / SADR</source>
+        <translation>Modul / SADR</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>Layout</translation>
+    </message>
+    <message>
+        <source>Control byte</source>
+        <translation>Steuerbyte</translation>
+    </message>
+    <message>
+        <source>Status high byte</source>
+        <translation>Status High-Byte</translation>
+    </message>
+    <message>
+        <source>Status low byte</source>
+        <translation>Status Low-Byte</translation>
+    </message>
+    <message>
+        <source>Example CMD 15 telegram</source>
+        <translation>Beispiel CMD-15-Telegramm</translation>
+    </message>
+    <message>
+        <source>TADR 0x01, control byte 0x00, VALUE1 = 1000 (1.000 V), VALUE2 = 0 for every module.</source>
+        <translation>TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 (1,000 V), VALUE2 = 0 für jedes Modul.</translation>
+    </message>
+    <message>
+        <source>Sources</source>
+        <translation>Quellen</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::FoldSheetText</name>
     <message numerus="yes">
         <source>Fold plan: %1 (%2), %n module(s)</source>

@@ -1,5 +1,6 @@
 // Printable PLC sheets: the HTML carries the key facts, the CSV has one row per
 // image byte, and the PDF export renders offscreen into a valid PDF with the reported page count.
+#include "app/i18n/translation.h"
 #include "model/fold/fold_export.h"
 
 #include <QFile>
@@ -36,6 +37,9 @@ TEST(FoldExport, HtmlHasTheKeyFactsEscaped)
     EXPECT_TRUE(html.contains("01 03 0F 00 03 E8 00 00")); // example telegram
     // The product number is missing: the finding is on the sheet.
     EXPECT_TRUE(html.contains("hcs0ea7.gsd"));
+    const auto german = vt::i18n::Translation::load("de"); // the sheet's words through tr()
+    ASSERT_TRUE(german);
+    german->install();
     const QString de = foldSheetHtml(s, Language::German);
     EXPECT_TRUE(de.contains("Ausgangsabbild"));
     EXPECT_TRUE(de.contains("lang=\"de\""));
