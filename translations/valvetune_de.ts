@@ -1561,6 +1561,113 @@
     </message>
 </context>
 <context>
+    <name>vt::model::PlcConfig</name>
+    <message>
+        <source>The plan has no modules.</source>
+        <translation>Der Plan enthält keine Module.</translation>
+    </message>
+    <message>
+        <source>%1 OPAT modules: one CMD 15 telegram reaches the master and at most 7 CAN slaves (8 modules; OPAT manual §1.6, §3.1).</source>
+        <translation>%1 OPAT-Module: Ein CMD-15-Telegramm erreicht den Master und höchstens 7 CAN-Slaves (8 Module; OPAT-Handbuch §1.6, §3.1).</translation>
+    </message>
+    <message>
+        <source>%1 DMA modules: CMD 15 reaches E22 = 1 … 5 only; modules above 5 are reachable by CMD 3 / CMD 6 only (DMA Profibus Anleitung §1.5, DMA Profinet manual §1.5).</source>
+        <translation>%1 DMA-Module: CMD 15 erreicht nur E22 = 1 … 5; Module darüber sind nur mit CMD 3 / CMD 6 erreichbar (DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5).</translation>
+    </message>
+    <message>
+        <source>OPAT manual §1.1 (GSD file) and §4.1 (HW Config: the CMD 15 module for the master and %1 slave(s); output at least %2 bytes, input at least 9 bytes).</source>
+        <translation>OPAT-Handbuch §1.1 (GSD-Datei) und §4.1 (HW Konfig: CMD-15-Modul für den Master und %1 Slave(s); Ausgang mindestens %2 Byte, Eingang mindestens 9 Byte).</translation>
+    </message>
+    <message>
+        <source>DMA Profinet manual §1.1 (GSDML file) and §4.5.4 (one 42-byte IN/OUT module serves every fold; the CMD 15 telegram uses the first %1 output and 9 input bytes).</source>
+        <translation>DMA-Profinet-Handbuch §1.1 (GSDML-Datei) und §4.5.4 (ein IN/OUT-Modul mit 42 Byte dient jeder Modulanzahl; das CMD-15-Telegramm belegt die ersten %1 Ausgangs- und 9 Eingangsbytes).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §6.1.1–6.1.4: product number ending in 5 uses hcs0ea7.gsd, device DMA-22-XX and the 28-byte module; the CMD 15 telegram uses the first %1 output and 9 input bytes.</source>
+        <translation>DMA Profibus Anleitung §6.1.1–6.1.4: Produktnummer mit Endziffer 5 verwendet hcs0ea7.gsd, Gerät DMA-22-XX und das 28-Byte-Modul; das CMD-15-Telegramm belegt die ersten %1 Ausgangs- und 9 Eingangsbytes.</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes) and §5.1.1 (no one-module CMD 15 entry in the catalogue: universal module).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte) und §5.1.1 (kein CMD-15-Eintrag für ein Modul im Katalog: Universalmodul).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes); product number not given: HCS0220.GSD assumed (§6.1.1: numbers ending in 5 use hcs0ea7.gsd).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte); Produktnummer nicht angegeben: HCS0220.GSD angenommen (§6.1.1: Nummern mit Endziffer 5 verwenden hcs0ea7.gsd).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes) and §5.1.1 (no one-module CMD 15 entry in the catalogue: universal module); product number not given: HCS0220.GSD assumed (§6.1.1: numbers ending in 5 use hcs0ea7.gsd).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte) und §5.1.1 (kein CMD-15-Eintrag für ein Modul im Katalog: Universalmodul); Produktnummer nicht angegeben: HCS0220.GSD angenommen (§6.1.1: Nummern mit Endziffer 5 verwenden hcs0ea7.gsd).</translation>
+    </message>
+    <message>
+        <source>telegram address, set by the PLC (0 … 255); change it to force an answer</source>
+        <translation>Telegrammadresse, von der SPS gesetzt (0 … 255); ändern, um eine Antwort zu erzwingen</translation>
+    </message>
+    <message>
+        <source>number of CAN slaves = %1 (the master, SADR 0, is always included)</source>
+        <translation>Anzahl CAN-Slaves = %1 (der Master, SADR 0, ist immer dabei)</translation>
+    </message>
+    <message>
+        <source>number of modules = %1</source>
+        <translation>Anzahl Module = %1</translation>
+    </message>
+    <message>
+        <source>command 15 (0x0F)</source>
+        <translation>Befehl 15 (0x0F)</translation>
+    </message>
+    <message>
+        <source>control byte (special functions, bits below)</source>
+        <translation>Steuerbyte (Sonderfunktionen, Bits siehe unten)</translation>
+    </message>
+    <message>
+        <source>%1 high byte: %2</source>
+        <translation>%1 High-Byte: %2</translation>
+    </message>
+    <message>
+        <source>%1 low byte: %2</source>
+        <translation>%1 Low-Byte: %2</translation>
+    </message>
+    <message>
+        <source>%1 high byte: %2 %3</source>
+        <translation>%1 High-Byte: %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 low byte: %2 %3</source>
+        <translation>%1 Low-Byte: %2 %3</translation>
+    </message>
+    <message>
+        <source>telegram address, echoed</source>
+        <translation>Telegrammadresse, zurückgesendet</translation>
+    </message>
+    <message>
+        <source>address of the module that answered (%1, changes with every answer)</source>
+        <translation>Adresse des antwortenden Moduls (%1, wechselt mit jeder Antwort)</translation>
+    </message>
+    <message>
+        <source>command 15 (0x8F = error, byte 3 = exception)</source>
+        <translation>Befehl 15 (0x8F = Fehler, Byte 3 = Exception)</translation>
+    </message>
+    <message>
+        <source>status word high byte: HW_ENABLE, ERROR, BUS_DISABLE</source>
+        <translation>Statuswort High-Byte: HW_ENABLE, ERROR, BUS_DISABLE</translation>
+    </message>
+    <message>
+        <source>status word low byte: signals, or the error number while ERROR is set</source>
+        <translation>Statuswort Low-Byte: Signale, oder die Fehlernummer solange ERROR gesetzt ist</translation>
+    </message>
+    <message>
+        <source>%1 high byte of the module named by SADR (meaning listed per module)</source>
+        <translation>%1 High-Byte des in SADR genannten Moduls (Bedeutung je Modul aufgeführt)</translation>
+    </message>
+    <message>
+        <source>%1 low byte of the module named by SADR (meaning listed per module)</source>
+        <translation>%1 Low-Byte des in SADR genannten Moduls (Bedeutung je Modul aufgeführt)</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::PlcTestBench</name>
     <message>
         <source>CMD 15 addresses 1 to %1 modules on this node, not %2.</source>

@@ -23,7 +23,9 @@ const char kUsage[] = "usage: valvetune-cli fold plan --node opat|dma-pb|dma-pn 
 
 Json byteJson(const model::PlcImageByte &b, dev::Language lang)
 {
-    return Json{{"byte", b.offset}, {"field", b.field}, {"meaning", b.text.in(lang)}};
+    return Json{{"byte", b.offset},
+                {"field", b.field},
+                {"meaning", model::plcText(b.text, lang).toStdString()}};
 }
 
 Json bitsJson(const std::array<dev::hcs::BitMeaning, 8> &bits, dev::Language lang)
@@ -86,7 +88,7 @@ Json planJson(const model::PlcConfig &c, const model::FoldPlan &plan, dev::Langu
         {"map", map},
         {"input", input},
         {"example_request", dev::toHex(c.exampleRequestBytes)},
-        {"source", c.gsdNote.in(lang)},
+        {"source", model::plcText(c.gsdNote, lang).toStdString()},
     };
 }
 
@@ -127,7 +129,8 @@ int runPlan(QStringList rest, Context &ctx)
         plan.productNumber = product->toStdString();
     const auto config = model::buildPlcConfig(plan);
     if (!config.ok()) // an impossible plan is a usage error that says why
-        return ctx.fail(kExitUsage, "fold plan: " + config.error().in(lang));
+        return ctx.fail(kExitUsage,
+                        "fold plan: " + model::plcText(config.error(), lang).toStdString());
 
     if (ctx.json)
         ctx.out << planJson(*config, plan, lang).dump(2) << '\n';

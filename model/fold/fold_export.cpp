@@ -58,7 +58,7 @@ QString csvField(const QString &s)
 
 } // namespace
 
-std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, LocalText *why)
+std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, PlcText *why)
 {
     auto config = buildPlcConfig(plan);
     if (!config.ok()) {
@@ -105,7 +105,7 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
     row(FoldHtml::tr("Reserved by the GSD module"), FoldHtml::tr("%1 bytes out / %2 bytes in")
                                                         .arg(c.moduleOutputBytes)
                                                         .arg(c.moduleInputBytes));
-    row(FoldHtml::tr("Source"), esc(c.gsdNote.in(lang)));
+    row(FoldHtml::tr("Source"), plcText(c.gsdNote, lang).toHtmlEscaped());
     h += QStringLiteral("</table>\n");
 
     h +=
@@ -149,7 +149,7 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
                      "<tr><td>%1</td><td>%2</td><td><code>%3</code></td><td>%4</td></tr>\n")
                      .arg(b.offset)
                      .arg(b.module < 0 ? QStringLiteral("–") : QString::number(b.module + 1),
-                          esc(b.field), esc(b.text.in(lang)));
+                          esc(b.field), plcText(b.text, lang).toHtmlEscaped());
         h += QStringLiteral("</table>\n");
     };
     imageTable(c.output, FoldHtml::tr("Output image (PLC → node, CMD 15 request)"));
@@ -207,7 +207,7 @@ QString foldSheetCsv(const FoldSheet &sheet, Language lang)
             out += dir + QLatin1Char(';') + QString::number(b.offset) + QLatin1Char(';') +
                    (b.module < 0 ? QString() : QString::number(b.module + 1)) + QLatin1Char(';') +
                    sadr + QLatin1Char(';') + csvField(q(b.field)) + QLatin1Char(';') +
-                   csvField(q(b.text.in(lang))) + QLatin1Char('\n');
+                   csvField(plcText(b.text, lang)) + QLatin1Char('\n');
         }
     };
     rows(c.output, QStringLiteral("out"));

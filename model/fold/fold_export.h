@@ -25,7 +25,7 @@ struct FoldSheet
 };
 
 // Builds the plan's config and findings; nullopt (with *why set) when buildPlcConfig fails.
-std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, dev::LocalText *why = nullptr);
+std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, PlcText *why = nullptr);
 
 // Self-contained HTML 4 document (inline CSS, no scripts, no external files), text escaped.
 // Sections: node and GSD, modules and addresses, findings, output image, input image, per-module

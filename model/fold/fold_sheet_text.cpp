@@ -1,6 +1,6 @@
 // foldSheetText: the plain-text PLC sheet printed by `valvetune-cli fold plan`. Its own words go
 // through tr() (the CLI's --lang installs the catalogue); the texts of the Qt-free plan (node
-// title, addresses, byte meanings, layouts) are still {en, de} pairs, shown in `lang`.
+// title, addresses, layouts) are still {en, de} pairs, shown in `lang`.
 #include "core/hex.h"
 #include "fold_export.h"
 
@@ -41,7 +41,7 @@ QString byteLine(const PlcImageByte &b, Language lang)
 {
     return QStringLiteral("  %1  %2%3\n")
         .arg(b.offset, 4)
-        .arg(pad(q(b.field), 9), q(b.text.in(lang)));
+        .arg(pad(q(b.field), 9), plcText(b.text, lang));
 }
 
 QString bitNames(const std::array<dev::hcs::BitMeaning, 8> &bits)
@@ -75,7 +75,7 @@ QString FoldSheetText::text(const PlcConfig &c, const FoldPlan &plan, Language l
                  .arg(c.moduleOutputBytes)
                  .arg(c.moduleInputBytes) +
              QLatin1Char('\n');
-    o += pad(tr("Source:"), 13) + q(c.gsdNote.in(lang)) + QLatin1Char('\n');
+    o += pad(tr("Source:"), 13) + plcText(c.gsdNote, lang) + QLatin1Char('\n');
 
     o += QLatin1Char('\n') + tr("Output image (PLC to node)") + QLatin1Char('\n');
     o += QStringLiteral("  ") + pad(tr("byte"), 4) + QStringLiteral("  ") + pad(tr("field"), 9) +

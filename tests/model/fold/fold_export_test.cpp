@@ -93,7 +93,7 @@ TEST(FoldExport, PdfRendersOffscreen)
 
 TEST(FoldExport, ImpossiblePlanHasNoSheet)
 {
-    vt::dev::LocalText why;
+    PlcText why;
     EXPECT_FALSE(makeFoldSheet(defaultFoldPlan(FoldNode::DmaProfinet, 6), &why).has_value());
-    EXPECT_FALSE(why.en.empty());
+    EXPECT_FALSE(plcText(why, Language::English).isEmpty());
 }
