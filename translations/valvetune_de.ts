@@ -940,6 +940,21 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldPlan</name>
+    <message>
+        <source>OPAT PROFIBUS master with CAN slaves</source>
+        <translation>OPAT-PROFIBUS-Master mit CAN-Slaves</translation>
+    </message>
+    <message>
+        <source>DMA-2 modules on a PROFIBUS node</source>
+        <translation>DMA-2-Module an einem PROFIBUS-Knoten</translation>
+    </message>
+    <message>
+        <source>DMA-2 modules on a PROFINET node</source>
+        <translation>DMA-2-Module an einem PROFINET-Knoten</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::FoldPlanFile</name>
     <message>
         <source>The fold plan file is damaged: %1 is not a whole number.</source>

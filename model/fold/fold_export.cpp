@@ -90,7 +90,7 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
     const auto row = [&h](const QString &k, const QString &v) {
         h += QStringLiteral("<tr><th>%1</th><td>%2</td></tr>\n").arg(k, v);
     };
-    row(FoldHtml::tr("Node"), esc(foldNodeTitle(c.node).in(lang)) + QStringLiteral(" (") +
+    row(FoldHtml::tr("Node"), foldNodeTitle(c.node).toHtmlEscaped() + QStringLiteral(" (") +
                                   esc(std::string(foldNodeKey(c.node))) + QStringLiteral(")"));
     row(FoldHtml::tr("Modules"), QString::number(c.modules));
     if (!sheet.plan.productNumber.empty())

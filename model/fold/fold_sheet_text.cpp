@@ -1,6 +1,6 @@
 // foldSheetText: the plain-text PLC sheet printed by `valvetune-cli fold plan`. Its own words go
 // through tr() (the CLI's --lang installs the catalogue); the texts of the Qt-free plan (node
-// title, addresses, layouts) are still {en, de} pairs, shown in `lang`.
+// addresses, layouts) are still {en, de} pairs, shown in `lang`.
 #include "core/hex.h"
 #include "fold_export.h"
 
@@ -57,7 +57,7 @@ QString FoldSheetText::text(const PlcConfig &c, const FoldPlan &plan, Language l
 {
     QString o;
     o += tr("Fold plan: %1 (%2), %n module(s)", nullptr, c.modules)
-             .arg(q(foldNodeTitle(c.node).in(lang)), q(std::string(foldNodeKey(c.node)))) +
+             .arg(foldNodeTitle(c.node), q(std::string(foldNodeKey(c.node)))) +
          QLatin1Char('\n');
     if (!plan.title.empty())
         o += pad(tr("Title:"), 13) + q(plan.title) + QLatin1Char('\n');
