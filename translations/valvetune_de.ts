@@ -46,6 +46,14 @@
         <source>Not every change reached the device; see the write results.</source>
         <translation>Nicht alle Änderungen haben das Gerät erreicht; siehe Schreibergebnisse.</translation>
     </message>
+    <message>
+        <source>Connection Failed</source>
+        <translation>Verbindung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>ValveTune could not connect: %1</source>
+        <translation>ValveTune konnte keine Verbindung herstellen: %1</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::FileController</name>
@@ -940,6 +948,21 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldPlan</name>
+    <message>
+        <source>OPAT PROFIBUS master with CAN slaves</source>
+        <translation>OPAT-PROFIBUS-Master mit CAN-Slaves</translation>
+    </message>
+    <message>
+        <source>DMA-2 modules on a PROFIBUS node</source>
+        <translation>DMA-2-Module an einem PROFIBUS-Knoten</translation>
+    </message>
+    <message>
+        <source>DMA-2 modules on a PROFINET node</source>
+        <translation>DMA-2-Module an einem PROFINET-Knoten</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::FoldPlanFile</name>
     <message>
         <source>The fold plan file is damaged: %1 is not a whole number.</source>
@@ -1012,6 +1035,267 @@
     <message>
         <source>The fold plan file cannot be read: %1</source>
         <translation>Die Modulplan-Datei kann nicht gelesen werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::FoldSheetHtml</name>
+    <message>
+        <source>PLC configuration</source>
+        <translation>SPS-Konfiguration</translation>
+    </message>
+    <message>
+        <source>PLC configuration of the fold</source>
+        <translation>SPS-Konfiguration des Knotens</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Modules</source>
+        <translation>Module</translation>
+    </message>
+    <message>
+        <source>Product number</source>
+        <translation>Produktnummer</translation>
+    </message>
+    <message>
+        <source>GSD file</source>
+        <translation>GSD-Datei</translation>
+    </message>
+    <message>
+        <source>Catalogue device</source>
+        <translation>Katalog-Gerät</translation>
+    </message>
+    <message>
+        <source>GSD module</source>
+        <translation>GSD-Modul</translation>
+    </message>
+    <message>
+        <source>Output (PLC → node)</source>
+        <translation>Ausgang (SPS → Knoten)</translation>
+    </message>
+    <message>
+        <source>%1 bytes, SNUM = %2</source>
+        <translation>%1 Byte, SNUM = %2</translation>
+    </message>
+    <message>
+        <source>Input (node → PLC)</source>
+        <translation>Eingang (Knoten → SPS)</translation>
+    </message>
+    <message>
+        <source>%1 bytes, one module per answer</source>
+        <translation>%1 Byte, ein Modul je Antwort</translation>
+    </message>
+    <message>
+        <source>Reserved by the GSD module</source>
+        <translation>Vom GSD-Modul reserviert</translation>
+    </message>
+    <message>
+        <source>%1 bytes out / %2 bytes in</source>
+        <translation>%1 Byte aus / %2 Byte ein</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Modules and addresses</source>
+        <translation>Module und Adressen</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Software / mode</source>
+        <translation>Software / Modus</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Options</source>
+        <translation>Optionen</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>Byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Output image (PLC → node, CMD 15 request)</source>
+        <translation>Ausgangsabbild (SPS → Knoten, CMD-15-Anfrage)</translation>
+    </message>
+    <message>
+        <source>Input image (node → PLC, multiplexed: SADR names the module)</source>
+        <translation>Eingangsabbild (Knoten → SPS, gemultiplext: SADR nennt das Modul)</translation>
+    </message>
+    <message>
+        <source>Bits per module</source>
+        <translation>Bits je Modul</translation>
+    </message>
+    <message>
+        <source>Only the bits of each module&apos;s own mode apply (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
+        <translation>Nur die Bits entsprechend dem Modus des jeweiligen Moduls gelten (DMA Profibus Anleitung §6, DMA-Profinet-Handbuch §5).</translation>
+    </message>
+    <message>
+        <source>Module / SADR</source>
+        <translation>Modul / SADR</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>Layout</translation>
+    </message>
+    <message>
+        <source>Control byte</source>
+        <translation>Steuerbyte</translation>
+    </message>
+    <message>
+        <source>Status high byte</source>
+        <translation>Status High-Byte</translation>
+    </message>
+    <message>
+        <source>Status low byte</source>
+        <translation>Status Low-Byte</translation>
+    </message>
+    <message>
+        <source>Example CMD 15 telegram</source>
+        <translation>Beispiel CMD-15-Telegramm</translation>
+    </message>
+    <message>
+        <source>TADR 0x01, control byte 0x00, VALUE1 = 1000 (1.000 V), VALUE2 = 0 for every module.</source>
+        <translation>TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 (1,000 V), VALUE2 = 0 für jedes Modul.</translation>
+    </message>
+    <message>
+        <source>Sources</source>
+        <translation>Quellen</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::FoldSheetText</name>
+    <message numerus="yes">
+        <source>Fold plan: %1 (%2), %n module(s)</source>
+        <translation>
+            <numerusform>Modulplan: %1 (%2), %n Modul</numerusform>
+            <numerusform>Modulplan: %1 (%2), %n Module</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Title:</source>
+        <translation>Titel:</translation>
+    </message>
+    <message>
+        <source>GSD file:</source>
+        <translation>GSD-Datei:</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Gerät:</translation>
+    </message>
+    <message>
+        <source>GSD module:</source>
+        <translation>GSD-Modul:</translation>
+    </message>
+    <message>
+        <source>Output:</source>
+        <translation>Ausgang:</translation>
+    </message>
+    <message>
+        <source>%1 bytes (PLC to node, CMD 15 request, SNUM = %2)</source>
+        <translation>%1 Byte (SPS zum Knoten, CMD-15-Anfrage, SNUM = %2)</translation>
+    </message>
+    <message>
+        <source>Input:</source>
+        <translation>Eingang:</translation>
+    </message>
+    <message>
+        <source>%1 bytes (node to PLC, one module per answer)</source>
+        <translation>%1 Byte (Knoten zur SPS, ein Modul je Antwort)</translation>
+    </message>
+    <message>
+        <source>Reserved:</source>
+        <translation>Reserviert:</translation>
+    </message>
+    <message>
+        <source>%1 / %2 bytes out / in by the GSD module</source>
+        <translation>%1 / %2 Byte aus / ein durch das GSD-Modul</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>Quelle:</translation>
+    </message>
+    <message>
+        <source>Output image (PLC to node)</source>
+        <translation>Ausgangsabbild (SPS zum Knoten)</translation>
+    </message>
+    <message>
+        <source>byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2): %3, output bytes %4..%5</source>
+        <translation>Modul %1 (%2): %3, Ausgangsbytes %4..%5</translation>
+    </message>
+    <message>
+        <source>Module %1: %2, output bytes %3..%4</source>
+        <translation>Modul %1: %2, Ausgangsbytes %3..%4</translation>
+    </message>
+    <message>
+        <source>answer with SADR = %1: VALUE1 = %2; VALUE2 = %3</source>
+        <translation>Antwort mit SADR = %1: VALUE1 = %2; VALUE2 = %3</translation>
+    </message>
+    <message>
+        <source>control byte bits: %1</source>
+        <translation>Steuerbyte-Bits: %1</translation>
+    </message>
+    <message>
+        <source>status high byte: %1</source>
+        <translation>Status High-Byte: %1</translation>
+    </message>
+    <message>
+        <source>status low byte: %1</source>
+        <translation>Status Low-Byte: %1</translation>
+    </message>
+    <message>
+        <source>no signals in this mode (error number while ERROR is set)</source>
+        <translation>keine Signale in diesem Modus (Fehlernummer solange ERROR gesetzt ist)</translation>
+    </message>
+    <message>
+        <source>%1 (error number while ERROR is set)</source>
+        <translation>%1 (Fehlernummer solange ERROR gesetzt ist)</translation>
+    </message>
+    <message>
+        <source>Input image (node to PLC, multiplexed: SADR names the module)</source>
+        <translation>Eingangsabbild (Knoten zur SPS, gemultiplext: SADR nennt das Modul)</translation>
+    </message>
+    <message>
+        <source>Example CMD 15 telegram (TADR 0x01, control byte 0x00, VALUE1 = 1000 = 1.000 V, VALUE2 = 0 for every module):</source>
+        <translation>Beispiel CMD-15-Telegramm (TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 = 1,000 V, VALUE2 = 0 für jedes Modul):</translation>
     </message>
 </context>
 <context>
@@ -1297,6 +1581,113 @@
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::PlcConfig</name>
+    <message>
+        <source>The plan has no modules.</source>
+        <translation>Der Plan enthält keine Module.</translation>
+    </message>
+    <message>
+        <source>%1 OPAT modules: one CMD 15 telegram reaches the master and at most 7 CAN slaves (8 modules; OPAT manual §1.6, §3.1).</source>
+        <translation>%1 OPAT-Module: Ein CMD-15-Telegramm erreicht den Master und höchstens 7 CAN-Slaves (8 Module; OPAT-Handbuch §1.6, §3.1).</translation>
+    </message>
+    <message>
+        <source>%1 DMA modules: CMD 15 reaches E22 = 1 … 5 only; modules above 5 are reachable by CMD 3 / CMD 6 only (DMA Profibus Anleitung §1.5, DMA Profinet manual §1.5).</source>
+        <translation>%1 DMA-Module: CMD 15 erreicht nur E22 = 1 … 5; Module darüber sind nur mit CMD 3 / CMD 6 erreichbar (DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5).</translation>
+    </message>
+    <message>
+        <source>OPAT manual §1.1 (GSD file) and §4.1 (HW Config: the CMD 15 module for the master and %1 slave(s); output at least %2 bytes, input at least 9 bytes).</source>
+        <translation>OPAT-Handbuch §1.1 (GSD-Datei) und §4.1 (HW Konfig: CMD-15-Modul für den Master und %1 Slave(s); Ausgang mindestens %2 Byte, Eingang mindestens 9 Byte).</translation>
+    </message>
+    <message>
+        <source>DMA Profinet manual §1.1 (GSDML file) and §4.5.4 (one 42-byte IN/OUT module serves every fold; the CMD 15 telegram uses the first %1 output and 9 input bytes).</source>
+        <translation>DMA-Profinet-Handbuch §1.1 (GSDML-Datei) und §4.5.4 (ein IN/OUT-Modul mit 42 Byte dient jeder Modulanzahl; das CMD-15-Telegramm belegt die ersten %1 Ausgangs- und 9 Eingangsbytes).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §6.1.1–6.1.4: product number ending in 5 uses hcs0ea7.gsd, device DMA-22-XX and the 28-byte module; the CMD 15 telegram uses the first %1 output and 9 input bytes.</source>
+        <translation>DMA Profibus Anleitung §6.1.1–6.1.4: Produktnummer mit Endziffer 5 verwendet hcs0ea7.gsd, Gerät DMA-22-XX und das 28-Byte-Modul; das CMD-15-Telegramm belegt die ersten %1 Ausgangs- und 9 Eingangsbytes.</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes) and §5.1.1 (no one-module CMD 15 entry in the catalogue: universal module).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte) und §5.1.1 (kein CMD-15-Eintrag für ein Modul im Katalog: Universalmodul).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes); product number not given: HCS0220.GSD assumed (§6.1.1: numbers ending in 5 use hcs0ea7.gsd).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte); Produktnummer nicht angegeben: HCS0220.GSD angenommen (§6.1.1: Nummern mit Endziffer 5 verwenden hcs0ea7.gsd).</translation>
+    </message>
+    <message>
+        <source>DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least %1 bytes, input at least 9 bytes) and §5.1.1 (no one-module CMD 15 entry in the catalogue: universal module); product number not given: HCS0220.GSD assumed (§6.1.1: numbers ending in 5 use hcs0ea7.gsd).</source>
+        <translation>DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens %1 Byte, Eingang mindestens 9 Byte) und §5.1.1 (kein CMD-15-Eintrag für ein Modul im Katalog: Universalmodul); Produktnummer nicht angegeben: HCS0220.GSD angenommen (§6.1.1: Nummern mit Endziffer 5 verwenden hcs0ea7.gsd).</translation>
+    </message>
+    <message>
+        <source>telegram address, set by the PLC (0 … 255); change it to force an answer</source>
+        <translation>Telegrammadresse, von der SPS gesetzt (0 … 255); ändern, um eine Antwort zu erzwingen</translation>
+    </message>
+    <message>
+        <source>number of CAN slaves = %1 (the master, SADR 0, is always included)</source>
+        <translation>Anzahl CAN-Slaves = %1 (der Master, SADR 0, ist immer dabei)</translation>
+    </message>
+    <message>
+        <source>number of modules = %1</source>
+        <translation>Anzahl Module = %1</translation>
+    </message>
+    <message>
+        <source>command 15 (0x0F)</source>
+        <translation>Befehl 15 (0x0F)</translation>
+    </message>
+    <message>
+        <source>control byte (special functions, bits below)</source>
+        <translation>Steuerbyte (Sonderfunktionen, Bits siehe unten)</translation>
+    </message>
+    <message>
+        <source>%1 high byte: %2</source>
+        <translation>%1 High-Byte: %2</translation>
+    </message>
+    <message>
+        <source>%1 low byte: %2</source>
+        <translation>%1 Low-Byte: %2</translation>
+    </message>
+    <message>
+        <source>%1 high byte: %2 %3</source>
+        <translation>%1 High-Byte: %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 low byte: %2 %3</source>
+        <translation>%1 Low-Byte: %2 %3</translation>
+    </message>
+    <message>
+        <source>telegram address, echoed</source>
+        <translation>Telegrammadresse, zurückgesendet</translation>
+    </message>
+    <message>
+        <source>address of the module that answered (%1, changes with every answer)</source>
+        <translation>Adresse des antwortenden Moduls (%1, wechselt mit jeder Antwort)</translation>
+    </message>
+    <message>
+        <source>command 15 (0x8F = error, byte 3 = exception)</source>
+        <translation>Befehl 15 (0x8F = Fehler, Byte 3 = Exception)</translation>
+    </message>
+    <message>
+        <source>status word high byte: HW_ENABLE, ERROR, BUS_DISABLE</source>
+        <translation>Statuswort High-Byte: HW_ENABLE, ERROR, BUS_DISABLE</translation>
+    </message>
+    <message>
+        <source>status word low byte: signals, or the error number while ERROR is set</source>
+        <translation>Statuswort Low-Byte: Signale, oder die Fehlernummer solange ERROR gesetzt ist</translation>
+    </message>
+    <message>
+        <source>%1 high byte of the module named by SADR (meaning listed per module)</source>
+        <translation>%1 High-Byte des in SADR genannten Moduls (Bedeutung je Modul aufgeführt)</translation>
+    </message>
+    <message>
+        <source>%1 low byte of the module named by SADR (meaning listed per module)</source>
+        <translation>%1 Low-Byte des in SADR genannten Moduls (Bedeutung je Modul aufgeführt)</translation>
     </message>
 </context>
 <context>

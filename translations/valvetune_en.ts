@@ -59,6 +59,16 @@
     </message>
 </context>
 <context>
+    <name>vt::model::FoldSheetText</name>
+    <message numerus="yes">
+        <source>Fold plan: %1 (%2), %n module(s)</source>
+        <translation>
+            <numerusform>Fold plan: %1 (%2), %n module</numerusform>
+            <numerusform>Fold plan: %1 (%2), %n modules</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vt::model::ParameterDocument</name>
     <message numerus="yes">
         <source>%1 takes at most %n character(s).</source>

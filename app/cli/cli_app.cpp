@@ -2,6 +2,7 @@
 
 #include "commands.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,32 @@ int Context::fail(int code, const std::string &message) const
 {
     err << kProgram << ": " << message << '\n';
     return code;
+}
+
+// Timers, sockets, the serial worker and translators need a QCoreApplication. main() makes one;
+// a program that calls runCli() without one (the in-process golden tests) gets one here, for good:
+// Qt allows one per process and it must outlive every QObject the commands made.
+void ensureApplication()
+{
+    if (QCoreApplication::instance())
+        return;
+    static int argc = 1;
+    static char name[] = "valvetune-cli";
+    static char *argv[] = {name, nullptr};
+    new QCoreApplication(argc, argv); // NOLINT: lives until the process ends, by design
+}
+
+void Context::useLanguage(dev::Language lang)
+{
+    ensureApplication();
+    const QString code =
+        lang == dev::Language::German ? QStringLiteral("de") : QStringLiteral("en");
+    if (translation && translation->code() == code)
+        return;
+    translation.reset();
+    translation = i18n::Translation::load(code);
+    if (translation)
+        translation->install();
 }
 
 const std::vector<Command> &commands()

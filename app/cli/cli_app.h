@@ -4,11 +4,15 @@
 // in-process.
 #pragma once
 
+#include "app/cmdline/arg_parse.h"
+#include "app/i18n/translation.h"
+#include "core/local_text.h"
 #include "exit_codes.h"
 
 #include <QStringList>
 #include <functional>
 #include <istream>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -22,6 +26,10 @@ struct Console
     bool terminal = false;
     std::istream *in = nullptr; // the answers, line by line
 };
+// The subcommands read their own options with the helpers valvetune's command line shares.
+using cmdline::parseInteger;
+using cmdline::takeFlag;
+using cmdline::takeOption;
 
 struct Context
 {
@@ -29,9 +37,14 @@ struct Context
     std::ostream &err;
     bool json = false;
     Console console;
+    // --lang: the catalogue in force while the command runs, removed when runCli returns, so an
+    // in-process run leaves the language as it found it.
+    std::unique_ptr<i18n::Translation> translation{};
 
     // Prints "valvetune-cli: <message>" on stderr and returns the code.
     int fail(int code, const std::string &message) const;
+    // Texts worded through tr() (the session's, the links', the model's) come out in `lang`.
+    void useLanguage(dev::Language lang);
 };
 
 struct Command
@@ -41,6 +54,9 @@ struct Command
     // args: the subcommand's own arguments (without the program and subcommand name).
     std::function<int(const QStringList &args, Context &ctx)> run;
 };
+
+// Makes the process's QCoreApplication when there is none yet (runCli() called in-process).
+void ensureApplication();
 
 // Registered subcommands, in --help order.
 const std::vector<Command> &commands();

@@ -1,6 +1,5 @@
 // valvetune-cli decode --protocol P [--family opat|dma] [--direction request|response]
 //                      [--profile KEY] [--dictionary FAMILY] [--cob-id ID] HEX…
-#include "arg_parse.h"
 #include "commands.h"
 #include "core/hex.h"
 #include "dict/dictionary_loader.h"

@@ -5,7 +5,6 @@
 //   encode gateway cyclic --family opat|dma --tadr T --module CTRL,VALUE1,VALUE2 [--module …]
 //   encode modbus-rtu read  --unit U --id ID [--count N]
 //   encode modbus-rtu write --unit U --id ID --value V
-#include "arg_parse.h"
 #include "commands.h"
 #include "core/hex.h"
 #include "hcs/cmd15.h"

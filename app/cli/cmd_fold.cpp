@@ -2,7 +2,6 @@
 //   fold plan --node opat|dma-pb|dma-pn --modules N [--product NUMBER] [--lang en|de]
 // prints what the PLC programmer configures for a node with N modules in all (OPAT: the master
 // plus N-1 CAN slaves): GSD file and module, output/input lengths and the byte map per module.
-#include "arg_parse.h"
 #include "commands.h"
 #include "core/hex.h"
 #include "model/fold/fold_export.h"
@@ -24,7 +23,9 @@ const char kUsage[] = "usage: valvetune-cli fold plan --node opat|dma-pb|dma-pn 
 
 Json byteJson(const model::PlcImageByte &b, dev::Language lang)
 {
-    return Json{{"byte", b.offset}, {"field", b.field}, {"meaning", b.text.in(lang)}};
+    return Json{{"byte", b.offset},
+                {"field", b.field},
+                {"meaning", model::plcText(b.text, lang).toStdString()}};
 }
 
 Json bitsJson(const std::array<dev::hcs::BitMeaning, 8> &bits, dev::Language lang)
@@ -87,7 +88,7 @@ Json planJson(const model::PlcConfig &c, const model::FoldPlan &plan, dev::Langu
         {"map", map},
         {"input", input},
         {"example_request", dev::toHex(c.exampleRequestBytes)},
-        {"source", c.gsdNote.in(lang)},
+        {"source", model::plcText(c.gsdNote, lang).toStdString()},
     };
 }
 
@@ -118,6 +119,7 @@ int runPlan(QStringList rest, Context &ctx)
     }
     if (missing)
         return ctx.fail(kExitUsage, "fold plan: an option is missing its value (see fold --help)");
+    ctx.useLanguage(lang);
     if (!rest.isEmpty())
         return ctx.fail(kExitUsage,
                         "fold plan: unexpected argument '" + rest.first().toStdString() + "'");
@@ -127,7 +129,8 @@ int runPlan(QStringList rest, Context &ctx)
         plan.productNumber = product->toStdString();
     const auto config = model::buildPlcConfig(plan);
     if (!config.ok()) // an impossible plan is a usage error that says why
-        return ctx.fail(kExitUsage, "fold plan: " + config.error().in(lang));
+        return ctx.fail(kExitUsage,
+                        "fold plan: " + model::plcText(config.error(), lang).toStdString());
 
     if (ctx.json)
         ctx.out << planJson(*config, plan, lang).dump(2) << '\n';

@@ -3,7 +3,6 @@
 // on HCS) at the requested rate for the given time (MonitorScheduler), print each sample, and
 // report the requested against the achieved rate at the end (on stderr with --csv, so the CSV
 // stays clean). --rate 0: as fast as the link allows.
-#include "arg_parse.h"
 #include "commands.h"
 #include "device_run.h"
 #include "dict/cooking.h"

@@ -3,7 +3,6 @@
 // names; print name and value, or save a .vtpar parameter file (docs/FILE-FORMAT.md) of the
 // settings (files/file_rows.h: no process or live values). Rows that
 // could not be read are listed and make the exit code 1; a file still holds what was read.
-#include "arg_parse.h"
 #include "commands.h"
 #include "device_run.h"
 #include "files/file_rows.h"

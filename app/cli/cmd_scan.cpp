@@ -1,7 +1,6 @@
 // valvetune-cli scan CONNECTION [--timeout MS] [--json]: which addresses answer. Modbus RTU tries
 // units 1..32, Modbus TCP and the node image 0..32, HART poll addresses 0..15, CANopen nodes
 // 1..127, each once with a short timeout; a simulator: its modules.
-#include "arg_parse.h"
 #include "commands.h"
 #include "device_run.h"
 

@@ -8,7 +8,6 @@
 // file that lacks a module of the node, or holds one the node lacks, is refused whole (exit 2,
 // nothing sent) — --module writes one. Exit 4 when a read back differs, 1 when the device
 // refuses, 3 when the link is lost.
-#include "arg_parse.h"
 #include "commands.h"
 #include "confirm_gate.h"
 #include "file_plan.h"

@@ -1,6 +1,5 @@
 #include "confirm_gate.h"
 
-#include "arg_parse.h"
 
 #include <algorithm>
 #include <istream>

@@ -1,31 +1,15 @@
 #include "connection_args.h"
 
-#include "arg_parse.h"
-#include "transports/fault_spec.h"
-#include "transports/tcp_link.h"
+#include "app/cmdline/arg_parse.h"
+#include "app/cmdline/connection_options.h"
 
 namespace vt::cli {
 
-const char kConnectionSynopsis[] =
-    "connection (one of):\n"
-    "  --sim FAMILY[:MODULES] [--protocol modbus-rtu|modbus-tcp|node-image]\n"
-    "  --port PATH [--baud B] [--parity none|even|odd] [--stop 1|2]\n"
-    "  --tcp HOST:PORT [--protocol modbus-tcp|node-image]\n"
-    "  --can IFACE --node N\n"
-    "  --hart PATH\n"
-    "and: [--unit ADDRESS] [--fault SPEC] [--product opat|dma-pn|dma-pb|ed1] [--turnaround MS]\n"
-    "     [--module ADDRESS] [--lang en|de] [--json]";
-
-namespace {
-
-using Error = std::string;
-
-std::string text(const QString &s)
+std::string deviceSynopsis()
 {
-    return s.toStdString();
+    return std::string(cmdline::kConnectionSynopsis) +
+           "\n     [--module ADDRESS] [--lang en|de] [--json]";
 }
-
-} // namespace
 
 std::optional<QString> leftoverOption(const QStringList &args)
 {
@@ -39,145 +23,25 @@ std::optional<QString> leftoverOption(const QStringList &args)
 dev::Result<DeviceOptions, std::string> takeDeviceOptions(QStringList &args)
 {
     bool missing = false;
-    const auto sim = takeOption(args, "--sim", &missing);
-    const auto port = takeOption(args, "--port", &missing);
-    const auto tcp = takeOption(args, "--tcp", &missing);
-    const auto can = takeOption(args, "--can", &missing);
-    const auto hart = takeOption(args, "--hart", &missing);
-    const auto baud = takeOption(args, "--baud", &missing);
-    const auto parity = takeOption(args, "--parity", &missing);
-    const auto stop = takeOption(args, "--stop", &missing);
-    const auto protocol = takeOption(args, "--protocol", &missing);
-    const auto node = takeOption(args, "--node", &missing);
-    const auto unit = takeOption(args, "--unit", &missing);
-    const auto fault = takeOption(args, "--fault", &missing);
-    const auto product = takeOption(args, "--product", &missing);
-    const auto turnaround = takeOption(args, "--turnaround", &missing);
-    const auto module = takeOption(args, "--module", &missing);
-    const auto lang = takeOption(args, "--lang", &missing);
+    const auto module = cmdline::takeOption(args, "--module", &missing);
+    const auto lang = cmdline::takeOption(args, "--lang", &missing);
     if (missing)
-        return Error("an option is missing its value");
+        return std::string("an option is missing its value");
+    auto spec = cmdline::takeConnectionOptions(args);
+    if (!spec.ok())
+        return spec.error();
 
     DeviceOptions o;
-    model::ConnectionSpec &spec = o.spec;
-    const int kinds = int(sim.has_value()) + int(port.has_value()) + int(tcp.has_value()) +
-                      int(can.has_value()) + int(hart.has_value());
-    if (kinds == 0)
-        return Error("no connection given: --sim, --port, --tcp, --can or --hart");
-    if (kinds > 1)
-        return Error("give one connection: --sim, --port, --tcp, --can or --hart");
-    if ((baud || parity || stop) && !port)
-        return Error("--baud, --parity and --stop go with --port");
-    if (node && !can)
-        return Error("--node goes with --can");
-    if (protocol && !sim && !tcp)
-        return Error("--protocol goes with --sim or --tcp");
-
-    if (sim) {
-        spec.kind = model::ConnectionKind::Sim;
-        auto parsed = model::parseSimSpec(*sim);
-        if (!parsed.ok())
-            return Error("--sim: " + text(parsed.error()));
-        spec.sim = *parsed;
-        if (protocol) {
-            const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
-            if (p != dev::LinkProtocol::ModbusRtu && p != dev::LinkProtocol::ModbusTcp &&
-                p != dev::LinkProtocol::NodeImage)
-                return Error("--protocol with --sim takes modbus-rtu, modbus-tcp or node-image");
-            spec.sim.protocol = p;
-        }
-    } else if (port) {
-        spec.kind = model::ConnectionKind::Serial;
-        spec.serial = link::SerialSettings::hcsDefault(*port);
-        if (baud) {
-            const auto b = parseInteger(*baud, 50, 4'000'000);
-            if (!b)
-                return Error("--baud takes a rate such as 19200 or 115200");
-            spec.serial.baudRate = static_cast<int>(*b);
-        }
-        if (parity) {
-            if (*parity == "none")
-                spec.serial.parity = link::Parity::None;
-            else if (*parity == "even")
-                spec.serial.parity = link::Parity::Even;
-            else if (*parity == "odd")
-                spec.serial.parity = link::Parity::Odd;
-            else
-                return Error("--parity takes none, even or odd");
-        }
-        if (stop) {
-            if (*stop != "1" && *stop != "2")
-                return Error("--stop takes 1 or 2");
-            spec.serial.stopBits = *stop == "2" ? link::StopBits::Two : link::StopBits::One;
-        }
-    } else if (tcp) {
-        spec.kind = model::ConnectionKind::Tcp;
-        const auto endpoint = link::TcpLink::parseEndpoint(*tcp);
-        if (!endpoint)
-            return Error("--tcp takes HOST:PORT, e.g. 192.168.0.10:502");
-        spec.host = endpoint->host;
-        spec.port = endpoint->port;
-        if (protocol) {
-            const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
-            if (p != dev::LinkProtocol::ModbusTcp && p != dev::LinkProtocol::NodeImage)
-                return Error("--protocol with --tcp takes modbus-tcp or node-image");
-            spec.tcpProtocol = *p;
-        }
-    } else if (can) {
-        spec.kind = model::ConnectionKind::Can;
-        spec.canInterface = *can;
-        if (!node)
-            return Error("--can needs --node N (the CANopen node id, 1..127)");
-        const auto n = parseInteger(*node, 1, 127);
-        if (!n)
-            return Error("--node takes a CANopen node id 1..127");
-        spec.canNode = static_cast<int>(*n);
-    } else {
-        spec.kind = model::ConnectionKind::Hart;
-        spec.serial = link::SerialSettings::hart(*hart);
-    }
-
-    if (unit) {
-        const auto u = parseInteger(*unit, 0, 255);
-        if (!u)
-            return Error("--unit takes a module address 0..255");
-        spec.unit = static_cast<int>(*u);
-    }
-    if (fault) {
-        auto parsed = link::parseFaultSpec(*fault);
-        if (!parsed.ok())
-            return Error("--fault: " + text(parsed.error().text()));
-        spec.fault = *parsed;
-    }
-    if (product) {
-        if (*product == "opat")
-            spec.product = dev::HcsProduct::Opat;
-        else if (*product == "dma-pn")
-            spec.product = dev::HcsProduct::DmaProfinet;
-        else if (*product == "dma-pb")
-            spec.product = dev::HcsProduct::DmaProfibus;
-        else if (*product == "ed1" && can)
-            spec.canDsp408 = true;
-        else if (*product == "ed1")
-            return Error("--product ed1 goes with --can (the ED1 is reached over CANopen)");
-        else
-            return Error("--product takes opat, dma-pn, dma-pb or ed1");
-    }
-    if (turnaround) {
-        const auto ms = parseInteger(*turnaround, 1, 60'000);
-        if (!ms)
-            return Error("--turnaround takes milliseconds 1..60000");
-        spec.turnaround = std::chrono::milliseconds(*ms);
-    }
+    o.spec = *spec;
     if (module) {
-        const auto m = parseInteger(*module, 0, 255);
+        const auto m = cmdline::parseInteger(*module, 0, 255);
         if (!m)
-            return Error("--module takes a module address 0..255");
+            return std::string("--module takes a module address 0..255");
         o.module = static_cast<int>(*m);
     }
     if (lang) {
         if (*lang != "en" && *lang != "de")
-            return Error("--lang takes en or de");
+            return std::string("--lang takes en or de");
         o.lang = *lang == "de" ? dev::Language::German : dev::Language::English;
     }
     return o;

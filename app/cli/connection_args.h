@@ -1,7 +1,6 @@
-// The options every valvetune-cli device command shares: where the device is (--sim, --port,
-// --tcp, --can, --hart and their settings, --unit, --fault, --product, --turnaround), which
-// module (--module) and the display language (--lang). Parsed into a model::ConnectionSpec, the
-// same value the GUI's connect dialog builds. Pure parsing; any thread.
+// The options every valvetune-cli device command shares: the connection (app/cmdline/
+// connection_options.h, the parser valvetune --connect uses too), which module (--module) and
+// the display language (--lang). Pure parsing; any thread.
 #pragma once
 
 #include "core/local_text.h"
@@ -22,7 +21,7 @@ struct DeviceOptions
 };
 
 // The options' synopsis for usage texts.
-extern const char kConnectionSynopsis[];
+std::string deviceSynopsis();
 
 // Removes the shared options from `args` (the command's own options stay). The error is a
 // usage message (exit 2).

@@ -1,6 +1,5 @@
 #include "device_run.h"
 
-#include "arg_parse.h"
 #include "dict/dictionary_loader.h"
 #include "model/session/write_job.h"
 #include "sim_memory.h"
@@ -18,19 +17,6 @@ namespace {
 
 constexpr std::chrono::milliseconds kOpenLimit{30'000};
 
-// Timers, sockets and the serial worker need a QCoreApplication. main() makes one; a program
-// that calls runCli() without one (the in-process golden tests) gets one here, for good: Qt
-// allows one per process and it must outlive every QObject the commands made.
-void ensureApplication()
-{
-    if (QCoreApplication::instance())
-        return;
-    static int argc = 1;
-    static char name[] = "valvetune-cli";
-    static char *argv[] = {name, nullptr};
-    new QCoreApplication(argc, argv); // NOLINT: lives until the process ends, by design
-}
-
 std::string joined(const std::vector<int> &addresses)
 {
     std::string s;
@@ -43,7 +29,7 @@ std::string joined(const std::vector<int> &addresses)
 
 std::string deviceUsage(const char *synopsis)
 {
-    return std::string("usage: valvetune-cli ") + synopsis + "\n" + kConnectionSynopsis;
+    return std::string("usage: valvetune-cli ") + synopsis + "\n" + deviceSynopsis();
 }
 
 std::optional<DeviceOptions> startCommand(QStringList &args, Context &ctx, const char *name,
@@ -59,6 +45,7 @@ std::optional<DeviceOptions> startCommand(QStringList &args, Context &ctx, const
         *code = failUsage(ctx, name, options.error());
         return std::nullopt;
     }
+    ctx.useLanguage(options->lang);
     return *options;
 }
 

@@ -7,6 +7,7 @@
 #include "widgets/editor/write_dialog.h"
 #include "workspace.h"
 
+#include <QMessageBox>
 #include <QProgressDialog>
 
 namespace vt::app {
@@ -14,6 +15,9 @@ namespace vt::app {
 DeviceController::DeviceController(Workspace &workspace, AppSettings &settings, QWidget *window)
     : QObject(window), m_workspace(workspace), m_settings(settings), m_window(window)
 {
+    // A failed connect is said in a message, not only in the status bar: started with --connect
+    // from a shortcut, the window would otherwise just sit there unconnected.
+    connect(&m_workspace, &Workspace::connectFailed, this, &DeviceController::showConnectFailure);
 }
 
 DeviceController::~DeviceController() = default;
@@ -30,6 +34,19 @@ void DeviceController::connectDialog()
 void DeviceController::connectTo(const model::ConnectionSpec &spec)
 {
     m_workspace.connectTo(spec);
+}
+
+void DeviceController::showConnectFailure(const QString &reason)
+{
+    if (m_failure)
+        m_failure->close();
+    m_failure = new QMessageBox(QMessageBox::Warning, tr("Connection Failed"),
+                                tr("ValveTune could not connect: %1").arg(reason), QMessageBox::Ok,
+                                m_window);
+    m_failure->setObjectName(QStringLiteral("connectFailure"));
+    m_failure->setAttribute(Qt::WA_DeleteOnClose);
+    m_failure->setWindowModality(Qt::WindowModal);
+    m_failure->open();
 }
 
 void DeviceController::disconnectFromDevice()

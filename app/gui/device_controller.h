@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QPointer>
 
+class QMessageBox;
 class QProgressDialog;
 class QWidget;
 
@@ -43,6 +44,8 @@ public:
     void compareWithDevice();
 
     model::ReadAllJob *readJob() const { return m_read; }
+    // The message that says why the last connect failed (nullptr when none is open).
+    QMessageBox *connectFailure() const { return m_failure; }
 
 signals:
     void statusMessage(const QString &text);
@@ -51,11 +54,14 @@ signals:
     void written(int address, const std::vector<vt::model::WriteItem> &items);
 
 private:
+    void showConnectFailure(const QString &reason);
+
     Workspace &m_workspace;
     AppSettings &m_settings;
     QWidget *m_window;
     model::ReadAllJob *m_read = nullptr;
     QPointer<QProgressDialog> m_progress;
+    QPointer<QMessageBox> m_failure;
 };
 
 } // namespace vt::app

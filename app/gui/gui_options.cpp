@@ -1,5 +1,6 @@
 #include "gui_options.h"
 
+#include "app/cmdline/connection_options.h"
 #include "dict/dictionary_loader.h"
 #include "language.h"
 #include "model/session/sim_endpoint.h"
@@ -8,6 +9,18 @@
 #include <QCoreApplication>
 
 namespace vt::app {
+namespace {
+
+GuiOptions usageError(const QString &error)
+{
+    GuiOptions out;
+    out.error = error;
+    out.exitNow = true;
+    out.exitCode = 2;
+    return out;
+}
+
+} // namespace
 
 GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
 {
@@ -27,11 +40,27 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
     const QCommandLineOption open(QStringList{QStringLiteral("open")},
                                   QStringLiteral("Open a parameter file at start-up."),
                                   QStringLiteral("FILE"));
-    parser.addOptions({lang, simulate, open});
+    const QCommandLineOption connectOption(
+        QStringList{QStringLiteral("connect")},
+        QStringLiteral("Connect at start-up, with valvetune-cli's connection options (below)."));
+    parser.addOptions({lang, simulate, open, connectOption});
 
     if (helpText)
-        *helpText = parser.helpText();
-    if (!parser.parse(arguments)) {
+        *helpText = parser.helpText() + QLatin1Char('\n') +
+                    QString::fromLatin1(cmdline::kConnectionSynopsis) + QLatin1Char('\n');
+    // The connection options go to the parser valvetune-cli uses; QCommandLineParser sees the rest.
+    QStringList rest = arguments;
+    if (rest.contains(QStringLiteral("--connect"))) {
+        auto spec = cmdline::takeConnectionOptions(rest);
+        if (!spec.ok())
+            return usageError(
+                QStringLiteral("--connect: %1").arg(QString::fromStdString(spec.error())));
+        out.connection = *spec;
+    } else if (cmdline::hasConnectionOption(rest)) {
+        return usageError(QStringLiteral(
+            "--sim, --port, --tcp, --can, --hart and their settings go with --connect"));
+    }
+    if (!parser.parse(rest)) {
         out.error = parser.errorText();
         out.exitNow = true;
         out.exitCode = 2;
@@ -74,6 +103,8 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
     }
     if (parser.isSet(open))
         out.openFile = parser.value(open);
+    if (out.connection && !out.simulate.isEmpty())
+        return usageError(QStringLiteral("give one connection: --simulate or --connect"));
     return out;
 }
 

@@ -1,9 +1,13 @@
-// GuiOptions: the valvetune command line (--simulate FAMILY[:MODULES], --lang en|de,
-// --open FILE), parsed with QCommandLineParser into a plain struct that main() acts on.
+// GuiOptions: the valvetune command line (--simulate FAMILY[:MODULES], --connect with
+// valvetune-cli's connection options, --lang en|de, --open FILE), parsed into a plain struct that
+// main() acts on: QCommandLineParser for the GUI's own options, app/cmdline for the connection.
 #pragma once
+
+#include "model/session/connection.h"
 
 #include <QString>
 #include <QStringList>
+#include <optional>
 
 namespace vt::app {
 
@@ -12,6 +16,9 @@ struct GuiOptions
     QString language; // "en", "de" or empty (settings / system locale decide)
     QString simulate; // family id, optionally ":MODULES"
     QString openFile;
+    // --connect: the link to open at start-up (--tcp, --port, --can, --hart, --sim and their
+    // settings, as valvetune-cli takes them).
+    std::optional<model::ConnectionSpec> connection;
     bool exitNow = false; // --help / --version were answered
     int exitCode = 0;
     QString error; // one line for stderr when the command line is wrong

@@ -1,22 +1,12 @@
 #include "language.h"
 
-#include <QCoreApplication>
-#include <QLibraryInfo>
-#include <QTranslator>
-
 namespace vt::app {
 
 Language::Language(QObject *parent) : QObject(parent)
 {
 }
 
-Language::~Language()
-{
-    if (m_app)
-        QCoreApplication::removeTranslator(m_app.get());
-    if (m_qt)
-        QCoreApplication::removeTranslator(m_qt.get());
-}
+Language::~Language() = default;
 
 QString Language::systemDefault()
 {
@@ -31,27 +21,15 @@ bool Language::setLanguage(const QString &code)
     if (code == m_current)
         return true;
 
-    auto app = std::make_unique<QTranslator>();
-    // valvetune_en.qm carries only plural forms; English source texts are the fallback.
-    if (!app->load(QStringLiteral(":/i18n/valvetune_%1.qm").arg(code)))
+    auto next = i18n::Translation::load(code);
+    if (!next)
         return false;
-    // Qt's own dialogs ("Cancel", "&Yes"): optional, present when qt6-translations-l10n is.
-    auto qt = std::make_unique<QTranslator>();
-    const bool haveQt = qt->load(QStringLiteral("qtbase_%1").arg(code),
-                                 QLibraryInfo::path(QLibraryInfo::TranslationsPath));
-
-    if (m_app)
-        QCoreApplication::removeTranslator(m_app.get());
-    if (m_qt)
-        QCoreApplication::removeTranslator(m_qt.get());
-    m_app = std::move(app);
-    m_qt = haveQt ? std::move(qt) : nullptr;
+    m_translation.reset(); // the old language leaves before the new one comes
     QLocale::setDefault(
         QLocale(code == QLatin1String("de") ? QLocale::German : QLocale::English,
                 code == QLatin1String("de") ? QLocale::Germany : QLocale::UnitedStates));
-    if (m_qt)
-        QCoreApplication::installTranslator(m_qt.get());
-    QCoreApplication::installTranslator(m_app.get()); // sends LanguageChange to every widget
+    next->install(); // sends LanguageChange to every widget
+    m_translation = std::move(next);
     m_current = code;
     emit languageChanged(code);
     return true;

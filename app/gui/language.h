@@ -1,15 +1,16 @@
 // Language: switches the UI language at run time. Installs the embedded ValveTune catalogue
-// (and Qt's own, when the system has it) and sets the default QLocale, so every widget gets a
-// LanguageChange event and numbers follow ("1,000 V" in German). GUI thread only.
+// (and Qt's own, when the system has it; app/i18n/translation.h) and sets the default QLocale, so
+// every widget gets a LanguageChange event and numbers follow ("1,000 V" in German). GUI thread
+// only.
 #pragma once
+
+#include "app/i18n/translation.h"
 
 #include <QLocale>
 #include <QObject>
 #include <QString>
 #include <QStringList>
 #include <memory>
-
-class QTranslator;
 
 namespace vt::app {
 
@@ -34,8 +35,7 @@ signals:
 
 private:
     QString m_current;
-    std::unique_ptr<QTranslator> m_app;
-    std::unique_ptr<QTranslator> m_qt;
+    std::unique_ptr<i18n::Translation> m_translation;
 };
 
 } // namespace vt::app

@@ -1,5 +1,6 @@
 // valvetune: the GUI. Parses the command line, picks the language (command line, then the
-// remembered choice, then the system locale) and shows the main window.
+// remembered choice, then the system locale), shows the main window and connects when asked to
+// (--simulate, --connect).
 #include "app/gui/app_settings.h"
 #include "app/gui/device_controller.h"
 #include "app/gui/file_controller.h"
@@ -11,7 +12,9 @@
 
 #include <QApplication>
 #include <QGuiApplication>
+#include <QMessageBox>
 #include <cstdio>
+#include <unistd.h>
 
 int main(int argc, char *argv[])
 {
@@ -34,6 +37,10 @@ int main(int argc, char *argv[])
             return 0;
         }
         std::fprintf(stderr, "valvetune: %s\n", qPrintable(options.error));
+        // Started from a desktop shortcut nobody reads stderr: say it where it is seen.
+        if (!isatty(STDERR_FILENO))
+            QMessageBox::critical(nullptr, QStringLiteral("ValveTune"),
+                                  QStringLiteral("valvetune: %1").arg(options.error));
         return options.exitCode;
     }
 
@@ -56,5 +63,7 @@ int main(int argc, char *argv[])
         spec.sim = *vt::model::parseSimSpec(options.simulate); // checked by parseGuiOptions
         window.device().connectTo(spec);
     }
+    if (options.connection)
+        window.device().connectTo(*options.connection);
     return QApplication::exec();
 }

@@ -63,10 +63,4 @@ std::optional<std::int64_t> FaultFilter::nextDueUs() const
     return m_held.front().dueUs;
 }
 
-void FaultFilter::reset()
-{
-    m_held.clear();
-    m_answers = 0;
-}
-
 } // namespace vt::simapp

@@ -1,7 +1,8 @@
 // FaultFilter: the --fault schedule of valvetune-sim applied to the device's answers: drop,
 // corrupt one byte, hold back by a delay (order kept), and end the connection after N answers.
 // Same draws as transports/fault_link (four std::mt19937 draws per answer, whatever happens to
-// it), so one seed gives one schedule. Owner: SimHost; single-threaded.
+// it), so one seed gives one schedule. Owner: SimHost, one per line or TCP connection;
+// single-threaded.
 #pragma once
 
 #include "transports/fault_spec.h"
@@ -39,9 +40,6 @@ public:
     bool cutDue() const { return m_cutAfter && m_answers >= *m_cutAfter && m_held.empty(); }
     // When the next held answer is due; nullopt when none is held.
     std::optional<std::int64_t> nextDueUs() const;
-    // A new connection: held answers are forgotten, the cut counts from 0 again. The random
-    // sequence goes on (a reconnect does not replay the same faults).
-    void reset();
 
     std::uint64_t answers() const { return m_answers; }
     bool isNull() const { return m_rates.isNull() && !m_cutAfter; }

@@ -1,5 +1,5 @@
 // SimHost's endpoints (see sim_host.h): a pty, a serial port (plain termios, no libserialport),
-// a TCP server with one client at a time, a CAN socket; reading what the master sends and
+// a TCP server with its clients, a CAN socket; reading what the master sends and
 // writing the answers without ever blocking the event loop.
 #include "app/cli/exit_codes.h"
 #include "app/sim/can_socket.h"
@@ -337,44 +337,81 @@ bool SimHost::lineDrained(std::int64_t nowUs)
 
 void SimHost::onNewConnection()
 {
-    while (!m_client && m_tcp->hasPendingConnections()) {
+    while (m_tcp->hasPendingConnections()) {
         QTcpSocket *socket = m_tcp->nextPendingConnection();
         if (socket->state() != QAbstractSocket::ConnectedState) {
-            socket->deleteLater(); // gone before its turn
+            socket->deleteLater(); // gone before it was taken
             continue;
         }
-        m_client = socket;
-        m_tcp->pauseAccepting(); // the next client waits in the backlog for its turn
+        const std::string peer = hostPort(socket->peerAddress(), socket->peerPort());
+        std::unique_ptr<dev::ByteServer> own = m_device->connectionServer();
+        if (!own && !m_clients.empty()) {
+            refuse(socket, peer);
+            continue;
+        }
+        if (!own)
+            m_device->reset(); // the node image's new master: fresh images, the next answered
+        const int number = ++m_clientsSeen;
+        // Each connection draws its own fault schedule: the first the seed's (as the in-process
+        // FaultLink does), the next ones the following seeds, so a reconnect replays nothing.
+        auto client = std::make_unique<TcpClient>(
+            TcpClient{socket, own ? own.get() : &m_device->server(), std::move(own),
+                      FaultFilter(m_options.fault.rx, m_options.fault.cutAfterFrames,
+                                  m_options.seed + static_cast<std::uint32_t>(number - 1)),
+                      number, " (client " + std::to_string(number) + ")"});
+        m_clients.push_back(std::move(client));
         socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        resetServer();
-        connect(socket, &QTcpSocket::readyRead, this, &SimHost::onClientReadyRead);
-        connect(socket, &QTcpSocket::disconnected, this, &SimHost::onClientGone);
+        connect(socket, &QTcpSocket::readyRead, this,
+                [this, socket] { onClientReadyRead(socket); });
+        connect(socket, &QTcpSocket::disconnected, this, [this, socket] { onClientGone(socket); });
         if (m_options.verbose)
-            logLine("client " + hostPort(socket->peerAddress(), socket->peerPort()) + " connected");
+            logLine("client " + std::to_string(number) + " " + peer + " connected");
         if (socket->bytesAvailable() > 0)
-            onClientReadyRead();
+            onClientReadyRead(socket);
     }
 }
 
-void SimHost::onClientReadyRead()
+// The node image is the process image of one master: the PLC that owns the node's cyclic data
+// (DMA Profinet manual §1: data exchange "with an PROFINET IO-Controller", §1.4: a module answers
+// when a message differs from "the previous message"; OPAT manual §1.5: TADR is "defined by the
+// DP-Master"). A second master's images would mix with the first's, so it is closed at once: it
+// learns that the node is taken instead of waiting for answers that never come.
+void SimHost::refuse(QTcpSocket *socket, const std::string &peer)
 {
-    if (!m_client)
-        return;
-    const QByteArray data = m_client->readAll();
-    received(link::byteSpan(data));
+    note("node image: refused " + peer + ": the node's process image belongs to client " +
+         std::to_string(m_clients.front()->number) + ", its one master");
+    connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+    socket->disconnectFromHost();
 }
 
-void SimHost::onClientGone()
+SimHost::TcpClient *SimHost::clientOf(const QTcpSocket *socket)
 {
-    auto *socket = qobject_cast<QTcpSocket *>(sender());
-    if (!socket || socket != m_client)
+    for (const auto &client : m_clients)
+        if (client->socket == socket)
+            return client.get();
+    return nullptr;
+}
+
+void SimHost::onClientReadyRead(QTcpSocket *socket)
+{
+    TcpClient *client = clientOf(socket);
+    if (!client)
+        return;
+    const QByteArray data = socket->readAll();
+    arrived(link::byteSpan(data), client->tag);
+    client->server->receive(link::byteSpan(data));
+    serve();
+}
+
+void SimHost::onClientGone(QTcpSocket *socket)
+{
+    TcpClient *client = clientOf(socket);
+    if (!client)
         return;
     if (m_options.verbose)
-        logLine("client disconnected");
-    m_client = nullptr;
+        logLine("client " + std::to_string(client->number) + " disconnected");
+    std::erase_if(m_clients, [socket](const auto &c) { return c->socket == socket; });
     socket->deleteLater();
-    m_tcp->resumeAccepting();
-    onNewConnection();
 }
 
 } // namespace vt::simapp

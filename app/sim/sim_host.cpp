@@ -79,14 +79,14 @@ dev::Result<QString, HostError> SimHost::start()
     return where;
 }
 
-void SimHost::resetServer()
+void SimHost::received(std::span<const std::uint8_t> bytes)
 {
-    m_device->reset();
-    m_faults.reset();
-    m_inLog.clear();
+    arrived(bytes, "");
+    m_device->server().receive(bytes);
+    serve();
 }
 
-void SimHost::received(std::span<const std::uint8_t> bytes)
+void SimHost::arrived(std::span<const std::uint8_t> bytes, const std::string &tag)
 {
     const std::int64_t now = nowUs();
     m_clock.advanceTo(now); // the request arrives at this time, its answer is stamped with it
@@ -94,12 +94,10 @@ void SimHost::received(std::span<const std::uint8_t> bytes)
     m_burst = true;
     if (m_options.verbose) {
         if (m_tcp || m_options.isCan())
-            logFrame("<-", bytes); // TCP keeps no gaps: one line per segment; CAN per frame
+            logFrame("<-", bytes, tag.c_str()); // TCP keeps no gaps: one line per segment
         else
             m_inLog.insert(m_inLog.end(), bytes.begin(), bytes.end());
     }
-    m_device->server().receive(bytes);
-    serve();
 }
 
 void SimHost::tick()
@@ -125,40 +123,56 @@ void SimHost::serve()
 {
     if (m_ending || m_cutPending)
         return;
+    if (!m_tcp) {
+        if (deliver(m_device->server(), m_faults, "",
+                    [this](const std::vector<std::uint8_t> &bytes) { send(bytes); }))
+            cut();
+        return;
+    }
+    std::vector<QTcpSocket *> due;
+    for (const auto &client : m_clients) {
+        QTcpSocket *socket = client->socket;
+        if (deliver(*client->server, client->faults, client->tag,
+                    [socket](const std::vector<std::uint8_t> &bytes) {
+                        socket->write(link::toByteArray(bytes));
+                    }))
+            due.push_back(socket);
+    }
+    for (QTcpSocket *socket : due)
+        cutClient(socket);
+}
+
+bool SimHost::deliver(dev::ByteServer &server, FaultFilter &faults, const std::string &tag,
+                      const std::function<void(const std::vector<std::uint8_t> &)> &send)
+{
     const std::int64_t now = m_clock.nowUs();
-    std::vector<std::uint8_t> answer = m_device->server().drain();
+    std::vector<std::uint8_t> answer = server.drain();
     if (!answer.empty()) {
         flushInLog();
-        // Over TCP only a connected client gets answers; a pty / serial line always has a peer.
-        if (m_tcp && !m_client)
-            answer.clear();
-    }
-    if (!answer.empty()) {
         const std::vector<std::uint8_t> copy =
             m_options.verbose ? answer : std::vector<std::uint8_t>{};
-        switch (m_faults.push(std::move(answer), now)) {
+        switch (faults.push(std::move(answer), now)) {
         case FaultFilter::Verdict::Passed: break;
-        case FaultFilter::Verdict::Dropped: logFrame("->", copy, " (fault: dropped)"); break;
-        case FaultFilter::Verdict::AfterCut: logFrame("->", copy, " (fault: after the cut)"); break;
+        case FaultFilter::Verdict::Dropped:
+            logFrame("->", copy, (tag + " (fault: dropped)").c_str());
+            break;
+        case FaultFilter::Verdict::AfterCut:
+            logFrame("->", copy, (tag + " (fault: after the cut)").c_str());
+            break;
         }
     }
-    for (const FaultFilter::Answer &a : m_faults.release(nowUs())) {
-        logFrame("->", a.bytes,
-                 a.corrupted ? (a.delayed ? " (fault: corrupted, delayed)" : " (fault: corrupted)")
-                             : (a.delayed ? " (fault: delayed)" : ""));
+    for (const FaultFilter::Answer &a : faults.release(nowUs())) {
+        const char *fault =
+            a.corrupted ? (a.delayed ? " (fault: corrupted, delayed)" : " (fault: corrupted)")
+                        : (a.delayed ? " (fault: delayed)" : "");
+        logFrame("->", a.bytes, (tag + fault).c_str());
         send(a.bytes);
     }
-    if (m_faults.cutDue())
-        cut();
+    return faults.cutDue();
 }
 
 void SimHost::send(const std::vector<std::uint8_t> &bytes)
 {
-    if (m_tcp) {
-        if (m_client)
-            m_client->write(link::toByteArray(bytes));
-        return;
-    }
     if (m_fd < 0)
         return;
     m_lastSentBytes = bytes.size();
@@ -171,20 +185,6 @@ void SimHost::send(const std::vector<std::uint8_t> &bytes)
 void SimHost::cut()
 {
     const std::string count = std::to_string(m_faults.answers());
-    if (m_tcp) {
-        QTcpSocket *socket = m_client;
-        if (!socket)
-            return;
-        note("fault cut after " + count + " answers: closing the connection");
-        m_client = nullptr;
-        socket->disconnect(this); // its last bytes are not served
-        connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-        socket->disconnectFromHost(); // after the answers already written
-        m_faults.reset();
-        m_tcp->resumeAccepting();
-        onNewConnection();
-        return;
-    }
     // A pty or serial port closed at once would lose the last answer (a hang-up flushes the
     // queues): like a cable pulled after the bytes left, close once they are out. On CAN the
     // node leaves the bus once its last answer has been sent.
@@ -197,6 +197,20 @@ void SimHost::cut()
     const std::int64_t charUs = m_gapUs * 2 / 7; // one character
     m_cutEarliestUs = nowUs() + m_gapUs + static_cast<std::int64_t>(m_lastSentBytes) * charUs;
     m_cutLatestUs = m_cutEarliestUs + kCutGraceUs;
+}
+
+// A TCP client's schedule reached its cut: that connection closes, the others go on.
+void SimHost::cutClient(QTcpSocket *socket)
+{
+    TcpClient *client = clientOf(socket);
+    if (!client)
+        return;
+    note("fault cut after " + std::to_string(client->faults.answers()) +
+         " answers: closing the connection" + client->tag);
+    socket->disconnect(this); // its last bytes are not served
+    connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+    std::erase_if(m_clients, [socket](const auto &c) { return c->socket == socket; });
+    socket->disconnectFromHost(); // after the answers already written
 }
 
 void SimHost::finishCut()

@@ -1,14 +1,17 @@
 // SimHost: valvetune-sim's engine room. Puts the SimDevice's ByteServer on a pty, a serial port,
 // a TCP port or a CAN socket (SocketCAN CAN_RAW or an adopted descriptor carrying can_frame
 // datagrams), drives the SimClock in real time (1 ms timer), passes the answers through the
-// --fault schedule and logs frames with -v. One TCP client at a time; each gets fresh
-// de-framing state. The endpoints and their I/O are in sim_endpoints.cpp.
+// --fault schedule and logs frames with -v. Over Modbus TCP any number of clients at once, as a
+// gateway serves them: one node, and per connection its own de-framer, answers and fault
+// schedule. The node image has one master; a second client is refused while it is connected.
+// The endpoints and their I/O are in sim_endpoints.cpp.
 // Owner: main(); lives on the main thread with the event loop.
 #pragma once
 
 #include "app/sim/fault_filter.h"
 #include "app/sim/host_error.h"
 #include "app/sim/sim_options.h"
+#include "core/byte_server.h"
 #include "sim/sim_clock.h"
 #include "sim/sim_device.h"
 
@@ -16,6 +19,7 @@
 #include <QObject>
 #include <QTimer>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -61,18 +65,35 @@ private:
     void writeCan(const std::vector<std::uint8_t> &bytes);
     void flushCan();
     bool lineDrained(std::int64_t nowUs); // pty / serial / CAN: every byte written has left
+    // One TCP connection: the front end that de-frames its stream and queues its answers (its
+    // own for Modbus TCP, the device's for the node image) and its --fault schedule.
+    struct TcpClient
+    {
+        QTcpSocket *socket = nullptr;
+        dev::ByteServer *server = nullptr;
+        std::unique_ptr<dev::ByteServer> ownServer; // Modbus TCP
+        FaultFilter faults;
+        int number = 0;  // 1, 2, … in the order they connected
+        std::string tag; // " (client N)" on its -v lines
+    };
     void onNewConnection();
-    void onClientReadyRead();
-    void onClientGone();
+    void refuse(QTcpSocket *socket, const std::string &peer);
+    void onClientReadyRead(QTcpSocket *socket);
+    void onClientGone(QTcpSocket *socket);
+    TcpClient *clientOf(const QTcpSocket *socket);
 
     void tick();
-    void received(std::span<const std::uint8_t> bytes);
+    void received(std::span<const std::uint8_t> bytes); // pty / serial / CAN
+    void arrived(std::span<const std::uint8_t> bytes, const std::string &tag);
     void serve();
-    void send(const std::vector<std::uint8_t> &bytes);
+    // The server's answers through `faults` to `send`; true when the schedule's cut is due.
+    bool deliver(dev::ByteServer &server, FaultFilter &faults, const std::string &tag,
+                 const std::function<void(const std::vector<std::uint8_t> &)> &send);
+    void send(const std::vector<std::uint8_t> &bytes); // pty / serial / CAN
     void cut();
+    void cutClient(QTcpSocket *socket);
     void finishCut();
     void fail(const std::string &message);
-    void resetServer();
 
     std::int64_t nowUs() const { return m_elapsed.nsecsElapsed() / 1000; }
     void logFrame(const char *direction, std::span<const std::uint8_t> bytes,
@@ -103,7 +124,8 @@ private:
     bool m_burst = false; // bytes arrived since the last gap
 
     QTcpServer *m_tcp = nullptr;
-    QTcpSocket *m_client = nullptr;
+    std::vector<std::unique_ptr<TcpClient>> m_clients; // in the order they connected
+    int m_clientsSeen = 0;
 
     std::vector<std::uint8_t> m_inLog; // -v: the incoming burst not yet logged
     bool m_ending = false;

@@ -144,6 +144,8 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
         "Serves a simulated device on a pseudo terminal, a serial port, a TCP port or a CAN bus.\n"
         "Prints 'listening on <path, host:port or can:IFACE node N>' when ready; stops on\n"
         "SIGINT / SIGTERM.\n"
+        "TCP: Modbus TCP serves any number of clients at once on one node, as a gateway does;\n"
+        "the node image belongs to one master, and a second client is closed at once.\n"
         "Exit codes: 0 ok, 1 internal error, 2 usage error, 3 connection error."));
     const QCommandLineOption device(
         QStringLiteral("device"),

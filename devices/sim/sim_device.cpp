@@ -168,6 +168,13 @@ void SimDevice::gap()
         m_hartServer->gap();
 }
 
+std::unique_ptr<ByteServer> SimDevice::connectionServer()
+{
+    if (protocol() != LinkProtocol::ModbusTcp || !m_node)
+        return nullptr;
+    return std::make_unique<ModbusTcpServer>(m_clock, *m_node);
+}
+
 void SimDevice::reset()
 {
     if (m_mbtcp)

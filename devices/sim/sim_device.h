@@ -87,6 +87,12 @@ public:
     void gap();
     // A new TCP client: de-framing starts afresh (a half MBAP header is not the new client's).
     void reset();
+    // Modbus TCP: one more front end on the same node, for one more client connection. A gateway
+    // serves several connections at once and answers each request on the connection it came in
+    // on, with that request's transaction id (Modbus Messaging on TCP/IP Implementation Guide
+    // V1.0b §3.1.3, §4.2.1); each connection de-frames its own stream. nullptr for every other
+    // protocol: a line has one peer, the node image one master (docs/SIMULATOR.md).
+    std::unique_ptr<ByteServer> connectionServer();
 
 private:
     SimDevice(SimClock &clock, SimDeviceSpec spec);

@@ -3,6 +3,7 @@
 #include "core/hex.h"
 
 #include <QAbstractTextDocumentLayout>
+#include <QCoreApplication>
 #include <QFile>
 #include <QPageLayout>
 #include <QPageSize>
@@ -15,6 +16,12 @@ using dev::Language;
 using dev::LocalText;
 
 namespace {
+
+// The sheet's own words; the plan's {en, de} texts are shown in the sheet's language.
+struct FoldHtml
+{
+    Q_DECLARE_TR_FUNCTIONS(vt::model::FoldSheetHtml)
+};
 
 QString q(const std::string &s)
 {
@@ -51,7 +58,7 @@ QString csvField(const QString &s)
 
 } // namespace
 
-std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, LocalText *why)
+std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, PlcText *why)
 {
     auto config = buildPlcConfig(plan);
     if (!config.ok()) {
@@ -65,21 +72,17 @@ std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, LocalText *why)
 QString foldSheetHtml(const FoldSheet &sheet, Language lang)
 {
     const PlcConfig &c = sheet.config;
-    const auto t = [lang](const char *en, const char *de) {
-        return QString::fromUtf8(lang == Language::German ? de : en);
-    };
     QString h;
     h += QStringLiteral("<!DOCTYPE html>\n<html lang=\"%1\"><head><meta charset=\"utf-8\">\n")
              .arg(lang == Language::German ? QStringLiteral("de") : QStringLiteral("en"));
-    h += QStringLiteral("<title>%1</title>\n").arg(t("PLC configuration", "SPS-Konfiguration"));
+    h += QStringLiteral("<title>%1</title>\n").arg(FoldHtml::tr("PLC configuration"));
     h += QStringLiteral(
         "<style>body{font-family:sans-serif;font-size:10pt}"
         "table{border-collapse:collapse;margin-bottom:8pt}"
         "td,th{border:1px solid #888;padding:2px 6px;vertical-align:top;text-align:left}"
         "th{background:#ddd}.error{color:#a00}.warning{color:#a60}"
         "code{font-family:monospace}</style></head><body>\n");
-    h += QStringLiteral("<h1>%1</h1>\n")
-             .arg(t("PLC configuration of the fold", "SPS-Konfiguration des Knotens"));
+    h += QStringLiteral("<h1>%1</h1>\n").arg(FoldHtml::tr("PLC configuration of the fold"));
     if (!sheet.plan.title.empty())
         h += QStringLiteral("<h2>%1</h2>\n").arg(esc(sheet.plan.title));
 
@@ -87,31 +90,29 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
     const auto row = [&h](const QString &k, const QString &v) {
         h += QStringLiteral("<tr><th>%1</th><td>%2</td></tr>\n").arg(k, v);
     };
-    row(t("Node", "Knoten"), esc(foldNodeTitle(c.node).in(lang)) + QStringLiteral(" (") +
-                                 esc(std::string(foldNodeKey(c.node))) + QStringLiteral(")"));
-    row(t("Modules", "Module"), QString::number(c.modules));
+    row(FoldHtml::tr("Node"), foldNodeTitle(c.node).toHtmlEscaped() + QStringLiteral(" (") +
+                                  esc(std::string(foldNodeKey(c.node))) + QStringLiteral(")"));
+    row(FoldHtml::tr("Modules"), QString::number(c.modules));
     if (!sheet.plan.productNumber.empty())
-        row(t("Product number", "Produktnummer"), esc(sheet.plan.productNumber));
-    row(t("GSD file", "GSD-Datei"), QStringLiteral("<code>%1</code>").arg(esc(c.gsdFile)));
-    row(t("Catalogue device", "Katalog-Gerät"), esc(c.gsdDevice));
-    row(t("GSD module", "GSD-Modul"), QStringLiteral("<b>%1</b>").arg(esc(c.gsdModule)));
-    row(t("Output (PLC → node)", "Ausgang (SPS → Knoten)"),
-        t("%1 bytes, SNUM = %2", "%1 Byte, SNUM = %2").arg(c.outputBytes).arg(c.snum));
-    row(t("Input (node → PLC)", "Eingang (Knoten → SPS)"),
-        t("%1 bytes, one module per answer", "%1 Byte, ein Modul je Antwort").arg(c.inputBytes));
-    row(t("Reserved by the GSD module", "Vom GSD-Modul reserviert"),
-        t("%1 bytes out / %2 bytes in", "%1 Byte aus / %2 Byte ein")
-            .arg(c.moduleOutputBytes)
-            .arg(c.moduleInputBytes));
-    row(t("Source", "Quelle"), esc(c.gsdNote.in(lang)));
+        row(FoldHtml::tr("Product number"), esc(sheet.plan.productNumber));
+    row(FoldHtml::tr("GSD file"), QStringLiteral("<code>%1</code>").arg(esc(c.gsdFile)));
+    row(FoldHtml::tr("Catalogue device"), esc(c.gsdDevice));
+    row(FoldHtml::tr("GSD module"), QStringLiteral("<b>%1</b>").arg(esc(c.gsdModule)));
+    row(FoldHtml::tr("Output (PLC → node)"),
+        FoldHtml::tr("%1 bytes, SNUM = %2").arg(c.outputBytes).arg(c.snum));
+    row(FoldHtml::tr("Input (node → PLC)"),
+        FoldHtml::tr("%1 bytes, one module per answer").arg(c.inputBytes));
+    row(FoldHtml::tr("Reserved by the GSD module"), FoldHtml::tr("%1 bytes out / %2 bytes in")
+                                                        .arg(c.moduleOutputBytes)
+                                                        .arg(c.moduleInputBytes));
+    row(FoldHtml::tr("Source"), plcText(c.gsdNote, lang).toHtmlEscaped());
     h += QStringLiteral("</table>\n");
 
     h +=
         QStringLiteral(
             "<h2>%1</h2>\n<table><tr><th>#</th><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>\n")
-            .arg(t("Modules and addresses", "Module und Adressen"), t("Address", "Adresse"),
-                 t("Software / mode", "Software / Modus"), t("Name", "Name"),
-                 t("Options", "Optionen"));
+            .arg(FoldHtml::tr("Modules and addresses"), FoldHtml::tr("Address"),
+                 FoldHtml::tr("Software / mode"), FoldHtml::tr("Name"), FoldHtml::tr("Options"));
     for (std::size_t i = 0; i < sheet.plan.modules.size(); ++i) {
         const FoldModule &m = sheet.plan.modules[i];
         QStringList options;
@@ -129,7 +130,7 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
     h += QStringLiteral("</table>\n");
 
     if (!sheet.findings.empty()) {
-        h += QStringLiteral("<h2>%1</h2>\n<ul>\n").arg(t("Check", "Prüfung"));
+        h += QStringLiteral("<h2>%1</h2>\n<ul>\n").arg(FoldHtml::tr("Check"));
         for (const FoldFinding &f : sheet.findings)
             h += QStringLiteral("<li class=\"%1\"><b>%2</b>: %3</li>\n")
                      .arg(q(std::string(foldSeverityKey(f.severity))),
@@ -141,32 +142,30 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
     const auto imageTable = [&](const std::vector<PlcImageByte> &bytes, const QString &title) {
         h += QStringLiteral(
                  "<h2>%1</h2>\n<table><tr><th>%2</th><th>%3</th><th>%4</th><th>%5</th></tr>\n")
-                 .arg(title, t("Byte", "Byte"), t("Module", "Modul"), t("Field", "Feld"),
-                      t("Meaning", "Bedeutung"));
+                 .arg(title, FoldHtml::tr("Byte"), FoldHtml::tr("Module"), FoldHtml::tr("Field"),
+                      FoldHtml::tr("Meaning"));
         for (const PlcImageByte &b : bytes)
             h += QStringLiteral(
                      "<tr><td>%1</td><td>%2</td><td><code>%3</code></td><td>%4</td></tr>\n")
                      .arg(b.offset)
                      .arg(b.module < 0 ? QStringLiteral("–") : QString::number(b.module + 1),
-                          esc(b.field), esc(b.text.in(lang)));
+                          esc(b.field), plcText(b.text, lang).toHtmlEscaped());
         h += QStringLiteral("</table>\n");
     };
-    imageTable(c.output, t("Output image (PLC → node, CMD 15 request)",
-                           "Ausgangsabbild (SPS → Knoten, CMD-15-Anfrage)"));
-    imageTable(c.input, t("Input image (node → PLC, multiplexed: SADR names the module)",
-                          "Eingangsabbild (Knoten → SPS, gemultiplext: SADR nennt das Modul)"));
+    imageTable(c.output, FoldHtml::tr("Output image (PLC → node, CMD 15 request)"));
+    imageTable(c.input,
+               FoldHtml::tr("Input image (node → PLC, multiplexed: SADR names the module)"));
 
-    h += QStringLiteral("<h2>%1</h2>\n<p>%2</p>\n<table><tr><th>%3</th><th>%4</th><th>%5</"
-                        "th><th>%6</th><th>%7</th></tr>\n")
-             .arg(t("Bits per module", "Bits je Modul"),
-                  t("Only the bits of each module's own mode apply (DMA Profibus Anleitung §6, DMA "
-                    "Profinet manual §5).",
-                    "Nur die Bits entsprechend dem Modus des jeweiligen Moduls gelten (DMA "
-                    "Profibus Anleitung §6, "
-                    "DMA-Profinet-Handbuch §5)."),
-                  t("Module / SADR", "Modul / SADR"), t("Layout", "Layout"),
-                  t("Control byte", "Steuerbyte"), t("Status high byte", "Status High-Byte"),
-                  t("Status low byte", "Status Low-Byte"));
+    h +=
+        QStringLiteral("<h2>%1</h2>\n<p>%2</p>\n<table><tr><th>%3</th><th>%4</th><th>%5</"
+                       "th><th>%6</th><th>%7</th></tr>\n")
+            .arg(
+                FoldHtml::tr("Bits per module"),
+                FoldHtml::tr(
+                    "Only the bits of each module's own mode apply (DMA Profibus Anleitung §6, DMA "
+                    "Profinet manual §5)."),
+                FoldHtml::tr("Module / SADR"), FoldHtml::tr("Layout"), FoldHtml::tr("Control byte"),
+                FoldHtml::tr("Status high byte"), FoldHtml::tr("Status low byte"));
     for (const PlcModuleSection &s : c.sections) {
         const auto &info = dev::hcs::profileInfo(s.profile);
         const QString layout =
@@ -185,14 +184,13 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
     h += QStringLiteral("</table>\n");
 
     h += QStringLiteral("<h2>%1</h2>\n<p>%2</p>\n<p><code>%3</code></p>\n")
-             .arg(t("Example CMD 15 telegram", "Beispiel CMD-15-Telegramm"),
-                  t("TADR 0x01, control byte 0x00, VALUE1 = 1000 (1.000 V), VALUE2 = 0 for every "
-                    "module.",
-                    "TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 (1,000 V), VALUE2 = 0 für jedes "
-                    "Modul."),
+             .arg(FoldHtml::tr("Example CMD 15 telegram"),
+                  FoldHtml::tr(
+                      "TADR 0x01, control byte 0x00, VALUE1 = 1000 (1.000 V), VALUE2 = 0 for every "
+                      "module."),
                   esc(dev::toHex(c.exampleRequestBytes)));
     h += QStringLiteral("<p><small>%1: %2</small></p>\n")
-             .arg(t("Sources", "Quellen"), esc(c.source));
+             .arg(FoldHtml::tr("Sources"), esc(c.source));
     h += QStringLiteral("</body></html>\n");
     return h;
 }
@@ -209,7 +207,7 @@ QString foldSheetCsv(const FoldSheet &sheet, Language lang)
             out += dir + QLatin1Char(';') + QString::number(b.offset) + QLatin1Char(';') +
                    (b.module < 0 ? QString() : QString::number(b.module + 1)) + QLatin1Char(';') +
                    sadr + QLatin1Char(';') + csvField(q(b.field)) + QLatin1Char(';') +
-                   csvField(q(b.text.in(lang))) + QLatin1Char('\n');
+                   csvField(plcText(b.text, lang)) + QLatin1Char('\n');
         }
     };
     rows(c.output, QStringLiteral("out"));

@@ -25,13 +25,14 @@ struct FoldSheet
 };
 
 // Builds the plan's config and findings; nullopt (with *why set) when buildPlcConfig fails.
-std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, dev::LocalText *why = nullptr);
+std::optional<FoldSheet> makeFoldSheet(const FoldPlan &plan, PlcText *why = nullptr);
 
 // Self-contained HTML 4 document (inline CSS, no scripts, no external files), text escaped.
 // Sections: node and GSD, modules and addresses, findings, output image, input image, per-module
 // bits, example telegram. Numbers are plain (byte offsets, hex), so the sheet reads the same in
-// both languages apart from the words. The findings are worded through tr(), in the language
-// shown (the wizard passes that language as `lang`).
+// both languages apart from the words. The sheet's words and the findings go through tr() (the
+// catalogue in force); the plan's {en, de} texts are shown in `lang` (the wizard passes the
+// language shown, so both agree).
 QString foldSheetHtml(const FoldSheet &sheet, dev::Language lang);
 
 // One row per image byte: direction;offset;module;sadr;field;meaning — ';' separated, fields

@@ -28,19 +28,6 @@ std::optional<FoldNode> foldNodeFromKey(std::string_view key)
     return std::nullopt;
 }
 
-LocalText foldNodeTitle(FoldNode node)
-{
-    switch (node) {
-    case FoldNode::Opat:
-        return {"OPAT PROFIBUS master with CAN slaves", "OPAT-PROFIBUS-Master mit CAN-Slaves"};
-    case FoldNode::DmaProfibus:
-        return {"DMA-2 modules on a PROFIBUS node", "DMA-2-Module an einem PROFIBUS-Knoten"};
-    case FoldNode::DmaProfinet:
-        return {"DMA-2 modules on a PROFINET node", "DMA-2-Module an einem PROFINET-Knoten"};
-    }
-    return {};
-}
-
 Family foldFamily(FoldNode node)
 {
     return node == FoldNode::Opat ? Family::Opat : Family::Dma;

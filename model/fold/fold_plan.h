@@ -1,7 +1,8 @@
 // FoldPlan: what one multi-module node (a "fold") should look like — node type, its modules with
 // software version, mode, address and bus options — as a plain value the wizard, the CLI, the
 // checks, the PLC configuration and the plan file share. Qt-free (strings are UTF-8)
-// so the plan file parser can be fuzzed like the devices/ codecs.
+// so the plan file parser can be fuzzed like the devices/ codecs; its few words for people are
+// said through tr() in fold_plan_text.cpp.
 #pragma once
 
 #include "hcs/profiles.h"
@@ -12,6 +13,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+class QString;
 
 namespace vt::dev {
 struct Dictionary;
@@ -28,8 +31,9 @@ enum class FoldNode { Opat, DmaProfibus, DmaProfinet };
 
 std::string_view foldNodeKey(FoldNode node);                   // "opat", "dma-pb", "dma-pn"
 std::optional<FoldNode> foldNodeFromKey(std::string_view key); // inverse (CLI, plan file)
-dev::LocalText foldNodeTitle(FoldNode node);                   // "DMA-2 on a PROFIBUS node"
 dev::hcs::Family foldFamily(FoldNode node);                    // Opat / Dma
+// "DMA-2 modules on a PROFIBUS node", through tr() (Qt; fold_plan_text.cpp).
+QString foldNodeTitle(FoldNode node);
 
 // Modules one CMD 15 telegram reaches: OPAT master + 7 slaves = 8 (OPAT manual §1.6, §3.1);
 // DMA E22 = 1..5 (DMA Profibus Anleitung §1.5, DMA Profinet manual §1.5).

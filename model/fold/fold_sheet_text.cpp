@@ -1,80 +1,85 @@
-// foldSheetText: the plain-text PLC sheet printed by `valvetune-cli fold plan`.
+// foldSheetText: the plain-text PLC sheet printed by `valvetune-cli fold plan`. Its own words go
+// through tr() (the CLI's --lang installs the catalogue); the texts of the Qt-free plan (node
+// addresses, layouts) are still {en, de} pairs, shown in `lang`.
 #include "core/hex.h"
 #include "fold_export.h"
 
-#include <cstdio>
+#include <QCoreApplication>
 
 namespace vt::model {
 
 using dev::Language;
-using dev::LocalText;
 
 namespace {
 
-std::string pad(std::string s, std::size_t width)
+class FoldSheetText
 {
-    // Width in characters, not bytes: count UTF-8 lead bytes only.
-    std::size_t chars = 0;
-    for (char c : s)
-        if ((static_cast<unsigned char>(c) & 0xC0u) != 0x80u)
-            ++chars;
-    if (chars < width)
-        s.append(width - chars, ' ');
-    return s;
+    Q_DECLARE_TR_FUNCTIONS(vt::model::FoldSheetText)
+
+public:
+    static QString text(const PlcConfig &c, const FoldPlan &plan, Language lang);
+};
+
+QString q(const std::string &s)
+{
+    return QString::fromStdString(s);
 }
 
-std::string num(int v, int width)
+// A label padded to its column; width in characters, as a terminal shows them.
+QString pad(const QString &s, int width)
 {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%*d", width, v);
-    return buf;
+    return s.leftJustified(width);
 }
 
-std::string hex2(unsigned v)
+QString hex2(unsigned v)
 {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "0x%02X", v & 0xFFu);
-    return buf;
+    return QStringLiteral("0x%1").arg(
+        QString::number(v & 0xFFu, 16).toUpper().rightJustified(2, QLatin1Char('0')));
 }
 
-std::string byteLine(const PlcImageByte &b, Language lang)
+QString byteLine(const PlcImageByte &b, Language lang)
 {
-    return "  " + num(b.offset, 4) + "  " + pad(b.field, 9) + b.text.in(lang) + "\n";
+    return QStringLiteral("  %1  %2%3\n")
+        .arg(b.offset, 4)
+        .arg(pad(q(b.field), 9), plcText(b.text, lang));
 }
 
-} // namespace
-
-QString foldSheetText(const PlcConfig &c, const FoldPlan &plan, Language lang)
+QString bitNames(const std::array<dev::hcs::BitMeaning, 8> &bits)
 {
-    const auto t = [lang](const char *en, const char *de) {
-        return std::string(lang == Language::German ? de : en);
-    };
-    std::string o;
-    o += t("Fold plan: ", "Modulplan: ") + foldNodeTitle(c.node).in(lang) + " (" +
-         std::string(foldNodeKey(c.node)) + "), " + std::to_string(c.modules) +
-         t(c.modules == 1 ? " module" : " modules", c.modules == 1 ? " Modul" : " Module") + "\n";
+    QStringList names;
+    for (const auto &bit : bits)
+        if (bit.used)
+            names << hex2(bit.mask) + QLatin1Char(' ') + q(std::string(bit.name));
+    return names.join(QStringLiteral(", "));
+}
+
+QString FoldSheetText::text(const PlcConfig &c, const FoldPlan &plan, Language lang)
+{
+    QString o;
+    o += tr("Fold plan: %1 (%2), %n module(s)", nullptr, c.modules)
+             .arg(foldNodeTitle(c.node), q(std::string(foldNodeKey(c.node)))) +
+         QLatin1Char('\n');
     if (!plan.title.empty())
-        o += pad(t("Title:", "Titel:"), 13) + plan.title + "\n";
-    o += pad(t("GSD file:", "GSD-Datei:"), 13) + c.gsdFile + "\n";
-    o += pad(t("Device:", "Gerät:"), 13) + c.gsdDevice + "\n";
-    o += pad(t("GSD module:", "GSD-Modul:"), 13) + c.gsdModule + "\n";
-    o += pad(t("Output:", "Ausgang:"), 13) + std::to_string(c.outputBytes) +
-         t(" bytes (PLC to node, CMD 15 request, SNUM = ",
-           " Byte (SPS zum Knoten, CMD-15-Anfrage, SNUM = ") +
-         std::to_string(c.snum) + ")\n";
-    o += pad(t("Input:", "Eingang:"), 13) + std::to_string(c.inputBytes) +
-         t(" bytes (node to PLC, one module per answer)",
-           " Byte (Knoten zur SPS, ein Modul je Antwort)") +
-         "\n";
+        o += pad(tr("Title:"), 13) + q(plan.title) + QLatin1Char('\n');
+    o += pad(tr("GSD file:"), 13) + q(c.gsdFile) + QLatin1Char('\n');
+    o += pad(tr("Device:"), 13) + q(c.gsdDevice) + QLatin1Char('\n');
+    o += pad(tr("GSD module:"), 13) + q(c.gsdModule) + QLatin1Char('\n');
+    o += pad(tr("Output:"), 13) +
+         tr("%1 bytes (PLC to node, CMD 15 request, SNUM = %2)").arg(c.outputBytes).arg(c.snum) +
+         QLatin1Char('\n');
+    o += pad(tr("Input:"), 13) +
+         tr("%1 bytes (node to PLC, one module per answer)").arg(c.inputBytes) + QLatin1Char('\n');
     if (c.moduleOutputBytes != c.outputBytes || c.moduleInputBytes != c.inputBytes)
-        o += pad(t("Reserved:", "Reserviert:"), 13) + std::to_string(c.moduleOutputBytes) + " / " +
-             std::to_string(c.moduleInputBytes) +
-             t(" bytes out / in by the GSD module", " Byte aus / ein durch das GSD-Modul") + "\n";
-    o += pad(t("Source:", "Quelle:"), 13) + c.gsdNote.in(lang) + "\n";
+        o += pad(tr("Reserved:"), 13) +
+             tr("%1 / %2 bytes out / in by the GSD module")
+                 .arg(c.moduleOutputBytes)
+                 .arg(c.moduleInputBytes) +
+             QLatin1Char('\n');
+    o += pad(tr("Source:"), 13) + plcText(c.gsdNote, lang) + QLatin1Char('\n');
 
-    o += "\n" + t("Output image (PLC to node)", "Ausgangsabbild (SPS zum Knoten)") + "\n";
-    o += "  " + pad(t("byte", "Byte"), 4) + "  " + pad(t("field", "Feld"), 9) +
-         t("meaning", "Bedeutung") + "\n";
+    o += QLatin1Char('\n') + tr("Output image (PLC to node)") + QLatin1Char('\n');
+    o += QStringLiteral("  ") + pad(tr("byte"), 4) + QStringLiteral("  ") + pad(tr("field"), 9) +
+         tr("meaning") + QLatin1Char('\n');
     for (const PlcImageByte &b : c.output)
         if (b.module < 0)
             o += byteLine(b, lang);
@@ -83,62 +88,64 @@ QString foldSheetText(const PlcConfig &c, const FoldPlan &plan, Language lang)
                                   ? &plan.modules[static_cast<std::size_t>(s.module)]
                                   : nullptr;
         const auto &info = dev::hcs::profileInfo(s.profile);
-        o += t("Module ", "Modul ") + std::to_string(s.module + 1);
+        const QString last = QString::number(s.outputFirst + s.outputLength - 1);
         if (m) {
-            o += " (" + foldAddressText(c.node, *m).in(lang);
+            QString where = q(foldAddressText(c.node, *m).in(lang));
             if (!m->name.empty())
-                o += ", " + m->name;
-            o += ")";
+                where += QStringLiteral(", ") + q(m->name);
+            o += tr("Module %1 (%2): %3, output bytes %4..%5")
+                     .arg(QString::number(s.module + 1), where, q(info.title.in(lang)),
+                          QString::number(s.outputFirst), last);
+        } else {
+            o += tr("Module %1: %2, output bytes %3..%4")
+                     .arg(QString::number(s.module + 1), q(info.title.in(lang)),
+                          QString::number(s.outputFirst), last);
         }
-        o += ": " + info.title.in(lang) + ", " + t("output bytes ", "Ausgangsbytes ") +
-             std::to_string(s.outputFirst) + ".." +
-             std::to_string(s.outputFirst + s.outputLength - 1) + "\n";
+        o += QLatin1Char('\n');
         for (const PlcImageByte &b : c.output)
             if (b.module == s.module)
                 o += byteLine(b, lang);
-        o += "        " + t("answer with SADR = ", "Antwort mit SADR = ") + std::to_string(s.sadr) +
-             ": VALUE1 = " + std::string(info.response1.parameter) + " " +
-             info.response1.text.in(lang) + "; VALUE2 = " + std::string(info.response2.parameter) +
-             " " + info.response2.text.in(lang) + "\n";
-        std::string bits;
-        for (const auto &bit : s.controlBits)
-            if (bit.used)
-                bits += (bits.empty() ? "" : ", ") + hex2(bit.mask) + " " + std::string(bit.name);
-        o += "        " + t("control byte bits: ", "Steuerbyte-Bits: ") +
-             (bits.empty() ? "-" : bits) + "\n";
-        bits.clear();
-        for (const auto &bit : s.statusHighBits)
-            if (bit.used)
-                bits += (bits.empty() ? "" : ", ") + hex2(bit.mask) + " " + std::string(bit.name);
-        o += "        " + t("status high byte: ", "Status High-Byte: ") +
-             (bits.empty() ? "-" : bits) + "\n";
-        bits.clear();
-        for (const auto &bit : s.statusLowBits)
-            if (bit.used)
-                bits += (bits.empty() ? "" : ", ") + hex2(bit.mask) + " " + std::string(bit.name);
-        o += "        " + t("status low byte: ", "Status Low-Byte: ") +
-             (bits.empty()
-                  ? t("no signals in this mode (error number while ERROR is set)",
-                      "keine Signale in diesem Modus (Fehlernummer solange ERROR gesetzt ist)")
-                  : bits + t(" (error number while ERROR is set)",
-                             " (Fehlernummer solange ERROR gesetzt ist)")) +
-             "\n";
+        const QString indent(8, QLatin1Char(' '));
+        o += indent +
+             tr("answer with SADR = %1: VALUE1 = %2; VALUE2 = %3")
+                 .arg(QString::number(s.sadr),
+                      q(std::string(info.response1.parameter) + " " + info.response1.text.in(lang)),
+                      q(std::string(info.response2.parameter) + " " +
+                        info.response2.text.in(lang))) +
+             QLatin1Char('\n');
+        const QString control = bitNames(s.controlBits);
+        o += indent +
+             tr("control byte bits: %1").arg(control.isEmpty() ? QStringLiteral("-") : control) +
+             QLatin1Char('\n');
+        const QString high = bitNames(s.statusHighBits);
+        o += indent + tr("status high byte: %1").arg(high.isEmpty() ? QStringLiteral("-") : high) +
+             QLatin1Char('\n');
+        const QString low = bitNames(s.statusLowBits);
+        o +=
+            indent +
+            tr("status low byte: %1")
+                .arg(low.isEmpty() ? tr("no signals in this mode (error number while ERROR is set)")
+                                   : tr("%1 (error number while ERROR is set)").arg(low)) +
+            QLatin1Char('\n');
     }
 
-    o += "\n" +
-         t("Input image (node to PLC, multiplexed: SADR names the module)",
-           "Eingangsabbild (Knoten zur SPS, gemultiplext: SADR nennt das Modul)") +
-         "\n";
+    o += QLatin1Char('\n') + tr("Input image (node to PLC, multiplexed: SADR names the module)") +
+         QLatin1Char('\n');
     for (const PlcImageByte &b : c.input)
         o += byteLine(b, lang);
 
-    o += "\n" +
-         t("Example CMD 15 telegram (TADR 0x01, control byte 0x00, VALUE1 = 1000 = 1.000 V, VALUE2 "
-           "= 0 for every module):",
-           "Beispiel CMD-15-Telegramm (TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 = 1,000 V, VALUE2 "
-           "= 0 für jedes Modul):") +
-         "\n  " + dev::toHex(c.exampleRequestBytes) + "\n";
-    return QString::fromStdString(o);
+    o += QLatin1Char('\n') +
+         tr("Example CMD 15 telegram (TADR 0x01, control byte 0x00, VALUE1 = 1000 = 1.000 V, "
+            "VALUE2 = 0 for every module):") +
+         QStringLiteral("\n  ") + q(dev::toHex(c.exampleRequestBytes)) + QLatin1Char('\n');
+    return o;
+}
+
+} // namespace
+
+QString foldSheetText(const PlcConfig &c, const FoldPlan &plan, Language lang)
+{
+    return FoldSheetText::text(c, plan, lang);
 }
 
 } // namespace vt::model

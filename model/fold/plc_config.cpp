@@ -15,19 +15,19 @@ std::string str(int value)
     return std::to_string(value);
 }
 
-LocalText valueText(const char *which, bool high, const hcs::ValueMeaning &meaning)
+LocalText num(int value)
 {
-    // "VALUE1 high byte: A1.01 set value input (bus) (branch 1)"
-    const std::string w(which);
-    const std::string param = meaning.parameter.empty() ? "" : std::string(meaning.parameter) + " ";
-    return {w + (high ? " high byte: " : " low byte: ") + param + meaning.text.en,
-            w + (high ? " High-Byte: " : " Low-Byte: ") + param + meaning.text.de};
+    return dev::same(std::to_string(value));
 }
 
-LocalText partText(const char *which, bool high)
+PlcText valueText(const char *which, bool high, const hcs::ValueMeaning &meaning)
 {
-    return high ? LocalText{std::string(which) + " high byte", std::string(which) + " High-Byte"}
-                : LocalText{std::string(which) + " low byte", std::string(which) + " Low-Byte"};
+    // "VALUE1 high byte: A1.01 set value input (bus) (branch 1)"
+    if (meaning.parameter.empty())
+        return {high ? PlcTextId::ValueHigh : PlcTextId::ValueLow,
+                {dev::same(which), meaning.text}};
+    return {high ? PlcTextId::ValueHighParameter : PlcTextId::ValueLowParameter,
+            {dev::same(which), dev::same(std::string(meaning.parameter)), meaning.text}};
 }
 
 // DMA Profibus Anleitung §6.1.1: "Die letzten beiden Ziffern der Produktnummer sind relevant.
@@ -66,14 +66,7 @@ GsdChoice chooseGsd(FoldNode node, std::size_t modules, const std::string &produ
             n <= 1 ? "CMD15 1M IN/OUT 9/8" : "CMD15 1M " + str(n - 1) + "S IN/OUT 9/" + str(out);
         g.moduleOutputBytes = out;
         g.moduleInputBytes = in;
-        g.note = {
-            "OPAT manual §1.1 (GSD file) and §4.1 (HW Config: the CMD 15 module for the master "
-            "and " +
-                str(std::max(n - 1, 0)) + " slave(s); output at least " + str(out) +
-                " bytes, input at least 9 bytes).",
-            "OPAT-Handbuch §1.1 (GSD-Datei) und §4.1 (HW Konfig: CMD-15-Modul für den Master und " +
-                str(std::max(n - 1, 0)) + " Slave(s); Ausgang mindestens " + str(out) +
-                " Byte, Eingang mindestens 9 Byte)."};
+        g.note = {PlcTextId::OpatGsd, {num(std::max(n - 1, 0)), num(out)}};
         return g;
     case FoldNode::DmaProfinet:
         // DMA Profinet manual §1.1 "Used GSDML File"; §4.5.4: "select the IN/OUT 42 byte Rev…
@@ -83,13 +76,7 @@ GsdChoice chooseGsd(FoldNode node, std::size_t modules, const std::string &produ
         g.module = "IN/OUT 42 byte Rev…";
         g.moduleOutputBytes = 42;
         g.moduleInputBytes = 42;
-        g.note = {
-            "DMA Profinet manual §1.1 (GSDML file) and §4.5.4 (one 42-byte IN/OUT module serves "
-            "every fold; the CMD 15 telegram uses the first " +
-                str(out) + " output and 9 input bytes).",
-            "DMA-Profinet-Handbuch §1.1 (GSDML-Datei) und §4.5.4 (ein IN/OUT-Modul mit 42 Byte "
-            "dient jeder Modulanzahl; das CMD-15-Telegramm belegt die ersten " +
-                str(out) + " Ausgangs- und 9 Eingangsbytes)."};
+        g.note = {PlcTextId::ProfinetGsd, {num(out)}};
         return g;
     case FoldNode::DmaProfibus: break;
     }
@@ -103,14 +90,7 @@ GsdChoice chooseGsd(FoldNode node, std::size_t modules, const std::string &produ
         g.module = "TIA 28 Byte In / Output";
         g.moduleOutputBytes = 28;
         g.moduleInputBytes = 28;
-        g.note = {
-            "DMA Profibus Anleitung §6.1.1–6.1.4: product number ending in 5 uses hcs0ea7.gsd, "
-            "device DMA-22-XX and the 28-byte module; the CMD 15 telegram uses the first " +
-                str(out) + " output and 9 input bytes.",
-            "DMA Profibus Anleitung §6.1.1–6.1.4: Produktnummer mit Endziffer 5 verwendet "
-            "hcs0ea7.gsd, Gerät DMA-22-XX und das 28-Byte-Modul; das CMD-15-Telegramm belegt "
-            "die ersten " +
-                str(out) + " Ausgangs- und 9 Eingangsbytes."};
+        g.note = {PlcTextId::Ea7Gsd, {num(out)}};
         return g;
     }
     g.productNumberDecided = variant.has_value() && *variant >= 1 && *variant <= 4;
@@ -129,53 +109,26 @@ GsdChoice chooseGsd(FoldNode node, std::size_t modules, const std::string &produ
         g.moduleOutputBytes = out;
         g.moduleInputBytes = in;
     }
-    LocalText why = {
-        "DMA Profibus Anleitung §1.1 (GSD file), §5.1 (CMD 15 module, output at least " + str(out) +
-            " bytes, input at least 9 bytes)",
-        "DMA Profibus Anleitung §1.1 (GSD-Datei), §5.1 (CMD-15-Modul, Ausgang mindestens " +
-            str(out) + " Byte, Eingang mindestens 9 Byte)"};
-    if (n < 2) {
-        why.en += " and §5.1.1 (no one-module CMD 15 entry in the catalogue: universal module)";
-        why.de += " und §5.1.1 (kein CMD-15-Eintrag für ein Modul im Katalog: Universalmodul)";
-    }
-    if (!g.productNumberDecided) {
-        why.en += "; product number not given: HCS0220.GSD assumed (§6.1.1: numbers ending in 5 "
-                  "use hcs0ea7.gsd)";
-        why.de += "; Produktnummer nicht angegeben: HCS0220.GSD angenommen (§6.1.1: Nummern mit "
-                  "Endziffer 5 verwenden hcs0ea7.gsd)";
-    }
-    why.en += ".";
-    why.de += ".";
-    g.note = why;
+    const bool universal = n < 2; // §5.1.1: no one-module CMD 15 entry in the catalogue
+    const PlcTextId note =
+        universal
+            ? (g.productNumberDecided ? PlcTextId::ProfibusGsdUniversal
+                                      : PlcTextId::ProfibusGsdUniversalAssumed)
+            : (g.productNumberDecided ? PlcTextId::ProfibusGsd : PlcTextId::ProfibusGsdAssumed);
+    g.note = {note, {num(out)}};
     return g;
 }
 
-dev::Result<PlcConfig, LocalText> buildPlcConfig(const FoldPlan &plan)
+dev::Result<PlcConfig, PlcText> buildPlcConfig(const FoldPlan &plan)
 {
     const std::size_t count = plan.modules.size();
     const hcs::Family family = foldFamily(plan.node);
     const std::size_t max = foldMaxCmd15Modules(plan.node);
     if (count == 0)
-        return LocalText{"The plan has no modules.", "Der Plan enthält keine Module."};
-    if (count > max) {
-        if (plan.node == FoldNode::Opat)
-            return LocalText{
-                str(static_cast<int>(count)) +
-                    " OPAT modules: one CMD 15 telegram reaches the master "
-                    "and at most 7 CAN slaves (8 modules; OPAT manual §1.6, §3.1).",
-                str(static_cast<int>(count)) +
-                    " OPAT-Module: Ein CMD-15-Telegramm erreicht den Master "
-                    "und höchstens 7 CAN-Slaves (8 Module; OPAT-Handbuch §1.6, §3.1)."};
-        return LocalText{
-            str(static_cast<int>(count)) + " DMA modules: CMD 15 reaches E22 = 1 … 5 only; modules "
-                                           "above 5 are reachable by CMD 3 / CMD 6 only (DMA "
-                                           "Profibus Anleitung §1.5, DMA Profinet "
-                                           "manual §1.5).",
-            str(static_cast<int>(count)) +
-                " DMA-Module: CMD 15 erreicht nur E22 = 1 … 5; Module "
-                "darüber sind nur mit CMD 3 / CMD 6 erreichbar (DMA Profibus Anleitung §1.5, "
-                "DMA-Profinet-Handbuch §1.5)."};
-    }
+        return PlcText{PlcTextId::NoModules, {}};
+    if (count > max)
+        return PlcText{plan.node == FoldNode::Opat ? PlcTextId::TooManyOpat : PlcTextId::TooManyDma,
+                       {num(static_cast<int>(count))}};
 
     PlcConfig c;
     c.node = plan.node;
@@ -196,20 +149,10 @@ dev::Result<PlcConfig, LocalText> buildPlcConfig(const FoldPlan &plan)
 
     // Request header (OPAT manual §3.1, DMA Profinet manual §4.1).
     const bool opat = plan.node == FoldNode::Opat;
-    c.output.push_back({0,
-                        -1,
-                        "TADR",
-                        {"telegram address, set by the PLC (0 … 255); change it to force an answer",
-                         "Telegrammadresse, von der SPS gesetzt (0 … 255); ändern, um eine Antwort "
-                         "zu erzwingen"}});
+    c.output.push_back({0, -1, "TADR", {PlcTextId::TadrOut, {}}});
     c.output.push_back(
-        {1, -1, "SNUM",
-         opat ? LocalText{"number of CAN slaves = " + str(c.snum) +
-                              " (the master, SADR 0, is always included)",
-                          "Anzahl CAN-Slaves = " + str(c.snum) +
-                              " (der Master, SADR 0, ist immer dabei)"}
-              : LocalText{"number of modules = " + str(c.snum), "Anzahl Module = " + str(c.snum)}});
-    c.output.push_back({2, -1, "CMD", {"command 15 (0x0F)", "Befehl 15 (0x0F)"}});
+        {1, -1, "SNUM", {opat ? PlcTextId::SnumOpat : PlcTextId::SnumDma, {num(c.snum)}}});
+    c.output.push_back({2, -1, "CMD", {PlcTextId::CmdOut, {}}});
 
     c.exampleRequest.tadr = 0x01;
     for (std::size_t i = 0; i < count; ++i) {
@@ -221,11 +164,7 @@ dev::Result<PlcConfig, LocalText> buildPlcConfig(const FoldPlan &plan)
         const int first = static_cast<int>(hcs::kCyclicHeaderSize + hcs::kCyclicModuleSize * i);
         const int idx = static_cast<int>(i);
         const std::string dat = "DAT" + str(sadr);
-        c.output.push_back({first,
-                            idx,
-                            dat + ".1",
-                            {"control byte (special functions, bits below)",
-                             "Steuerbyte (Sonderfunktionen, Bits siehe unten)"}});
+        c.output.push_back({first, idx, dat + ".1", {PlcTextId::ControlByte, {}}});
         c.output.push_back({first + 1, idx, dat + ".2H", valueText("VALUE1", true, info.request1)});
         c.output.push_back(
             {first + 2, idx, dat + ".2L", valueText("VALUE1", false, info.request1)});
@@ -252,38 +191,16 @@ dev::Result<PlcConfig, LocalText> buildPlcConfig(const FoldPlan &plan)
     // Response (OPAT manual §3.2, DMA Profinet manual §4.2): 9 bytes, multiplexed module by module.
     const std::string range =
         opat ? "0 … " + str(static_cast<int>(count) - 1) : "1 … " + str(static_cast<int>(count));
-    c.input.push_back(
-        {0, -1, "TADR", {"telegram address, echoed", "Telegrammadresse, zurückgesendet"}});
-    c.input.push_back(
-        {1,
-         -1,
-         "SADR",
-         {"address of the module that answered (" + range + ", changes with every answer)",
-          "Adresse des antwortenden Moduls (" + range + ", wechselt mit jeder Antwort)"}});
-    c.input.push_back({2,
-                       -1,
-                       "CMD",
-                       {"command 15 (0x8F = error, byte 3 = exception)",
-                        "Befehl 15 (0x8F = Fehler, Byte 3 = Exception)"}});
-    c.input.push_back({3,
-                       -1,
-                       "DAT.1H",
-                       {"status word high byte: HW_ENABLE, ERROR, BUS_DISABLE",
-                        "Statuswort High-Byte: HW_ENABLE, ERROR, BUS_DISABLE"}});
-    c.input.push_back(
-        {4,
-         -1,
-         "DAT.1L",
-         {"status word low byte: signals, or the error number while ERROR is set",
-          "Statuswort Low-Byte: Signale, oder die Fehlernummer solange ERROR gesetzt ist"}});
-    c.input.push_back({5, -1, "DAT.2H", partText("VALUE1", true)});
-    c.input.push_back({6, -1, "DAT.2L", partText("VALUE1", false)});
-    c.input.push_back({7, -1, "DAT.3H", partText("VALUE2", true)});
-    c.input.push_back({8, -1, "DAT.3L", partText("VALUE2", false)});
-    for (std::size_t b = 5; b < 9; ++b) {
-        c.input[b].text.en += " of the module named by SADR (meaning listed per module)";
-        c.input[b].text.de += " des in SADR genannten Moduls (Bedeutung je Modul aufgeführt)";
-    }
+    c.input.push_back({0, -1, "TADR", {PlcTextId::TadrIn, {}}});
+    c.input.push_back({1, -1, "SADR", {PlcTextId::SadrIn, {dev::same(range)}}});
+    c.input.push_back({2, -1, "CMD", {PlcTextId::CmdIn, {}}});
+    c.input.push_back({3, -1, "DAT.1H", {PlcTextId::StatusHigh, {}}});
+    c.input.push_back({4, -1, "DAT.1L", {PlcTextId::StatusLow, {}}});
+    // The value bytes of the module named by SADR; their meaning is listed per module.
+    c.input.push_back({5, -1, "DAT.2H", {PlcTextId::AnswerHigh, {dev::same("VALUE1")}}});
+    c.input.push_back({6, -1, "DAT.2L", {PlcTextId::AnswerLow, {dev::same("VALUE1")}}});
+    c.input.push_back({7, -1, "DAT.3H", {PlcTextId::AnswerHigh, {dev::same("VALUE2")}}});
+    c.input.push_back({8, -1, "DAT.3L", {PlcTextId::AnswerLow, {dev::same("VALUE2")}}});
 
     auto encoded = hcs::encode(c.exampleRequest, family);
     if (encoded.ok())

@@ -1,6 +1,8 @@
 // The PLC side of a fold plan: which GSD/GSDML file and module to install, the
 // CMD 15 output and input images byte by byte per module, control/status bits per module mode and
-// an example telegram built with the CMD 15 codec. Pure value, built from a FoldPlan.
+// an example telegram built with the CMD 15 codec. Pure value, built from a FoldPlan. Qt-free (the
+// fuzz build has no Qt): its texts name a sentence and its values, and plcText()
+// (plc_config_text.cpp) says them through tr() when they are shown.
 #pragma once
 
 #include "core/local_text.h"
@@ -15,7 +17,50 @@
 #include <string>
 #include <vector>
 
+class QString;
+
 namespace vt::model {
+
+// One sentence of the sheet; its %1, %2 … are filled with PlcText::args in order.
+enum class PlcTextId {
+    NoModules,
+    TooManyOpat,                 // modules
+    TooManyDma,                  // modules
+    OpatGsd,                     // slaves, output bytes
+    ProfinetGsd,                 // output bytes
+    Ea7Gsd,                      // output bytes
+    ProfibusGsd,                 // output bytes
+    ProfibusGsdUniversal,        // output bytes
+    ProfibusGsdAssumed,          // output bytes
+    ProfibusGsdUniversalAssumed, // output bytes
+    TadrOut,
+    SnumOpat, // slaves
+    SnumDma,  // modules
+    CmdOut,
+    ControlByte,
+    ValueHigh,          // VALUE1/2, meaning
+    ValueLow,           // VALUE1/2, meaning
+    ValueHighParameter, // VALUE1/2, parameter, meaning
+    ValueLowParameter,  // VALUE1/2, parameter, meaning
+    TadrIn,
+    SadrIn, // address range
+    CmdIn,
+    StatusHigh,
+    StatusLow,
+    AnswerHigh, // VALUE1/2
+    AnswerLow,  // VALUE1/2
+};
+
+struct PlcText
+{
+    PlcTextId id = PlcTextId::NoModules;
+    std::vector<dev::LocalText> args; // numbers and names; meanings from devices/ in both languages
+
+    bool operator==(const PlcText &) const = default;
+};
+
+// The sentence in the catalogue in force, its {en, de} values in `lang` (Qt; plc_config_text.cpp).
+QString plcText(const PlcText &text, dev::Language lang);
 
 // One byte of the output (PLC → node, the CMD 15 request) or input (node → PLC, the 9-byte
 // response) image. Offsets are from the start of the telegram: PLC address = start address +
@@ -23,9 +68,9 @@ namespace vt::model {
 struct PlcImageByte
 {
     int offset = 0;
-    int module = -1;     // index into FoldPlan::modules; -1 = telegram header / multiplexed
-    std::string field;   // the manuals' name: "TADR", "SNUM", "CMD", "DAT2.1", "DAT2.2H", "DAT.1L"
-    dev::LocalText text; // "control byte (special functions)", "VALUE1 high byte: A1.01 …"
+    int module = -1;   // index into FoldPlan::modules; -1 = telegram header / multiplexed
+    std::string field; // the manuals' name: "TADR", "SNUM", "CMD", "DAT2.1", "DAT2.2H", "DAT.1L"
+    PlcText text;      // "control byte (special functions)", "VALUE1 high byte: A1.01 …"
 
     bool operator==(const PlcImageByte &) const = default;
 };
@@ -55,7 +100,7 @@ struct PlcConfig
         gsdFile; // "HCS0D68.GSD", "HCS0220.GSD", "hcs0ea7.gsd", "GSDML-V2.2-HCS-DMA-XX_PN-….xml"
     std::string gsdDevice; // catalogue entry: "OPAT - Profibus", "DMA-2 - Profibus", "DMA-22-XX", …
     std::string gsdModule;     // "CMD15 1M 4S IN/OUT 9/28", "CMD15 3fold 9B-I 18B-O (kons)", …
-    dev::LocalText gsdNote;    // why this file and module, with the manual section
+    PlcText gsdNote;           // why this file and module, with the manual section
     int outputBytes = 0;       // CMD 15 request length: 3 + 5 × modules (8..43)
     int inputBytes = 0;        // CMD 15 response length: 9
     int moduleOutputBytes = 0; // bytes the GSD module reserves (≥ outputBytes; else exception 9)
@@ -71,7 +116,7 @@ struct PlcConfig
 // Fails with a sentence saying why when the plan cannot be served by one CMD 15 telegram
 // (no modules, DMA > 5, OPAT > 8 — usage errors for the CLI). Other problems (duplicates, modes)
 // are the checks' job (checkFoldPlan); unknown layouts fall back to the family default profile.
-dev::Result<PlcConfig, dev::LocalText> buildPlcConfig(const FoldPlan &plan);
+dev::Result<PlcConfig, PlcText> buildPlcConfig(const FoldPlan &plan);
 
 // GSD/GSDML choice alone (used by buildPlcConfig and the wizard's product-number field).
 struct GsdChoice
@@ -81,7 +126,7 @@ struct GsdChoice
     std::string module;
     int moduleOutputBytes = 0;
     int moduleInputBytes = 0;
-    dev::LocalText note;
+    PlcText note;
     bool productNumberDecided = true; // false: DMA Profibus without a usable product number
 };
 GsdChoice chooseGsd(FoldNode node, std::size_t modules, const std::string &productNumber);

@@ -7,6 +7,8 @@
 #include "cli_device_fixture.h"
 #include "sim_process.h"
 
+#include <QCoreApplication>
+
 namespace vt::clitest {
 namespace {
 
@@ -277,6 +279,20 @@ TEST_F(CliDevice, ConnectionUsageErrors)
     const CliRun refused = cli({"info", "--tcp", "127.0.0.1:1"});
     EXPECT_EQ(refused.code, kExitConnection) << what(refused);
     EXPECT_EQ(refused.errLines(), 1) << refused.err;
+}
+
+// --lang de puts the German catalogue in force for the run: the link's own words (tr()) come out
+// in German; the next run without --lang is English again (runCli removes what it installed).
+TEST_F(CliDevice, LangDeWordsTheLinksTextsInGermanForThatRunOnly)
+{
+    const CliRun german = cli({"info", "--tcp", "127.0.0.1:1", "--lang", "de"});
+    EXPECT_EQ(german.code, kExitConnection) << what(german);
+    EXPECT_TRUE(german.complains("Verbindung zu 127.0.0.1:1 fehlgeschlagen")) << german.err;
+    const CliRun english = cli({"info", "--tcp", "127.0.0.1:1"});
+    EXPECT_EQ(english.code, kExitConnection) << what(english);
+    EXPECT_TRUE(english.complains("Connection to 127.0.0.1:1 failed")) << english.err;
+    EXPECT_EQ(QCoreApplication::translate("vt::link::TcpLink", "Connection to %1 failed: %2"),
+              "Connection to %1 failed: %2");
 }
 
 // End to end over a real valvetune-sim process on loopback: a 3-fold DMA-2 behind Modbus TCP.

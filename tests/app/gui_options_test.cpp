@@ -42,3 +42,81 @@ TEST(GuiOptions, SimulateAndOpenAreTakenAndCheckedForNonsense)
         EXPECT_TRUE(e.error.startsWith("--simulate: ")) << bad;
     }
 }
+
+// --connect takes valvetune-cli's connection options, parsed by the same code (app/cmdline).
+TEST(GuiOptions, ConnectTakesTheCliConnectionOptions)
+{
+    using vt::model::ConnectionKind;
+    auto tcp = parseGuiOptions(
+        {"valvetune", "--lang", "de", "--connect", "--tcp", "127.0.0.1:1502", "--unit", "2"});
+    ASSERT_FALSE(tcp.exitNow) << tcp.error.toStdString();
+    ASSERT_TRUE(tcp.connection.has_value());
+    EXPECT_EQ(tcp.connection->kind, ConnectionKind::Tcp);
+    EXPECT_EQ(tcp.connection->host, "127.0.0.1");
+    EXPECT_EQ(tcp.connection->port, 1502);
+    EXPECT_EQ(tcp.connection->unit, 2);
+    EXPECT_EQ(tcp.language, "de"); // the GUI's own options still count
+
+    auto gateway = parseGuiOptions({"valvetune", "--connect", "--tcp", "192.168.0.10"});
+    ASSERT_TRUE(gateway.connection.has_value()) << gateway.error.toStdString();
+    EXPECT_EQ(gateway.connection->port, 502); // Modbus TCP's port when none is given
+
+    auto serial = parseGuiOptions({"valvetune", "--connect", "--port", "/dev/ttyUSB0", "--baud",
+                                   "115200", "--parity", "none", "--stop", "2"});
+    ASSERT_TRUE(serial.connection.has_value()) << serial.error.toStdString();
+    EXPECT_EQ(serial.connection->kind, ConnectionKind::Serial);
+    EXPECT_EQ(serial.connection->serial.portName, "/dev/ttyUSB0");
+    EXPECT_EQ(serial.connection->serial.baudRate, 115200);
+    EXPECT_EQ(serial.connection->serial.parity, vt::link::Parity::None);
+    EXPECT_EQ(serial.connection->serial.stopBits, vt::link::StopBits::Two);
+
+    auto can = parseGuiOptions({"valvetune", "--connect", "--can", "vcan0", "--node", "5"});
+    ASSERT_TRUE(can.connection.has_value()) << can.error.toStdString();
+    EXPECT_EQ(can.connection->kind, ConnectionKind::Can);
+    EXPECT_EQ(can.connection->canInterface, "vcan0");
+    EXPECT_EQ(can.connection->canNode, 5);
+
+    auto hart = parseGuiOptions({"valvetune", "--connect", "--hart", "/dev/ttyUSB1"});
+    ASSERT_TRUE(hart.connection.has_value()) << hart.error.toStdString();
+    EXPECT_EQ(hart.connection->kind, ConnectionKind::Hart);
+    EXPECT_EQ(hart.connection->serial.baudRate, 1200); // HART: 1200 8O1
+
+    EXPECT_FALSE(parseGuiOptions({"valvetune"}).connection.has_value());
+}
+
+TEST(GuiOptions, ConnectMistakesAreUsageErrorsWithTheCliWording)
+{
+    const struct
+    {
+        QStringList args;
+        const char *says;
+    } cases[] = {
+        {{"valvetune", "--connect"}, "--connect: no connection given"},
+        {{"valvetune", "--connect", "--tcp", "host:99999"}, "--connect: --tcp takes HOST:PORT"},
+        {{"valvetune", "--connect", "--port", "/dev/ttyS0", "--parity", "mark"},
+         "--parity takes none, even or odd"},
+        {{"valvetune", "--connect", "--can", "vcan0"}, "--can needs --node N"},
+        {{"valvetune", "--connect", "--tcp", "h:1", "--hart", "/dev/x"}, "give one connection"},
+        {{"valvetune", "--connect", "--tcp"}, "missing its value"},
+        {{"valvetune", "--tcp", "127.0.0.1:502"}, "go with --connect"},
+        {{"valvetune", "--simulate", "opat", "--connect", "--tcp", "h:1"},
+         "give one connection: --simulate or --connect"},
+    };
+    for (const auto &c : cases) {
+        const auto r = parseGuiOptions(c.args);
+        EXPECT_TRUE(r.exitNow) << c.args.join(' ').toStdString();
+        EXPECT_EQ(r.exitCode, 2) << c.args.join(' ').toStdString();
+        EXPECT_TRUE(r.error.contains(c.says)) << r.error.toStdString();
+        EXPECT_FALSE(r.connection.has_value());
+    }
+}
+
+TEST(GuiOptions, HelpNamesConnectAndItsOptions)
+{
+    QString help;
+    parseGuiOptions({"valvetune", "--help"}, &help);
+    EXPECT_TRUE(help.contains("--connect")) << help.toStdString();
+    EXPECT_TRUE(help.contains("--tcp HOST:PORT [--protocol modbus-tcp|node-image]"))
+        << help.toStdString();
+    EXPECT_TRUE(help.contains("--port PATH [--baud B]")) << help.toStdString();
+}

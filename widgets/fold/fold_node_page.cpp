@@ -116,7 +116,7 @@ void FoldNodePage::retranslate()
     setTitle(tr("Node type"));
     setSubTitle(tr("Which kind of node are you setting up?"));
     for (int i = 0; i < 3; ++i)
-        m_buttons[i]->setText(model::localText(model::foldNodeTitle(kNodes[i])));
+        m_buttons[i]->setText(model::foldNodeTitle(kNodes[i]));
     m_productLabel->setText(tr("Product number of the node:"));
     m_product->setPlaceholderText(tr("e.g. 5 005 123 45"));
     updateDetails();

@@ -76,14 +76,14 @@ void FoldPlcPage::refresh()
 {
     if (!fold())
         return;
-    dev::LocalText why;
+    model::PlcText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     const bool ok = sheet.has_value();
     for (QPushButton *b : {m_pdf, m_htmlButton, m_csv})
         b->setEnabled(ok);
     if (!ok) {
         m_html.clear();
-        m_view->setPlainText(model::localText(why));
+        m_view->setPlainText(model::plcText(why, model::textLanguage()));
         return;
     }
     m_html = model::foldSheetHtml(*sheet, model::textLanguage());
@@ -109,10 +109,10 @@ void FoldPlcPage::ask(const QString &title, const QString &filter, const QString
 
 QString FoldPlcPage::exportPdf(const QString &path)
 {
-    dev::LocalText why;
+    model::PlcText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     if (!sheet)
-        return model::localText(why);
+        return model::plcText(why, model::textLanguage());
     if (!model::writeFoldSheetPdf(*sheet, model::textLanguage(), path))
         return tr("Cannot write %1.").arg(path);
     return {};
@@ -120,19 +120,19 @@ QString FoldPlcPage::exportPdf(const QString &path)
 
 QString FoldPlcPage::exportHtml(const QString &path)
 {
-    dev::LocalText why;
+    model::PlcText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     if (!sheet)
-        return model::localText(why);
+        return model::plcText(why, model::textLanguage());
     return writeText(path, model::foldSheetHtml(*sheet, model::textLanguage()).toUtf8());
 }
 
 QString FoldPlcPage::exportCsv(const QString &path)
 {
-    dev::LocalText why;
+    model::PlcText why;
     const auto sheet = model::makeFoldSheet(fold()->plan(), &why);
     if (!sheet)
-        return model::localText(why);
+        return model::plcText(why, model::textLanguage());
     return writeText(path, model::foldSheetCsv(*sheet, model::textLanguage()).toUtf8());
 }
 

@@ -1,5 +1,6 @@
 // Printable PLC sheets: the HTML carries the key facts, the CSV has one row per
 // image byte, and the PDF export renders offscreen into a valid PDF with the reported page count.
+#include "app/i18n/translation.h"
 #include "model/fold/fold_export.h"
 
 #include <QFile>
@@ -36,6 +37,9 @@ TEST(FoldExport, HtmlHasTheKeyFactsEscaped)
     EXPECT_TRUE(html.contains("01 03 0F 00 03 E8 00 00")); // example telegram
     // The product number is missing: the finding is on the sheet.
     EXPECT_TRUE(html.contains("hcs0ea7.gsd"));
+    const auto german = vt::i18n::Translation::load("de"); // the sheet's words through tr()
+    ASSERT_TRUE(german);
+    german->install();
     const QString de = foldSheetHtml(s, Language::German);
     EXPECT_TRUE(de.contains("Ausgangsabbild"));
     EXPECT_TRUE(de.contains("lang=\"de\""));
@@ -89,7 +93,7 @@ TEST(FoldExport, PdfRendersOffscreen)
 
 TEST(FoldExport, ImpossiblePlanHasNoSheet)
 {
-    vt::dev::LocalText why;
+    PlcText why;
     EXPECT_FALSE(makeFoldSheet(defaultFoldPlan(FoldNode::DmaProfinet, 6), &why).has_value());
-    EXPECT_FALSE(why.en.empty());
+    EXPECT_FALSE(plcText(why, Language::English).isEmpty());
 }

@@ -4,9 +4,11 @@
 #include "hcs/cmd15.h"
 #include "model/fold/plc_config.h"
 
+#include <QString>
 #include <gtest/gtest.h>
 
 using namespace vt::model;
+using vt::dev::Language;
 namespace hcs = vt::dev::hcs;
 
 namespace {
@@ -16,7 +18,7 @@ PlcConfig config(FoldNode node, std::size_t modules, const std::string &product 
     FoldPlan plan = defaultFoldPlan(node, modules);
     plan.productNumber = product;
     auto c = buildPlcConfig(plan);
-    EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.error().en);
+    EXPECT_TRUE(c.ok()) << (c.ok() ? "" : plcText(c.error(), Language::English).toStdString());
     return c.ok() ? *c : PlcConfig{};
 }
 
@@ -73,11 +75,12 @@ TEST(FoldPlanLayout, OutputMapByteByByte)
         EXPECT_EQ(c.output[i].module, i < 3 ? -1 : static_cast<int>((i - 3) / 5)) << i;
     }
     // V15 mode 1 (DMA Profibus Anleitung §4.5.2): VALUE1 = A1.01, VALUE2 = A2.01.
-    EXPECT_NE(c.output[4].text.en.find("VALUE1 high byte: A1.01"), std::string::npos)
-        << c.output[4].text.en;
-    EXPECT_NE(c.output[7].text.en.find("VALUE2 low byte: A2.01"), std::string::npos)
-        << c.output[7].text.en;
-    EXPECT_FALSE(c.output[4].text.de.empty());
+    const auto english = [](const PlcText &t) { return plcText(t, Language::English); };
+    EXPECT_TRUE(english(c.output[4].text).contains("VALUE1 high byte: A1.01"))
+        << english(c.output[4].text).toStdString();
+    EXPECT_TRUE(english(c.output[7].text).contains("VALUE2 low byte: A2.01"))
+        << english(c.output[7].text).toStdString();
+    EXPECT_FALSE(plcText(c.output[4].text, Language::German).isEmpty());
     // OPAT numbers its blocks by SADR from 0 (OPAT manual §3.1: DAT0.1 at byte 3, DAT7.3L at 42).
     const PlcConfig o = config(FoldNode::Opat, 8);
     EXPECT_EQ(o.output[3].field, "DAT0.1");
@@ -125,11 +128,12 @@ TEST(FoldPlanLayout, ImpossiblePlansSayWhy)
 {
     auto six = buildPlcConfig(defaultFoldPlan(FoldNode::DmaProfibus, 6));
     ASSERT_FALSE(six.ok());
-    EXPECT_NE(six.error().en.find("E22 = 1 … 5"), std::string::npos) << six.error().en;
-    EXPECT_FALSE(six.error().de.empty());
+    const QString sixWhy = plcText(six.error(), Language::English);
+    EXPECT_TRUE(sixWhy.contains("E22 = 1 … 5")) << sixWhy.toStdString();
+    EXPECT_TRUE(sixWhy.startsWith("6 DMA modules")) << sixWhy.toStdString();
     auto nine = buildPlcConfig(defaultFoldPlan(FoldNode::Opat, 9));
     ASSERT_FALSE(nine.ok());
-    EXPECT_NE(nine.error().en.find("7 CAN slaves"), std::string::npos) << nine.error().en;
+    EXPECT_TRUE(plcText(nine.error(), Language::English).contains("7 CAN slaves"));
     EXPECT_FALSE(buildPlcConfig(defaultFoldPlan(FoldNode::DmaProfinet, 0)).ok());
 }
 
@@ -147,5 +151,5 @@ TEST(FoldPlanLayout, BitsFollowEachModulesOwnMode)
     EXPECT_TRUE(c->sections[1].controlBits[0].used);
     EXPECT_TRUE(c->sections[0].controlBits[7].used);
     // Per-module meanings differ: V32 mode 3/4 VALUE1 out = A1.01 branch 1, VALUE2 = A1.02.
-    EXPECT_NE(c->output[11].text.en.find("A1.02"), std::string::npos) << c->output[11].text.en;
+    EXPECT_TRUE(plcText(c->output[11].text, Language::English).contains("A1.02"));
 }

@@ -1,6 +1,6 @@
 #include "arg_parse.h"
 
-namespace vt::cli {
+namespace vt::cmdline {
 
 std::optional<QString> takeOption(QStringList &args, const QString &name, bool *missing)
 {
@@ -44,4 +44,4 @@ std::optional<long long> parseInteger(const QString &text, long long min, long l
     return v;
 }
 
-} // namespace vt::cli
+} // namespace vt::cmdline

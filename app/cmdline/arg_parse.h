@@ -1,5 +1,5 @@
-// Small helpers for valvetune-cli subcommands: "--name value" options and numbers in the
-// notations PLC programmers use (1000, -3000, 0x03E8).
+// Small helpers for the command lines of valvetune-cli and valvetune: "--name value" options and
+// numbers in the notations PLC programmers use (1000, -3000, 0x03E8).
 #pragma once
 
 #include <QStringList>
@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace vt::cli {
+namespace vt::cmdline {
 
 // Removes "--name value" from args and returns the value; "" when absent. Sets `missing` when the
 // option is the last word (no value).
@@ -17,4 +17,4 @@ bool takeFlag(QStringList &args, const QString &name);
 // Integer in decimal or 0x hex within [min, max]; nullopt otherwise.
 std::optional<long long> parseInteger(const QString &text, long long min, long long max);
 
-} // namespace vt::cli
+} // namespace vt::cmdline
