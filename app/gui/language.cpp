@@ -1,8 +1,10 @@
 #include "language.h"
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QTranslator>
+#include <QWidget>
 
 namespace vt::app {
 
@@ -46,9 +48,14 @@ bool Language::setLanguage(const QString &code)
         QCoreApplication::removeTranslator(m_qt.get());
     m_app = std::move(app);
     m_qt = haveQt ? std::move(qt) : nullptr;
-    QLocale::setDefault(
-        QLocale(code == QLatin1String("de") ? QLocale::German : QLocale::English,
-                code == QLatin1String("de") ? QLocale::Germany : QLocale::UnitedStates));
+    const QLocale locale(code == QLatin1String("de") ? QLocale::German : QLocale::English,
+                         code == QLatin1String("de") ? QLocale::Germany : QLocale::UnitedStates);
+    QLocale::setDefault(locale);
+    // A widget's locale() is a copy of the default taken when the widget was made, and
+    // setDefault() does not reach the widgets that exist: a spin box made in English went on
+    // reading the German "1,5" with English rules. Every window is told; children inherit it.
+    for (QWidget *window : QApplication::topLevelWidgets())
+        window->setLocale(locale);
     if (m_qt)
         QCoreApplication::installTranslator(m_qt.get());
     QCoreApplication::installTranslator(m_app.get()); // sends LanguageChange to every widget
