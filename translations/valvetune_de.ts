@@ -283,6 +283,14 @@
         <source>Linearisation</source>
         <translation>Linearisierung</translation>
     </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederholen: %1</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::Workspace</name>
@@ -654,6 +662,26 @@
     <message>
         <source>the link closed</source>
         <translation>die Verbindung wurde geschlossen</translation>
+    </message>
+    <message>
+        <source>simulated %1 ×%2</source>
+        <translation>simuliert %1 ×%2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>%1, %2, module %3</source>
+        <translation>%1, %2, Modul %3</translation>
+    </message>
+    <message>
+        <source>%1, %2, modules %3</source>
+        <translation>%1, %2, Module %3</translation>
+    </message>
+    <message>
+        <source>%1 [fault %2]</source>
+        <translation>%1 [Fehlerinjektion %2]</translation>
     </message>
 </context>
 <context>
@@ -1430,6 +1458,33 @@
     </message>
 </context>
 <context>
+    <name>vt::model::NumberText</name>
+    <message>
+        <source>“%1” is not a whole number as typed here: digits only, no thousands separators and no exponent, e.g. %2.</source>
+        <translation>„%1“ ist hier keine ganze Zahl: nur Ziffern, ohne Tausendertrennzeichen und ohne Exponent, z. B. %2.</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number as typed here: digits with “%2” as the decimal sign, no thousands separators and no exponent, e.g. %3.</source>
+        <translation>„%1“ ist hier keine Zahl: Ziffern mit „%2“ als Dezimalzeichen, ohne Tausendertrennzeichen und ohne Exponent, z. B. %3.</translation>
+    </message>
+    <message>
+        <source>No number entered; type one like %1.</source>
+        <translation>Keine Zahl eingegeben; geben Sie eine ein, z. B. %1.</translation>
+    </message>
+    <message>
+        <source>“%1” is not a whole number; this field takes whole numbers only, e.g. %2.</source>
+        <translation>„%1“ ist keine ganze Zahl; dieses Feld nimmt nur ganze Zahlen, z. B. %2.</translation>
+    </message>
+    <message>
+        <source>“%1” has more than %2 digits after the decimal sign; it is not rounded. Type at most %2, e.g. %3.</source>
+        <translation>Die Zahl „%1“ hat mehr als %2 Nachkommastellen; sie wird nicht gerundet. Geben Sie höchstens %2 ein, z. B. %3.</translation>
+    </message>
+    <message>
+        <source>%1 is outside the allowed range %2 … %3.</source>
+        <translation>%1 liegt außerhalb des zulässigen Bereichs %2 … %3.</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::ParamFileIo</name>
     <message>
         <source>Cannot write %1: %2</source>
@@ -1836,7 +1891,7 @@
     <name>vt::model::SetValueStep</name>
     <message>
         <source>E17 (set value activation mode) is %1: the analogue set value is added to the bus set value %2, so the controller would not see the step alone. The manuals: &quot;For switching off of the analogue set-value, set E17 = 2&quot; (DMA manual, ID 0x1F) and &quot;If only the set value by the PLC is used … E17 = 2 is required&quot; (OPAT manual §5.3). Set E17 to 2 (only the digital set values active) first.</source>
-        <translation>E17 (Sollwert-Aktivierungsmodus) ist %1: Der analoge Sollwert wird zum Bus-Sollwert %2 addiert, der Regler sähe den Sprung also nicht allein. Die Handbücher: &quot;For switching off of the analogue set-value, set E17 = 2&quot; (DMA-Handbuch, ID 0x1F) und &quot;If only the set value by the PLC is used … E17 = 2 is required&quot; (OPAT-Handbuch §5.3). Setzen Sie zuerst E17 auf 2 (nur die digitalen Sollwerte aktiv).</translation>
+        <translation>E17 (Sollwert-Aktivierungsmodus) ist %1: Der analoge Sollwert wird zum Bus-Sollwert %2 addiert, der Regler sähe den Sprung also nicht allein. Die DMA-Profibus-Anleitung (ID 0x1F): „Zum Abschalten des analogen Sollwert E17 = &quot;2&quot; setzen.“; das OPAT-Handbuch (§5.3) verlangt E17 = 2, wenn nur der Sollwert der SPS verwendet wird. Setzen Sie zuerst E17 auf 2 (nur die digitalen Sollwerte aktiv).</translation>
     </message>
     <message>
         <source>This module has no set value activation mode E17; a bus set value step is not offered for it.</source>
@@ -2413,6 +2468,10 @@ Senden?</translation>
         <source>Send</source>
         <translation>Senden</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::ConnectDialog</name>
@@ -2972,6 +3031,30 @@ Senden?</translation>
         <source>Module fold wizard</source>
         <translation>Knoten-Assistent</translation>
     </message>
+    <message>
+        <source>&lt; &amp;Back</source>
+        <translation>&lt; &amp;Zurück</translation>
+    </message>
+    <message>
+        <source>&amp;Next &gt;</source>
+        <translation>&amp;Weiter &gt;</translation>
+    </message>
+    <message>
+        <source>Commit</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>&amp;Finish</source>
+        <translation>&amp;Fertigstellen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::FrameDetail</name>
@@ -3453,10 +3536,6 @@ Senden?</translation>
 <context>
     <name>vt::ui::SerialLineFields</name>
     <message>
-        <source>The baud rate &quot;%1&quot; is not a positive whole number.</source>
-        <translation>Die Baudrate &quot;%1&quot; ist keine positive ganze Zahl.</translation>
-    </message>
-    <message>
         <source>&amp;Baud rate:</source>
         <translation>&amp;Baudrate:</translation>
     </message>
@@ -3483,6 +3562,10 @@ Senden?</translation>
     <message>
         <source>Odd (O)</source>
         <translation>Ungerade (O)</translation>
+    </message>
+    <message>
+        <source>Baud rate: %1</source>
+        <translation>Baudrate: %1</translation>
     </message>
 </context>
 <context>

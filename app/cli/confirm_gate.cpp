@@ -1,6 +1,5 @@
 #include "confirm_gate.h"
 
-
 #include <algorithm>
 #include <istream>
 #include <map>

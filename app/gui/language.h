@@ -1,7 +1,7 @@
 // Language: switches the UI language at run time. Installs the embedded ValveTune catalogue
-// (and Qt's own, when the system has it; app/i18n/translation.h) and sets the default QLocale, so
-// every widget gets a LanguageChange event and numbers follow ("1,000 V" in German). GUI thread
-// only.
+// (and Qt's own, when the system has it; app/i18n/translation.h), sets the default QLocale and the
+// locale of every open window, so every widget gets a LanguageChange event and numbers follow
+// ("1,000 V" in German). GUI thread only.
 #pragma once
 
 #include "app/i18n/translation.h"

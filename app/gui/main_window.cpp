@@ -58,6 +58,12 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
         m_english->setChecked(code == QLatin1String("en"));
         m_german->setChecked(code == QLatin1String("de"));
         applyDocumentLanguage();
+        updateUndoActions();
+        // A passing status message stays in the language it was said in: it goes.
+        statusBar()->clearMessage();
+        // Texts made from run-time facts, not from a tr() of their own widget.
+        if (m_workspace->connection() && !m_workspace->modules().empty())
+            m_nodeView->setNodeText(m_workspace->connection()->displayText());
     });
     m_english->setChecked(m_language.current() != QLatin1String("de"));
     m_german->setChecked(m_language.current() == QLatin1String("de"));
@@ -99,13 +105,17 @@ void MainWindow::createActions()
     m_export = make("actionExport");
     m_compareFile = make("actionCompareFile");
     m_quit = make("actionQuit", QKeySequence::Quit);
+    // Not QUndoStack::createUndoAction(): its "Undo %1" is fixed in the language the action was
+    // made in, and a run-time switch has to re-render it (updateUndoActions).
     QUndoStack *undo = m_workspace->document().undoStack();
-    m_undo = undo->createUndoAction(this);
-    m_undo->setObjectName(QStringLiteral("actionUndo"));
-    m_undo->setShortcut(QKeySequence::Undo);
-    m_redo = undo->createRedoAction(this);
-    m_redo->setObjectName(QStringLiteral("actionRedo"));
-    m_redo->setShortcut(QKeySequence::Redo);
+    m_undo = make("actionUndo", QKeySequence::Undo);
+    m_redo = make("actionRedo", QKeySequence::Redo);
+    connect(m_undo, &QAction::triggered, undo, &QUndoStack::undo);
+    connect(m_redo, &QAction::triggered, undo, &QUndoStack::redo);
+    for (auto changed : {&QUndoStack::canUndoChanged, &QUndoStack::canRedoChanged})
+        connect(undo, changed, this, &MainWindow::updateUndoActions);
+    for (auto changed : {&QUndoStack::undoTextChanged, &QUndoStack::redoTextChanged})
+        connect(undo, changed, this, &MainWindow::updateUndoActions);
     m_revertDevice = make("actionRevertDevice");
     m_revertFile = make("actionRevertFile");
     m_connect = make("actionConnect");
@@ -284,7 +294,7 @@ void MainWindow::connectWorkspace()
         if (m_wizard)
             m_wizard->setConnection(m_workspace->connection());
         m_linkStatus->setModules(m_workspace->modules());
-        m_nodeView->setNodeText(m_workspace->connection()->describe());
+        m_nodeView->setNodeText(m_workspace->connection()->displayText());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
         m_monitor->setConnection(m_workspace->connection(), m_workspace->modules());
         showStatus(tr("Connected: %n module(s).", nullptr,
@@ -388,8 +398,7 @@ void MainWindow::retranslate()
     m_export->setText(tr("&Export CSV…"));
     m_compareFile->setText(tr("Compare with &File…"));
     m_quit->setText(tr("&Quit"));
-    m_undo->setText(tr("&Undo"));
-    m_redo->setText(tr("&Redo"));
+    updateUndoActions();
     m_revertDevice->setText(tr("Revert to &Device"));
     m_revertFile->setText(tr("Revert to &File"));
     m_connect->setText(tr("&Connect…"));
@@ -410,6 +419,17 @@ void MainWindow::retranslate()
     m_curveDock->setWindowTitle(tr("Linearisation"));
     updateTitle();
     rebuildRecentMenu();
+}
+
+void MainWindow::updateUndoActions()
+{
+    const QUndoStack *undo = m_workspace->document().undoStack();
+    m_undo->setEnabled(undo->canUndo());
+    m_redo->setEnabled(undo->canRedo());
+    m_undo->setText(undo->undoText().isEmpty() ? tr("&Undo")
+                                               : tr("&Undo %1").arg(undo->undoText()));
+    m_redo->setText(undo->redoText().isEmpty() ? tr("&Redo")
+                                               : tr("&Redo %1").arg(undo->redoText()));
 }
 
 void MainWindow::rebuildRecentMenu()

@@ -79,6 +79,7 @@ private:
     void createDocks();
     void connectWorkspace();
     void retranslate();
+    void updateUndoActions();
     void rebuildRecentMenu();
     void chooseLanguage(const QString &code);
     void applyDocumentLanguage();

@@ -60,7 +60,7 @@ void Workspace::connectTo(const model::ConnectionSpec &spec)
         teardown();
         emit disconnected(reason);
     });
-    emit connecting(m_connection->describe());
+    emit connecting(m_connection->displayText());
     m_connection->open();
 }
 
@@ -115,7 +115,7 @@ void Workspace::identifyNext(std::vector<int> addresses, std::vector<model::Modu
 void Workspace::finishIdentify(std::vector<model::ModuleInfo> found, bool scanning)
 {
     if (!scanning && found.empty()) {
-        const QString reason = tr("No module answered on %1.").arg(m_connection->describe());
+        const QString reason = tr("No module answered on %1.").arg(m_connection->displayText());
         teardown();
         emit connectFailed(reason);
         return;

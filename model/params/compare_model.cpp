@@ -170,9 +170,9 @@ int CompareModel::applyTaken()
             changes.push_back({r.module, r.meta, r.theirs});
     if (changes.empty())
         return 0;
-    m_document.editMany(changes, m_other == Other::Device
-                                     ? tr("Take values from the device")
-                                     : tr("Take values from %1").arg(m_otherName));
+    m_document.editMany(changes, [device = m_other == Other::Device, name = m_otherName] {
+        return device ? tr("Take values from the device") : tr("Take values from %1").arg(name);
+    });
     refresh();
     return static_cast<int>(changes.size());
 }

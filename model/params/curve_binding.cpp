@@ -27,15 +27,15 @@ CurveBinding::CurveBinding(ParameterDocument &document, LCurveTableModel &curves
                     return;
                 m_curves.setRowValue(row, displayOf(*row));
             });
-    connect(&m_curves, &LCurveTableModel::rowsEdited, this,
-            [this](const QList<LCurveRowEdit> &edits) {
-                std::vector<std::pair<const dev::ParamMeta *, double>> values;
-                for (const LCurveRowEdit &e : edits) {
-                    const double factor = e.row->scale.factor != 0 ? e.row->scale.factor : 1.0;
-                    values.emplace_back(e.row, std::round(e.display / factor));
-                }
-                m_document.editNumbers(m_module, values, tr("Edit linearisation curve"));
-            });
+    connect(
+        &m_curves, &LCurveTableModel::rowsEdited, this, [this](const QList<LCurveRowEdit> &edits) {
+            std::vector<std::pair<const dev::ParamMeta *, double>> values;
+            for (const LCurveRowEdit &e : edits) {
+                const double factor = e.row->scale.factor != 0 ? e.row->scale.factor : 1.0;
+                values.emplace_back(e.row, std::round(e.display / factor));
+            }
+            m_document.editNumbers(m_module, values, [] { return tr("Edit linearisation curve"); });
+        });
 }
 
 std::optional<double> CurveBinding::displayOf(const dev::ParamMeta &row) const

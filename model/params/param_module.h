@@ -21,11 +21,12 @@ struct ParamModule
 {
     int address = 0;
     const dev::Dictionary *dictionary = nullptr;
-    std::string version; // "51.02"; chooses the applicable rows
-    std::string mode;    // HCS E00, "3"
-    QString identity;    // for people: "dma-pn-v51 51.02, mode 3"
-    QString label;       // the user's name for the module, from the file
-    bool online = false; // identified on the connected node
+    std::string version;      // "51.02"; chooses the applicable rows
+    std::string mode;         // HCS E00, "3"
+    QString identity;         // for people: "dma-pn-v51 51.02, mode 3"
+    bool identityOwn = false; // identity is ours (a tr() sentence), not the device's own words
+    QString label;            // the user's name for the module, from the file
+    bool online = false;      // identified on the connected node
     int versRaw = -1;
     std::map<const dev::ParamMeta *, dev::RawValue> device, file, working;
     // The module record as loaded: rows and keys this dictionary does not apply are written back

@@ -54,6 +54,18 @@ void ParameterDocument::setLanguage(dev::Language language)
     if (language == m_language)
         return;
     m_language = language;
+    // The undo steps say what they did in the new language. QUndoStack hands out its steps as
+    // const only; their text is all that changes here.
+    for (int i = 0; i < m_undo.count(); ++i)
+        if (auto *step = dynamic_cast<const SetValuesCommand *>(m_undo.command(i)))
+            const_cast<SetValuesCommand *>(step)->retranslate();
+    for (std::size_t i = 0; i < m_modules.size(); ++i) {
+        ParamModule &m = m_modules[i];
+        if (m.identityOwn && m.dictionary) {
+            m.identity = moduleIdentity(*m.dictionary, m.version, m.mode);
+            emit moduleChanged(static_cast<int>(i));
+        }
+    }
     emit languageChanged();
 }
 
@@ -108,6 +120,7 @@ void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)
         it->identity = info.identityText.isEmpty()
                            ? moduleIdentity(*info.dictionary, it->version, it->mode)
                            : info.identityText;
+        it->identityOwn = info.identityText.isEmpty();
     }
     resetModules(std::move(modules));
 }
@@ -140,6 +153,7 @@ void ParameterDocument::loadFile(const dev::files::ParamFile &file,
         m.mode = record.mode;
         m.label = QString::fromStdString(record.label);
         m.identity = moduleIdentity(*dict, record.version, record.mode);
+        m.identityOwn = true;
         m.record = record;
         m.mapReport = dev::files::mapModule(record, *dict);
         for (const dev::files::RowMapping &r : m.mapReport->rows) {
@@ -250,14 +264,16 @@ std::optional<QString> ParameterDocument::edit(int module, const dev::ParamMeta 
     const auto before = this->value(module, row);
     if (sameValue(before, value))
         return std::nullopt;
-    const QString text = tr("Set %1 to %2")
-                             .arg(QString::fromStdString(row->name),
-                                  QString::fromStdString(valueText(*row, value, m_language)));
+    const UndoText text = [this, row, value] {
+        return tr("Set %1 to %2")
+            .arg(QString::fromStdString(row->name),
+                 QString::fromStdString(valueText(*row, value, m_language)));
+    };
     m_undo.push(new SetValuesCommand(*this, {{module, row, before, value}}, text));
     return std::nullopt;
 }
 
-void ParameterDocument::editMany(const std::vector<Change> &changes, const QString &undoText)
+void ParameterDocument::editMany(const std::vector<Change> &changes, UndoText undoText)
 {
     std::vector<SetValuesCommand::Row> rows;
     for (const Change &c : changes) {
@@ -266,17 +282,17 @@ void ParameterDocument::editMany(const std::vector<Change> &changes, const QStri
             rows.push_back({c.module, c.row, before, c.value});
     }
     if (!rows.empty())
-        m_undo.push(new SetValuesCommand(*this, std::move(rows), undoText));
+        m_undo.push(new SetValuesCommand(*this, std::move(rows), std::move(undoText)));
 }
 
 void ParameterDocument::editNumbers(
     int module, const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
-    const QString &undoText)
+    UndoText undoText)
 {
     std::vector<Change> changes;
     for (const auto &[row, number] : values)
         changes.push_back({module, row, dev::RawValue{number}});
-    editMany(changes, undoText);
+    editMany(changes, std::move(undoText));
 }
 
 void ParameterDocument::setWorking(int module, const dev::ParamMeta *row,
@@ -384,7 +400,7 @@ void ParameterDocument::revertToDevice()
         for (const auto &[row, value] : m_modules[static_cast<std::size_t>(i)].device)
             if (row->writable())
                 changes.push_back({i, row, value});
-    editMany(changes, tr("Revert to device"));
+    editMany(changes, [] { return tr("Revert to device"); });
 }
 
 void ParameterDocument::revertToFile()
@@ -394,7 +410,7 @@ void ParameterDocument::revertToFile()
         for (const auto &[row, value] : m_modules[static_cast<std::size_t>(i)].file)
             if (row->writable())
                 changes.push_back({i, row, value});
-    editMany(changes, tr("Revert to file"));
+    editMany(changes, [] { return tr("Revert to file"); });
 }
 
 } // namespace vt::model

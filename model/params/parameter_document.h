@@ -7,6 +7,7 @@
 #include "core/local_text.h"
 #include "model/params/new_file.h"
 #include "model/params/param_module.h"
+#include "model/params/value_commands.h"
 #include "model/session/device_access.h"
 #include "model/session/write_record.h"
 
@@ -78,11 +79,11 @@ public:
         const dev::ParamMeta *row = nullptr;
         std::optional<dev::RawValue> value;
     };
-    void editMany(const std::vector<Change> &changes, const QString &undoText);
+    void editMany(const std::vector<Change> &changes, UndoText undoText);
     // Several number rows of one module as one undo step (a drag on the L curve).
     void editNumbers(int module,
                      const std::vector<std::pair<const dev::ParamMeta *, double>> &values,
-                     const QString &undoText);
+                     UndoText undoText);
     // Used by the undo commands: sets the working value without recording.
     void setWorking(int module, const dev::ParamMeta *row,
                     const std::optional<dev::RawValue> &value);

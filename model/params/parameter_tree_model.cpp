@@ -2,6 +2,7 @@
 
 #include "block_titles.h"
 #include "dict/cooking.h"
+#include "model/number_text.h"
 
 #include <QBrush>
 #include <QColor>
@@ -463,13 +464,13 @@ bool ParameterTreeModel::setData(const QModelIndex &index, const QVariant &value
         if (row.isString()) {
             raw = text;
         } else {
-            auto parsed = dev::parseValue(row, text, lang);
-            if (!parsed) {
-                m_lastError = naming(row, qs(parsed.error().message.in(lang)));
+            const ParamParse parsed = parseParamValue(row, value.toString(), lang);
+            if (!parsed.raw) {
+                m_lastError = naming(row, parsed.refusal);
                 emit editRefused(index, m_lastError);
                 return false;
             }
-            raw = *parsed;
+            raw = *parsed.raw;
         }
     } else {
         return false;

@@ -5,9 +5,16 @@
 namespace vt::model {
 
 SetValuesCommand::SetValuesCommand(ParameterDocument &document, std::vector<Row> rows,
-                                   const QString &text)
-    : QUndoCommand(text), m_document(document), m_rows(std::move(rows))
+                                   UndoText text)
+    : QUndoCommand(text ? text() : QString()), m_document(document), m_rows(std::move(rows)),
+      m_text(std::move(text))
 {
+}
+
+void SetValuesCommand::retranslate()
+{
+    if (m_text)
+        setText(m_text());
 }
 
 void SetValuesCommand::undo()

@@ -6,13 +6,18 @@
 #include "dict/param_meta.h"
 #include "dict/raw_value.h"
 
+#include <QString>
 #include <QUndoCommand>
+#include <functional>
 #include <optional>
 #include <vector>
 
 namespace vt::model {
 
 class ParameterDocument;
+
+// Renders an undo step's text in the UI language of the moment ("Set C1.07 to 1,000 V").
+using UndoText = std::function<QString()>;
 
 class SetValuesCommand : public QUndoCommand
 {
@@ -23,7 +28,10 @@ public:
         const dev::ParamMeta *row = nullptr;
         std::optional<dev::RawValue> before, after;
     };
-    SetValuesCommand(ParameterDocument &document, std::vector<Row> rows, const QString &text);
+    SetValuesCommand(ParameterDocument &document, std::vector<Row> rows, UndoText text);
+
+    // The text again, in the language switched to since the step was made.
+    void retranslate();
 
     void undo() override;
     void redo() override;
@@ -31,6 +39,7 @@ public:
 private:
     ParameterDocument &m_document;
     std::vector<Row> m_rows;
+    UndoText m_text;
 };
 
 } // namespace vt::model

@@ -10,6 +10,7 @@
 #include "transports/sim_link.h"
 #include "transports/tcp_link.h"
 
+#include <QLocale>
 #include <QStringList>
 
 namespace vt::model {
@@ -297,6 +298,27 @@ QString Connection::describe() const
                  addresses.join(QStringLiteral(", ")));
     if (m_fault)
         text += QStringLiteral(" [fault %1]").arg(m_spec.fault->toString());
+    return text;
+}
+
+QString Connection::displayText() const
+{
+    QStringList addresses;
+    const QLocale locale;
+    for (int a : moduleAddresses())
+        addresses << locale.toString(a);
+    const QString where =
+        m_sim ? tr("simulated %1 ×%2")
+                    .arg(QString::fromStdString(m_spec.sim.family))
+                    .arg(locale.toString(static_cast<qulonglong>(m_sim->moduleCount())))
+              : (m_fault ? m_fault->inner() : *m_link).description();
+    QString text = addresses.isEmpty() ? tr("%1, %2").arg(where, protocolKey())
+                   : addresses.size() == 1
+                       ? tr("%1, %2, module %3").arg(where, protocolKey(), addresses.front())
+                       : tr("%1, %2, modules %3")
+                             .arg(where, protocolKey(), addresses.join(QStringLiteral(", ")));
+    if (m_fault)
+        text = tr("%1 [fault %2]").arg(text, m_spec.fault->toString());
     return text;
 }
 

@@ -100,6 +100,10 @@ public:
     // modbus-tcp, modules 1, 2, 3", "serial /dev/ttyUSB0 19200 8E1, modbus-rtu, module 1 [fault
     // cut=5,seed=1]".
     QString describe() const;
+    // The same facts for the UI, in its language: "simulated dma-pn-v51 ×3, modbus-tcp, modules
+    // 1, 2, 3" / "simuliert dma-pn-v51 ×3, modbus-tcp, Module 1, 2, 3" (link descriptions, family
+    // and protocol keys are names and stay as they are).
+    QString displayText() const;
 
 signals:
     void opened();

@@ -1,6 +1,7 @@
 #include "can_page.h"
 
 #include "widgets/connect/hcs_product_box.h"
+#include "widgets/number_box.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -26,7 +27,7 @@ CanPage::CanPage(QWidget *parent) : ConnectPage(parent)
     m_interface->setObjectName(QStringLiteral("canInterface"));
     m_interfaceLabel = new QLabel(this);
     form->addRow(m_interfaceLabel, m_interface);
-    m_node = new QSpinBox(this);
+    m_node = new WholeNumberBox(this);
     m_node->setObjectName(QStringLiteral("canNode"));
     // Wider than valid so that problem() can say why 0 or 128 does not work.
     m_node->setRange(0, 255);

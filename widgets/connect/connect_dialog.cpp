@@ -6,6 +6,7 @@
 #include "widgets/connect/serial_page.h"
 #include "widgets/connect/sim_page.h"
 #include "widgets/connect/tcp_page.h"
+#include "widgets/number_box.h"
 
 #include <QDialogButtonBox>
 #include <QEvent>
@@ -28,6 +29,9 @@ ConnectDialog::ConnectDialog(const dev::DictionarySet &dictionaries, QSettings *
     for (ConnectPage *p : m_pages) {
         m_tabs->addTab(p, p->title());
         connect(p, &ConnectPage::changed, this, &ConnectDialog::updateState);
+        // A refused entry changes no value, yet it must block OK and say why.
+        for (WholeNumberBox *box : p->findChildren<WholeNumberBox *>())
+            connect(box, &QSpinBox::textChanged, this, &ConnectDialog::updateState);
     }
     layout->addWidget(m_tabs);
     m_problem = new QLabel(this);
@@ -94,6 +98,9 @@ void ConnectDialog::setKind(model::ConnectionKind kind)
 
 QString ConnectDialog::problem() const
 {
+    for (const WholeNumberBox *box : currentPage()->findChildren<WholeNumberBox *>())
+        if (box->isVisibleTo(currentPage()) && !box->number())
+            return box->refusal();
     return currentPage()->problem();
 }
 

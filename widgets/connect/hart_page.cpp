@@ -1,6 +1,7 @@
 #include "hart_page.h"
 
 #include "widgets/connect/serial_port_box.h"
+#include "widgets/number_box.h"
 
 #include <QFormLayout>
 #include <QLabel>
@@ -27,7 +28,7 @@ HartPage::HartPage(QWidget *parent) : ConnectPage(parent)
     m_line->setObjectName(QStringLiteral("hartLine"));
     m_lineLabel = new QLabel(this);
     form->addRow(m_lineLabel, m_line);
-    m_poll = new QSpinBox(this);
+    m_poll = new WholeNumberBox(this);
     m_poll->setObjectName(QStringLiteral("hartPollAddress"));
     m_poll->setRange(0, kMaxPollAddress);
     m_pollLabel = new QLabel(this);

@@ -141,11 +141,11 @@ void LinkStatusWidget::refresh()
         m_counters->hide();
         return;
     }
-    // describe() is for logs and stays untranslated like the link descriptions; the state is ours.
+    // describe() is for logs and stays untranslated; the window shows displayText().
     QString state = link::linkStateText(m_connection->link().state());
     if (!m_reason.isEmpty())
         state = tr("%1: %2").arg(state, m_reason);
-    m_link->setText(tr("%1 — %2").arg(m_connection->describe(), state));
+    m_link->setText(tr("%1 — %2").arg(m_connection->displayText(), state));
     m_link->setToolTip(m_link->text());
 
     QStringList modules;

@@ -1,5 +1,7 @@
 #include "serial_line_fields.h"
 
+#include "model/text_language.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -60,14 +62,18 @@ SerialLineFields::SerialLineFields(const QString &name, QFormLayout *form, QWidg
     retranslate();
 }
 
+model::NumberParse SerialLineFields::parsedBaudRate() const
+{
+    model::NumberRules rules;
+    rules.minimum = 1;
+    rules.maximum = 4000000;
+    return model::parseNumber(m_baud->currentText(), model::textLanguage(), rules);
+}
+
 int SerialLineFields::baudRate() const
 {
-    const QString text = m_baud->currentText().trimmed();
-    bool ok = false;
-    int rate = QLocale().toInt(text, &ok);
-    if (!ok)
-        rate = QLocale::c().toInt(text, &ok);
-    return ok && rate > 0 ? rate : 0;
+    const model::NumberParse rate = parsedBaudRate();
+    return rate.ok() ? static_cast<int>(*rate.value) : 0;
 }
 
 link::SerialSettings SerialLineFields::settings(const QString &portName) const
@@ -96,9 +102,8 @@ void SerialLineFields::setSettings(const link::SerialSettings &settings)
 
 QString SerialLineFields::problem() const
 {
-    if (baudRate() == 0)
-        return tr("The baud rate \"%1\" is not a positive whole number.")
-            .arg(m_baud->currentText());
+    if (const model::NumberParse rate = parsedBaudRate(); !rate.ok())
+        return tr("Baud rate: %1").arg(rate.refusal);
     return {};
 }
 

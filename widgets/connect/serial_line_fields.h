@@ -2,6 +2,7 @@
 // one), data bits, parity and stop bits — as rows for a QFormLayout.
 #pragma once
 
+#include "model/number_text.h"
 #include "transports/serial_settings.h"
 
 #include <QObject>
@@ -34,6 +35,7 @@ signals:
 
 private:
     int baudRate() const;
+    model::NumberParse parsedBaudRate() const;
 
     QComboBox *m_baud = nullptr;
     QComboBox *m_dataBits = nullptr;

@@ -3,6 +3,7 @@
 #include "widgets/connect/hcs_product_box.h"
 #include "widgets/connect/serial_line_fields.h"
 #include "widgets/connect/serial_port_box.h"
+#include "widgets/number_box.h"
 
 #include <QFormLayout>
 #include <QLabel>
@@ -25,7 +26,7 @@ SerialPage::SerialPage(QWidget *parent) : ConnectPage(parent)
     m_portLabel = new QLabel(this);
     form->addRow(m_portLabel, m_port);
     m_line = new SerialLineFields(QStringLiteral("serial"), form, this);
-    m_address = new QSpinBox(this);
+    m_address = new WholeNumberBox(this);
     m_address->setObjectName(QStringLiteral("serialAddress"));
     // 0 is typeable so that problem() can say why it does not work.
     m_address->setRange(0, kMaxUnit);

@@ -2,6 +2,7 @@
 
 #include "dict/dictionary.h"
 #include "widgets/connect/language_text.h"
+#include "widgets/number_box.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -53,7 +54,7 @@ SimPage::SimPage(const dev::DictionarySet &dictionaries, QWidget *parent)
     m_mode->setObjectName(QStringLiteral("simMode"));
     m_modeLabel = new QLabel(this);
     form->addRow(m_modeLabel, m_mode);
-    m_modules = new QSpinBox(this);
+    m_modules = new WholeNumberBox(this);
     m_modules->setObjectName(QStringLiteral("simModules"));
     m_modules->setRange(1, kMaxModules);
     m_modulesLabel = new QLabel(this);

@@ -1,6 +1,7 @@
 #include "tcp_page.h"
 
 #include "widgets/connect/hcs_product_box.h"
+#include "widgets/number_box.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -26,7 +27,7 @@ TcpPage::TcpPage(QWidget *parent) : ConnectPage(parent)
     m_host->setObjectName(QStringLiteral("tcpHost"));
     m_hostLabel = new QLabel(this);
     form->addRow(m_hostLabel, m_host);
-    m_port = new QSpinBox(this);
+    m_port = new WholeNumberBox(this);
     m_port->setObjectName(QStringLiteral("tcpPort"));
     m_port->setRange(0, 65535);
     m_port->setValue(kModbusTcpPort);
@@ -38,7 +39,7 @@ TcpPage::TcpPage(QWidget *parent) : ConnectPage(parent)
     m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::NodeImage));
     m_protocolLabel = new QLabel(this);
     form->addRow(m_protocolLabel, m_protocol);
-    m_address = new QSpinBox(this);
+    m_address = new WholeNumberBox(this);
     m_address->setObjectName(QStringLiteral("tcpAddress"));
     m_address->setRange(0, kMaxUnit);
     m_address->setValue(1);

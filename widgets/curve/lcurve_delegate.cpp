@@ -2,8 +2,7 @@
 
 #include "core/vt_assert.h"
 #include "model/curve/lcurve_table_model.h"
-
-#include <QDoubleSpinBox>
+#include "widgets/number_box.h"
 
 namespace vt::ui {
 
@@ -12,7 +11,7 @@ using Model = model::LCurveTableModel;
 QWidget *LCurveDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem &,
                                       const QModelIndex &index) const
 {
-    auto *box = new QDoubleSpinBox(parent);
+    auto *box = new NumberBox(parent);
     box->setFrame(false);
     box->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     box->setDecimals(index.data(Model::DecimalsRole).toInt());
@@ -20,23 +19,27 @@ QWidget *LCurveDelegate::createEditor(QWidget *parent, const QStyleOptionViewIte
     // refuses it and says why (editRefused), instead of the spin box silently clamping it.
     box->setRange(index.data(Model::MinRole).toDouble(), index.data(Model::MaxRole).toDouble());
     box->setSingleStep(index.data(Model::StepRole).toDouble());
-    box->setLocale(QLocale());
     return box;
 }
 
 void LCurveDelegate::setEditorData(QWidget *editor, const QModelIndex &index) const
 {
-    if (auto *box = qobject_cast<QDoubleSpinBox *>(editor))
+    if (auto *box = qobject_cast<NumberBox *>(editor))
         box->setValue(index.data(Qt::EditRole).toDouble());
 }
 
 void LCurveDelegate::setModelData(QWidget *editor, QAbstractItemModel *model,
                                   const QModelIndex &index) const
 {
-    auto *box = qobject_cast<QDoubleSpinBox *>(editor);
+    auto *box = qobject_cast<NumberBox *>(editor);
     VT_ASSERT(box, return ); // createEditor() made it
-    box->interpretText();
-    model->setData(index, box->value(), Qt::EditRole);
+    // Not exactly a number in the UI language: nothing reaches the model, the reason is said.
+    const std::optional<double> typed = box->number();
+    if (!typed) {
+        emit const_cast<LCurveDelegate *>(this)->refused(box->refusal());
+        return;
+    }
+    model->setData(index, *typed, Qt::EditRole);
 }
 
 void LCurveDelegate::initStyleOption(QStyleOptionViewItem *option, const QModelIndex &index) const

@@ -17,7 +17,10 @@ LCurveEditor::LCurveEditor(QWidget *parent) : QWidget(parent)
 {
     m_plot = new LCurvePlot(this);
     m_table = new QTableView(this);
-    m_table->setItemDelegate(new LCurveDelegate(m_table));
+    auto *delegate = new LCurveDelegate(m_table);
+    m_table->setItemDelegate(delegate);
+    connect(delegate, &LCurveDelegate::refused, this,
+            [this](const QString &reason) { m_message->setText(reason); });
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);

@@ -2,6 +2,7 @@
 
 #include "dict/dictionary.h"
 #include "widgets/connect/language_text.h"
+#include "widgets/number_box.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -43,7 +44,7 @@ NewFileDialog::NewFileDialog(const dev::DictionarySet &dictionaries, QWidget *pa
     m_mode->setObjectName(QStringLiteral("mode"));
     m_modeLabel = new QLabel(this);
     form->addRow(m_modeLabel, m_mode);
-    m_modules = new QSpinBox(this);
+    m_modules = new WholeNumberBox(this);
     m_modules->setObjectName(QStringLiteral("modules"));
     m_modulesLabel = new QLabel(this);
     form->addRow(m_modulesLabel, m_modules);

@@ -2,6 +2,7 @@
 
 #include "model/fold/module_guide.h"
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/number_box.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -44,7 +45,7 @@ FoldAddressPage::FoldAddressPage(QWidget *parent) : FoldPage(parent)
     auto *e24Row = new QHBoxLayout;
     m_setE24 = new QCheckBox(this);
     m_setE24->setObjectName(QStringLiteral("setE24"));
-    m_e24 = new QSpinBox(this);
+    m_e24 = new WholeNumberBox(this);
     m_e24->setObjectName(QStringLiteral("e24"));
     m_e24->setRange(0, kE24Max);
     e24Row->addWidget(m_setE24);
@@ -101,7 +102,7 @@ void FoldAddressPage::fillTable()
         auto *item = new QTableWidgetItem(tr("Module %1").arg(row + 1));
         item->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, ColModule, item);
-        auto *spin = new QSpinBox(m_table);
+        auto *spin = new WholeNumberBox(m_table);
         // DMA: E22 0..32 (0 = no bus function); OPAT: master 0, slaves 1..7 (OPAT manual §1.4).
         // Out-of-range values stay enterable so the check page can explain them.
         spin->setRange(0, opat ? 7 : 32);

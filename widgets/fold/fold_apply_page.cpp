@@ -215,7 +215,7 @@ void FoldApplyPage::updateState()
     }
     m_intro->setText(tr("Writes each module's address and options (range-checked, read back), then "
                         "identifies every planned address. Connection: %1")
-                         .arg(wizard->connection()->describe()));
+                         .arg(wizard->connection()->displayText()));
     if (pointToPoint()) {
         m_guide->setText(model::cableGuide(wizard->plan(), static_cast<std::size_t>(m_guided)));
         m_apply->setText(tr("Apply to module %1").arg(m_guided + 1));

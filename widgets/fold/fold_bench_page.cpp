@@ -5,6 +5,7 @@
 #include "model/session/connection.h"
 #include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/number_box.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -70,7 +71,7 @@ FoldBenchPage::FoldBenchPage(QWidget *parent) : FoldPage(parent)
     m_stop = new QPushButton(this);
     m_stop->setObjectName(QStringLiteral("stopBench"));
     m_intervalLabel = new QLabel(this);
-    m_interval = new QSpinBox(this);
+    m_interval = new WholeNumberBox(this);
     m_interval->setRange(5, 5000);
     m_interval->setValue(50);
     m_interval->setSuffix(QStringLiteral(" ms"));
@@ -128,7 +129,7 @@ void FoldBenchPage::buildTable()
         control->setPrefix(QStringLiteral("0x"));
         m_table->setCellWidget(row, ColControl, control);
         for (int c : {ColValue1, ColValue2}) {
-            auto *value = new QSpinBox(m_table);
+            auto *value = new WholeNumberBox(m_table);
             value->setRange(-32768, 32767);
             m_table->setCellWidget(row, c, value);
             connect(value, &QSpinBox::valueChanged, this, &FoldBenchPage::pushSetpoints);

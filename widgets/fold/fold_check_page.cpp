@@ -1,6 +1,7 @@
 #include "widgets/fold/fold_check_page.h"
 
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/number_box.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -18,7 +19,7 @@ FoldCheckPage::FoldCheckPage(QWidget *parent) : FoldPage(parent)
     auto *snumRow = new QHBoxLayout;
     m_hasSnum = new QCheckBox(this);
     m_hasSnum->setObjectName(QStringLiteral("hasSnum"));
-    m_snum = new QSpinBox(this);
+    m_snum = new WholeNumberBox(this);
     m_snum->setObjectName(QStringLiteral("snum"));
     m_snum->setRange(0, 255);
     snumRow->addWidget(m_hasSnum);

@@ -5,6 +5,7 @@
 #include "model/session/connection.h"
 #include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/number_box.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -30,7 +31,7 @@ FoldModulesPage::FoldModulesPage(QWidget *parent) : FoldPage(parent)
     auto *layout = new QVBoxLayout(this);
     auto *top = new QHBoxLayout;
     m_countLabel = new QLabel(this);
-    m_count = new QSpinBox(this);
+    m_count = new WholeNumberBox(this);
     m_count->setObjectName(QStringLiteral("moduleCount"));
     m_scan = new QPushButton(this);
     m_scan->setObjectName(QStringLiteral("scan"));

@@ -4,6 +4,7 @@
 #include "dict/dictionary.h"
 #include "model/text_language.h"
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/number_box.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -105,7 +106,7 @@ void FoldOptionsPage::rebuild()
                 combo->setEnabled(set->isChecked());
                 editor = combo;
             } else {
-                auto *spin = new QSpinBox(box);
+                auto *spin = new WholeNumberBox(box);
                 const dev::Limits limits = dev::rowLimits(*row);
                 spin->setRange(static_cast<int>(std::ceil(limits.min)),
                                static_cast<int>(std::floor(limits.max)));

@@ -96,6 +96,13 @@ void FoldWizard::changeEvent(QEvent *event)
 void FoldWizard::retranslate()
 {
     setWindowTitle(tr("Module fold wizard"));
+    // QWizard words its buttons once, when it is made; a run-time switch needs them again.
+    setButtonText(QWizard::BackButton, tr("< &Back"));
+    setButtonText(QWizard::NextButton, tr("&Next >"));
+    setButtonText(QWizard::CommitButton, tr("Commit"));
+    setButtonText(QWizard::FinishButton, tr("&Finish"));
+    setButtonText(QWizard::CancelButton, tr("Cancel"));
+    setButtonText(QWizard::HelpButton, tr("&Help"));
 }
 
 } // namespace vt::ui

@@ -4,6 +4,7 @@
 #include "core/hex.h"
 #include "frame_detail.h"
 #include "inspect/logged_frame.h"
+#include "model/number_text.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"
 #include "transports/byte_span.h"
@@ -209,9 +210,18 @@ std::optional<long long> ComposePanel::number(const QString &name, QString *prob
         if (negative)
             v = -v;
     } else {
-        v = QLocale().toLongLong(text, &ok);
-        if (!ok)
-            v = text.toLongLong(&ok, 10);
+        // Decimal fields are whole numbers in the UI language's notation, refused otherwise.
+        model::NumberRules rules;
+        rules.minimum = -9.0e15; // exact in a double; far beyond any telegram field
+        rules.maximum = 9.0e15;
+        const model::NumberParse parsed = model::parseNumber(text, model::textLanguage(), rules);
+        if (!parsed.ok()) {
+            if (problem && problem->isEmpty())
+                *problem = tr("%1: %2").arg(m_labels.at(name)->text().remove(QLatin1Char(':')),
+                                            parsed.refusal);
+            return std::nullopt;
+        }
+        return static_cast<long long>(*parsed.value);
     }
     if (!ok && problem && problem->isEmpty())
         *problem = tr("%1: not a number").arg(m_labels.at(name)->text().remove(QLatin1Char(':')));
@@ -416,18 +426,25 @@ bool ComposePanel::send()
                                                     vt::dev::inspect::wireBytes(frame, image));
     m_busy = true;
     updateSend();
-    m_result->setText(tr("Sent; waiting for the answer…"));
+    m_resultText = [] { return tr("Sent; waiting for the answer…"); };
+    m_result->setText(m_resultText());
     QPointer<ComposePanel> self(this);
     m_connection->session().submit(
         std::move(t), vt::model::Priority::User, [self](const vt::model::Outcome &o) {
             if (!self)
                 return;
             self->m_busy = false;
-            QString text =
-                o.status == vt::model::OutcomeStatus::Ok
-                    ? tr("Answered: %1").arg(QString::fromStdString(vt::dev::toHex(o.reply.frame)))
-                    : vt::model::outcomeStatusText(o.status) +
-                          (o.reason.isEmpty() ? QString() : QStringLiteral(": ") + o.reason);
+            // Rendered again when the language changes while it shows.
+            self->m_resultText = [status = o.status, reason = o.reason,
+                                  device = o.reply.exceptionText,
+                                  hex = QString::fromStdString(vt::dev::toHex(o.reply.frame))] {
+                if (status == vt::model::OutcomeStatus::Ok)
+                    return tr("Answered: %1").arg(hex);
+                const QString why = device.en.empty() ? reason : vt::model::localText(device);
+                return why.isEmpty() ? vt::model::outcomeStatusText(status)
+                                     : tr("%1: %2").arg(vt::model::outcomeStatusText(status), why);
+            };
+            const QString text = self->m_resultText();
             self->m_result->setText(text);
             self->updateSend();
             emit self->sendFinished(text, o.status == vt::model::OutcomeStatus::Ok);
@@ -437,6 +454,8 @@ bool ComposePanel::send()
 
 void ComposePanel::retranslate()
 {
+    if (m_resultText)
+        m_result->setText(m_resultText());
     const QString kinds[] = {tr("HCS CMD 3 read"),
                              tr("HCS CMD 6 write"),
                              tr("HCS CMD 15 cyclic"),

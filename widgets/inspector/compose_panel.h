@@ -88,6 +88,7 @@ private:
     QLabel *m_problem;
     QLabel *m_sendReason;
     QLabel *m_result;
+    std::function<QString()> m_resultText; // what m_result shows, in the language of now
     QPushButton *m_send;
     FrameDetail *m_detail;
     std::optional<vt::dev::inspect::ComposedFrame> m_frame;

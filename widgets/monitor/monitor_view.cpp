@@ -6,6 +6,7 @@
 #include "model/text_language.h"
 #include "monitor_plot.h"
 #include "step_control.h"
+#include "widgets/number_box.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -40,14 +41,14 @@ MonitorView::MonitorView(QWidget *parent)
     m_run = new QPushButton(this);
     m_run->setCheckable(true);
     m_rateLabel = new QLabel(this);
-    m_rate = new QDoubleSpinBox(this);
+    m_rate = new NumberBox(this);
     m_rate->setRange(0, 1000);
     m_rate->setDecimals(1);
     m_rate->setKeyboardTracking(false);
     m_rate->setValue(kDefaultRateHz);
     m_achieved = new QLabel(this);
     m_windowLabel = new QLabel(this);
-    m_window = new QDoubleSpinBox(this);
+    m_window = new NumberBox(this);
     m_window->setRange(0.1, 3600);
     m_window->setDecimals(1);
     m_window->setKeyboardTracking(false);
@@ -121,6 +122,8 @@ MonitorView::MonitorView(QWidget *parent)
         setFollowing(true);
         scheduleRedraw();
     });
+    for (NumberBox *box : {m_rate, m_window})
+        connect(box, &NumberBox::refused, this, &MonitorView::statusMessage);
     connect(m_follow, &QCheckBox::toggled, this, &MonitorView::scheduleRedraw);
     connect(m_channels, &QPushButton::clicked, this, &MonitorView::chooseChannels);
     connect(m_clear, &QPushButton::clicked, this, [this] { m_session->clearRecording(); });

@@ -12,13 +12,14 @@
 #include <QWidget>
 
 class QCheckBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QToolButton;
 class QAction;
 
 namespace vt::ui {
+
+class NumberBox;
 
 class MonitorPlot;
 class StepControl;
@@ -96,10 +97,10 @@ private:
     StepControl *m_step = nullptr;
     QPushButton *m_run = nullptr;
     QLabel *m_rateLabel = nullptr;
-    QDoubleSpinBox *m_rate = nullptr;
+    NumberBox *m_rate = nullptr;
     QLabel *m_achieved = nullptr;
     QLabel *m_windowLabel = nullptr;
-    QDoubleSpinBox *m_window = nullptr;
+    NumberBox *m_window = nullptr;
     QCheckBox *m_follow = nullptr;
     QPushButton *m_channels = nullptr;
     QPushButton *m_clear = nullptr;

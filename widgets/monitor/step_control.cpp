@@ -2,6 +2,7 @@
 
 #include "dict/cooking.h"
 #include "model/text_language.h"
+#include "widgets/number_box.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -19,7 +20,7 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
     m_title = new QLabel(this);
     m_module = new QComboBox(this);
     m_row = new QComboBox(this);
-    m_value = new QDoubleSpinBox(this);
+    m_value = new NumberBox(this);
     m_value->setKeyboardTracking(false);
     m_write = new QPushButton(this);
     m_activate = new QPushButton(this);
@@ -46,6 +47,7 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
     connect(m_row, &QComboBox::currentIndexChanged, this, &StepControl::rowChosen);
     connect(m_write, &QPushButton::clicked, this, &StepControl::writeStep);
     connect(m_activate, &QPushButton::clicked, this, &StepControl::enableBusSetValue);
+    connect(m_value, &NumberBox::refused, m_status, &QLabel::setText);
     retranslate();
     updateEnabled();
 }
@@ -118,7 +120,17 @@ void StepControl::moduleChosen()
         m_step->setLanguage(model::textLanguage());
         connect(m_step.get(), &model::SetValueStep::refused, this,
                 [this](const QString &reason, bool needsActivation) {
-                    m_status->setText(reason);
+                    const dev::ParamMeta *row = currentRow();
+                    const dev::ParamMeta *e17 =
+                        model::SetValueStep::activationRow(*currentModule()->dictionary);
+                    const std::optional<double> activation = m_step->activation();
+                    if (needsActivation && row && e17 && activation)
+                        showStatus([row, e17, activation] {
+                            return model::SetValueStep::refusalText(*row, *e17, *activation,
+                                                                    model::textLanguage());
+                        });
+                    else
+                        m_status->setText(reason);
                     m_activate->setVisible(needsActivation);
                     updateEnabled();
                 });
@@ -171,8 +183,14 @@ void StepControl::writeStep()
     const dev::ParamMeta *row = currentRow();
     if (!m_step || !row || m_step->isBusy())
         return;
+    // A refused entry writes nothing (not the box's previous value either).
+    const std::optional<double> typed = m_value->number();
+    if (!typed) {
+        m_status->setText(m_value->refusal());
+        return;
+    }
     const double factor = row->scale.factor != 0 ? row->scale.factor : 1.0;
-    const double raw = std::round(m_value->value() / factor);
+    const double raw = std::round(*typed / factor);
     m_activate->setVisible(false);
     m_status->setText(tr("Checking E17, then writing %1 …").arg(QString::fromStdString(row->name)));
     m_step->setLanguage(model::textLanguage());
@@ -192,6 +210,13 @@ void StepControl::enableBusSetValue()
 
 void StepControl::onWritten(int module, const std::vector<model::WriteItem> &items, bool complete)
 {
+    showStatus([items] { return writtenText(items); });
+    updateEnabled();
+    emit written(module, items, complete);
+}
+
+QString StepControl::writtenText(const std::vector<model::WriteItem> &items)
+{
     QStringList lines;
     for (const model::WriteItem &item : items) {
         const QString text = model::writeStatusText(item.status);
@@ -202,9 +227,7 @@ void StepControl::onWritten(int module, const std::vector<model::WriteItem> &ite
                 : QStringLiteral("%1: %2 (%3)")
                       .arg(QString::fromStdString(item.row->name), text, reason));
     }
-    m_status->setText(lines.join(QLatin1Char('\n')));
-    updateEnabled();
-    emit written(module, items, complete);
+    return lines.join(QLatin1Char('\n'));
 }
 
 QString StepControl::statusText() const
@@ -250,6 +273,15 @@ void StepControl::retranslate()
     m_activate->setToolTip(tr("Switches the analogue set value off (E17 = 2, stored in EEPROM)."));
     for (int i = 0; i < m_module->count(); ++i)
         m_module->setItemText(i, tr("module %1").arg(m_module->itemData(i).toInt()));
+    if (m_statusRender && m_status->text() == m_statusShown)
+        showStatus(m_statusRender);
+}
+
+void StepControl::showStatus(std::function<QString()> render)
+{
+    m_statusRender = std::move(render);
+    m_statusShown = m_statusRender();
+    m_status->setText(m_statusShown);
 }
 
 } // namespace vt::ui

@@ -7,14 +7,16 @@
 #include "model/monitor/set_value_step.h"
 
 #include <QWidget>
+#include <functional>
 #include <memory>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 
 namespace vt::ui {
+
+class NumberBox;
 
 class StepControl : public QWidget
 {
@@ -55,6 +57,7 @@ private:
     const dev::ParamMeta *currentRow() const;
     const model::ModuleInfo *currentModule() const;
     void onWritten(int module, const std::vector<model::WriteItem> &items, bool complete);
+    static QString writtenText(const std::vector<model::WriteItem> &items);
 
     model::DeviceAccess *m_access = nullptr;
     std::vector<model::ModuleInfo> m_modules; // those with a bus set value
@@ -62,10 +65,15 @@ private:
     QLabel *m_title = nullptr;
     QComboBox *m_module = nullptr;
     QComboBox *m_row = nullptr;
-    QDoubleSpinBox *m_value = nullptr;
+    NumberBox *m_value = nullptr;
     QPushButton *m_write = nullptr;
     QPushButton *m_activate = nullptr;
     QLabel *m_status = nullptr;
+    // A status made from run-time facts (a write's outcome, the E17 hint) is rendered again in a
+    // language switched to while it shows.
+    void showStatus(std::function<QString()> render);
+    std::function<QString()> m_statusRender;
+    QString m_statusShown;
 };
 
 } // namespace vt::ui

@@ -21,7 +21,7 @@ TEST(CurveBinding, CurveEditsAreUndoableDocumentEdits)
     ASSERT_EQ(curves.curves().size(), 2u); // branch 1 and 2
 
     const dev::ParamMeta *y3 = dma.find("L1.y3");
-    doc.editMany({{0, y3, dev::RawValue{2500.0}}}, QStringLiteral("set"));
+    doc.editMany({{0, y3, dev::RawValue{2500.0}}}, [] { return QStringLiteral("set"); });
     EXPECT_EQ(curves.value(0, 3, model::LAxis::Y), std::optional<double>(2.5));
 
     EXPECT_FALSE(curves.editPoint(0, 3, std::nullopt, 3.0));

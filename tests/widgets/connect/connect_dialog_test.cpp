@@ -292,9 +292,12 @@ TEST(ConnectDialog, GermanLocaleReadsTypedNumbers)
         dialog.setKind(ConnectionKind::Serial);
         setEditText(child<QComboBox>(dialog, "serialPort"), QStringLiteral("/dev/ttyUSB0"));
         auto *baud = child<QComboBox>(dialog, "serialBaud");
-        // Rates are listed without a group separator, and a typed German "115.200" is 115200.
+        // Rates are listed without a group separator, and typed the same way: "115.200" is
+        // refused (a thousands separator is no exact number here), "115200" is taken.
         EXPECT_EQ(baud->itemText(baud->findData(19200)), QStringLiteral("19200"));
         setEditText(baud, QStringLiteral("115.200"));
+        EXPECT_FALSE(dialog.problem().isEmpty());
+        setEditText(baud, QStringLiteral("115200"));
         EXPECT_EQ(dialog.spec().serial.baudRate, 115200);
         setEditText(baud, QStringLiteral("9600"));
         EXPECT_EQ(dialog.spec().serial.baudRate, 9600);
