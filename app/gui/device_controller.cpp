@@ -60,11 +60,27 @@ void DeviceController::scan()
 
 void DeviceController::readAll()
 {
+    readRows(tr("Reading all parameters…"), {}, [this](bool complete, const QStringList &problems) {
+        emit statusMessage(complete ? tr("All parameters read.")
+                                    : tr("Read incomplete: %1")
+                                          .arg(problems.isEmpty()
+                                                   ? tr("cancelled")
+                                                   : problems.join(QStringLiteral("; "))));
+        emit readFinished(complete);
+    });
+}
+
+void DeviceController::readRows(const QString &label,
+                                std::function<std::vector<const dev::ParamMeta *>(int)> rows,
+                                std::function<void(bool, const QStringList &)> then)
+{
     if (!m_workspace.isConnected() || m_read)
         return;
     m_read =
         new model::ReadAllJob(m_workspace.connection()->access(), m_workspace.document(), this);
-    m_progress = new QProgressDialog(tr("Reading all parameters…"), tr("Cancel"), 0, 1, m_window);
+    if (rows)
+        m_read->setRows(std::move(rows));
+    m_progress = new QProgressDialog(label, tr("Cancel"), 0, 1, m_window);
     m_progress->setObjectName(QStringLiteral("readAllProgress"));
     m_progress->setAttribute(Qt::WA_DeleteOnClose);
     m_progress->setWindowModality(Qt::WindowModal);
@@ -76,23 +92,44 @@ void DeviceController::readAll()
         m_progress->setValue(done);
     });
     connect(m_progress.data(), &QProgressDialog::canceled, m_read, &model::ReadAllJob::cancel);
-    connect(m_read, &model::ReadAllJob::finished, this, [this](bool complete) {
+    connect(m_read, &model::ReadAllJob::finished, this, [this, then](bool complete) {
         if (m_progress)
             m_progress->close();
         const QStringList problems = m_read->problems();
         m_read->deleteLater();
         m_read = nullptr;
-        emit statusMessage(complete ? tr("All parameters read.")
-                                    : tr("Read incomplete: %1")
-                                          .arg(problems.isEmpty()
-                                                   ? tr("cancelled")
-                                                   : problems.join(QStringLiteral("; "))));
-        emit readFinished(complete);
+        then(complete, problems);
     });
     m_read->start();
 }
 
 ui::WriteDialog *DeviceController::writeChanges()
+{
+    if (!m_workspace.isConnected() || m_read)
+        return nullptr;
+    const model::ParameterDocument &doc = m_workspace.document();
+    bool unknown = false;
+    for (int i = 0; i < doc.moduleCount() && !unknown; ++i)
+        unknown = !doc.rowsToRead(i).empty();
+    if (!unknown)
+        return openWriteDialog();
+    readRows(tr("Reading what the device holds before writing…"),
+             [this](int module) { return m_workspace.document().rowsToRead(module); },
+             [this](bool complete, const QStringList &problems) {
+                 if (!complete) {
+                     emit statusMessage(
+                         tr("Nothing written: the device values could not all be read (%1).")
+                             .arg(problems.isEmpty() ? tr("cancelled")
+                                                     : problems.join(QStringLiteral("; "))));
+                     return;
+                 }
+                 if (auto *dialog = openWriteDialog())
+                     emit writeDialogOpened(dialog);
+             });
+    return nullptr;
+}
+
+ui::WriteDialog *DeviceController::openWriteDialog()
 {
     if (!m_workspace.isConnected())
         return nullptr;
@@ -124,10 +161,31 @@ ui::WriteDialog *DeviceController::writeChanges()
 
 void DeviceController::compareWithDevice()
 {
-    auto *dialog = new ui::CompareDialog(m_workspace.document(), m_window);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->compareWithDevice();
-    dialog->open();
+    if (!m_workspace.isConnected() || m_read)
+        return;
+    auto compared = [this](int module) {
+        std::vector<const dev::ParamMeta *> rows;
+        const model::ParamModule &m = m_workspace.document().module(module);
+        for (const dev::ParamMeta *row : model::readableRows(*m.dictionary, m.version, m.mode))
+            if (row->writable() && model::isSetting(*row))
+                rows.push_back(row);
+        return rows;
+    };
+    readRows(tr("Reading the device to compare…"), compared,
+             [this](bool complete, const QStringList &problems) {
+                 if (!complete) {
+                     emit statusMessage(tr("Not compared: the device could not be read (%1).")
+                                            .arg(problems.isEmpty()
+                                                     ? tr("cancelled")
+                                                     : problems.join(QStringLiteral("; "))));
+                     return;
+                 }
+                 auto *dialog = new ui::CompareDialog(m_workspace.document(), m_window);
+                 dialog->setAttribute(Qt::WA_DeleteOnClose);
+                 dialog->compareWithDevice();
+                 dialog->open();
+                 emit compareDialogOpened(dialog);
+             });
 }
 
 } // namespace vt::app

@@ -9,6 +9,7 @@
 
 #include <QObject>
 #include <QPointer>
+#include <functional>
 
 class QProgressDialog;
 class QWidget;
@@ -18,8 +19,9 @@ class ReadAllJob;
 }
 
 namespace vt::ui {
+class CompareDialog;
 class WriteDialog;
-}
+} // namespace vt::ui
 
 namespace vt::app {
 
@@ -38,8 +40,13 @@ public:
     void disconnectFromDevice();
     void scan();
     void readAll();
-    // Opens the write confirmation (nullptr when there is nothing to write; the status says why).
+    // Opens the write confirmation. Rows whose device value is not known now are read first
+    // (progress, cancel): the confirmation never offers a row "(unknown)". Returns the dialog
+    // when nothing had to be read, else nullptr and writeDialogOpened() follows; nullptr and
+    // no dialog when there is nothing to write (the status says why).
     ui::WriteDialog *writeChanges();
+    // Reads the compared rows (every readable setting of the online modules) from the device
+    // first, then opens the comparison (compareDialogOpened()).
     void compareWithDevice();
 
     model::ReadAllJob *readJob() const { return m_read; }
@@ -47,10 +54,18 @@ public:
 signals:
     void statusMessage(const QString &text);
     void readFinished(bool complete);
+    void writeDialogOpened(vt::ui::WriteDialog *dialog);
+    void compareDialogOpened(vt::ui::CompareDialog *dialog);
     // A write ended; the monitor's tuning journal marks what reached the device.
     void written(int address, const std::vector<vt::model::WriteItem> &items);
 
 private:
+    // Reads rows of the document's online modules (all readable rows without `rows`) with a
+    // progress dialog; `then(complete, problems)` after.
+    void readRows(const QString &label, std::function<std::vector<const dev::ParamMeta *>(int)> rows,
+                  std::function<void(bool, const QStringList &)> then);
+    ui::WriteDialog *openWriteDialog();
+
     Workspace &m_workspace;
     AppSettings &m_settings;
     QWidget *m_window;

@@ -28,6 +28,8 @@ public:
 
     const dev::DictionarySet &dictionaries() const { return m_dictionaries; }
     model::ParameterDocument &document() { return m_document; }
+    // What is known to be on the node's modules; outlives each connection.
+    model::DeviceImage &deviceImage() { return m_image; }
     model::TelegramLog &telegramLog() { return m_log; }
     model::Connection *connection() const { return m_connection.get(); }
     const std::vector<model::ModuleInfo> &modules() const { return m_modules; }
@@ -63,6 +65,7 @@ private:
     void updateLivePoll();
 
     const dev::DictionarySet &m_dictionaries;
+    model::DeviceImage m_image;
     model::ParameterDocument m_document;
     model::TelegramLog m_log;
     std::unique_ptr<model::Connection> m_connection;
