@@ -24,6 +24,7 @@ struct Resolved
     Json header; // title, vendor, protocol, … (child keys over base keys)
     Json scales = Json::object();
     Json types = Json::object();
+    Json blockDefaults = Json::object(); // block -> {"row_kind", "moves_actuator"}
     std::vector<Json> rows;
 };
 
@@ -128,6 +129,12 @@ private:
             out.scales.update(raw.doc["scales"]);
         if (raw.doc.contains("types") && raw.doc["types"].is_object())
             out.types.update(raw.doc["types"]);
+        if (raw.doc.contains("block_defaults")) {
+            if (raw.doc["block_defaults"].is_object())
+                out.blockDefaults.update(raw.doc["block_defaults"]); // per block, child wins
+            else
+                error(raw.name, {}, "\"block_defaults\" must be an object");
+        }
 
         std::size_t index = 0;
         for (const Json &row : raw.doc["parameters"]) {
@@ -192,6 +199,7 @@ private:
             error(file, {}, "unknown \"protocol\" '" + protocol + "'");
 
         const std::size_t errorsBefore = m_errors.size();
+        checkBlockDefaults(file, r);
         for (const Json &row : r.rows) {
             Json merged = row;
             const std::string name = row["name"].get<std::string>();
@@ -205,6 +213,7 @@ private:
                 merged.update(row);
             }
             try {
+                applyBlockDefaults(merged, r.blockDefaults);
                 if (auto meta = toMeta(file, name, merged, r.scales))
                     dict->params.push_back(std::move(*meta));
             } catch (const Json::exception &e) { // a key of the wrong JSON type
@@ -217,6 +226,43 @@ private:
         if (m_errors.size() != errorsBefore)
             return nullptr;
         return dict;
+    }
+
+    // A block default is a key the rows of that block take unless the row (or its named type)
+    // gives it; docs/DICTIONARY.md "Row kinds" records the rule of each family.
+    static void applyBlockDefaults(Json &row, const Json &blockDefaults)
+    {
+        const Json block = row.value("block", Json());
+        if (!block.is_string() || !blockDefaults.contains(block.get<std::string>()))
+            return;
+        for (const auto &[key, value] : blockDefaults[block.get<std::string>()].items())
+            if (key != "note" && !row.contains(key))
+                row[key] = value;
+    }
+
+    // Only row kinds are block defaults, and each names a block that exists: a misspelt block
+    // would otherwise leave its rows settings without a word.
+    void checkBlockDefaults(const std::string &file, const Resolved &r)
+    {
+        std::set<std::string> blocks;
+        for (const Json &row : r.rows)
+            if (row.contains("block") && row["block"].is_string())
+                blocks.insert(row["block"].get<std::string>());
+        for (const auto &[block, defaults] : r.blockDefaults.items()) {
+            if (!defaults.is_object()) {
+                error(file, {}, "block_defaults '" + block + "' must be an object");
+                continue;
+            }
+            for (const auto &[key, value] : defaults.items())
+                if (key != "row_kind" && key != "moves_actuator" && key != "note")
+                    error(file, {},
+                          "block_defaults '" + block +
+                              "' may set only row_kind and "
+                              "moves_actuator (and a note), not '" +
+                              key + "'");
+            if (!blocks.count(block))
+                error(file, {}, "block_defaults names block '" + block + "', which no row has");
+        }
     }
 
     std::optional<ParamMeta> toMeta(const std::string &file, const std::string &name, const Json &j,
@@ -257,6 +303,22 @@ private:
             return std::nullopt;
         }
         p.access = *access;
+        if (j.contains("row_kind")) {
+            const Json &k = j["row_kind"];
+            const auto kind = k.is_string() ? fromKey<RowKind>(k.get<std::string>()) : std::nullopt;
+            if (!kind) {
+                error(file, name, "\"row_kind\" must be setting, process or live");
+                return std::nullopt;
+            }
+            p.kind = *kind;
+        }
+        if (j.contains("moves_actuator")) {
+            if (!j["moves_actuator"].is_boolean()) {
+                error(file, name, "\"moves_actuator\" must be true or false");
+                return std::nullopt;
+            }
+            p.movesActuator = j["moves_actuator"].get<bool>();
+        }
         const auto type = parseRawType(j.value("type", std::string()));
         if (!type) {
             error(file, name, "missing or unknown \"type\"");

@@ -25,6 +25,32 @@ void checkText(std::vector<DictionaryError> &out, const std::string &row, const 
         out.push_back({{}, row, std::string(what) + " has no German text"});
 }
 
+// A row's kind must agree with what the manual says about the same row elsewhere: its access,
+// its persistence column and its PZD number (docs/DICTIONARY.md "Row kinds").
+void checkRowKind(std::vector<DictionaryError> &out, const ParamMeta &p)
+{
+    auto fail = [&](std::string message) { out.push_back({{}, p.name, std::move(message)}); };
+    const std::string kind = key(p.kind);
+    if (p.kind == RowKind::Live && p.writable())
+        fail("a live value is read only, but access is " + std::string(accessKey(p.access)));
+    if (p.kind == RowKind::Process && !p.writable())
+        fail("a process value is written at run time; a read-only run-time value is live");
+    if (p.movesActuator && !p.writable())
+        fail("moves_actuator on a row that cannot be written (access " +
+             std::string(accessKey(p.access)) + ")");
+    if (p.kind != RowKind::Setting && p.persistence == Persistence::Eeprom)
+        fail("a " + kind + " value is kept in EEPROM; a value the device keeps is a setting");
+    if (p.kind == RowKind::Setting && p.persistence == Persistence::Volatile && p.writable())
+        fail("a writable volatile value is lost at power down: a process value, not a setting");
+    if (p.kind == RowKind::Setting && p.access == Access::Write)
+        fail("a write-only row is a command, not a setting: a file cannot hold what cannot be "
+             "read back");
+    // ED1/SD1 manual §4.4: "All parameters with an entry in the column PZD-number can be
+    // transmitted as process data (PZD)".
+    if (p.kind == RowKind::Setting && p.pzd)
+        fail("a row with a PZD number is process data, not a setting");
+}
+
 } // namespace
 
 std::vector<DictionaryError> validateDictionary(const Dictionary &dict)
@@ -56,6 +82,7 @@ std::vector<DictionaryError> validateDictionary(const Dictionary &dict)
         }
         if (p.block.empty())
             fail(row, "missing \"block\"");
+        checkRowKind(out, p);
         checkText(out, row, "label", p.label, true);
         checkText(out, row, "description", p.description, false);
 

@@ -6,6 +6,24 @@
 
 namespace vt::dev {
 
+const char *key(RowKind kind)
+{
+    switch (kind) {
+    case RowKind::Setting: return "setting";
+    case RowKind::Process: return "process";
+    case RowKind::Live: return "live";
+    }
+    return "?";
+}
+
+template<> std::optional<RowKind> fromKey<RowKind>(std::string_view text)
+{
+    for (RowKind k : kRowKinds)
+        if (text == key(k))
+            return k;
+    return std::nullopt;
+}
+
 const EnumLabel *ParamMeta::findEnum(std::int64_t value) const
 {
     const auto it = std::find_if(enums.begin(), enums.end(),

@@ -3,12 +3,15 @@
 // elsewhere (STYLE.md rule 4). Shared read-only between threads once loaded.
 #pragma once
 
+#include "core/enum_key.h"
 #include "core/local_text.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vt::dev {
@@ -20,6 +23,17 @@ enum class Access {
     Inactive,       // x: "implemented, but not active (no access)"
     NotImplemented, // n: grey in the manual, "not yet implemented"
 };
+
+// What a row is to a parameter file (ARCHITECTURE.md "Trust rules"; the rule per family is in
+// docs/DICTIONARY.md "Row kinds"): a setting is kept on the device and belongs in a file; a
+// process value is written by the PLC or a test at run time; a live value is read-only status.
+enum class RowKind { Setting, Process, Live };
+
+inline constexpr std::array kRowKinds{RowKind::Setting, RowKind::Process, RowKind::Live};
+
+// "setting", "process", "live" (the dictionaries' "row_kind" field).
+const char *key(RowKind kind);
+template<> std::optional<RowKind> fromKey<RowKind>(std::string_view key);
 
 enum class RawType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, String };
 
@@ -65,6 +79,9 @@ struct ParamMeta
     std::string block;           // d C E A L r S B system, or the Wandfluh function block
     int branch = 0;              // 1 or 2 for HCS branch rows, else 0
     Access access = Access::Read;
+    RowKind kind = RowKind::Setting;
+    bool movesActuator = false; // writing it can move the actuator: set values, the set-value
+                                // source (E17 and its equivalents), enable/control words
     RawType type = RawType::Int16;
     int length = 0; // strings: bytes on the wire
     double min = 0, max = 0, step = 1;
