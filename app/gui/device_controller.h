@@ -15,8 +15,9 @@ class QProgressDialog;
 class QWidget;
 
 namespace vt::model {
+class ActuatorRestore;
 class ReadAllJob;
-}
+} // namespace vt::model
 
 namespace vt::ui {
 class CompareDialog;
@@ -37,7 +38,13 @@ public:
 
     void connectDialog();
     void connectTo(const model::ConnectionSpec &spec);
+    // Offers to put back the actuator-moving values this tool changed, then disconnects.
     void disconnectFromDevice();
+    // When the tool changed actuator-moving values on the node (set values, the set-value
+    // source, control words): asks whether to put them back (default yes), writes them back and
+    // reports what is back and what is not; then `then()`. `when`: the sentence that says why
+    // ("Before disconnecting:"). Without such changes `then()` runs at once.
+    void offerRestore(const QString &when, std::function<void()> then);
     void scan();
     void readAll();
     // Opens the write confirmation. Rows whose device value is not known now are read first
@@ -50,6 +57,8 @@ public:
     void compareWithDevice();
 
     model::ReadAllJob *readJob() const { return m_read; }
+    // The report of the last put-back ("Put back: A1.01 on module 1.").
+    const QString &lastRestore() const { return m_lastRestore; }
 
 signals:
     void statusMessage(const QString &text);
@@ -62,7 +71,8 @@ signals:
 private:
     // Reads rows of the document's online modules (all readable rows without `rows`) with a
     // progress dialog; `then(complete, problems)` after.
-    void readRows(const QString &label, std::function<std::vector<const dev::ParamMeta *>(int)> rows,
+    void readRows(const QString &label,
+                  std::function<std::vector<const dev::ParamMeta *>(int)> rows,
                   std::function<void(bool, const QStringList &)> then);
     ui::WriteDialog *openWriteDialog();
 
@@ -70,6 +80,8 @@ private:
     AppSettings &m_settings;
     QWidget *m_window;
     model::ReadAllJob *m_read = nullptr;
+    model::ActuatorRestore *m_restore = nullptr;
+    QString m_lastRestore;
     QPointer<QProgressDialog> m_progress;
 };
 

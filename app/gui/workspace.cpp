@@ -52,6 +52,7 @@ void Workspace::connectTo(const model::ConnectionSpec &spec)
     m_connection = std::move(made).value();
     m_connection->access().useImage(m_image);
     m_image.beginConnection();
+    m_ledger.clear();
     m_recorder = std::make_unique<model::TelegramRecorder>(m_connection->session(), m_log);
     const quint64 generation = ++m_generation;
     connect(m_connection.get(), &model::Connection::opened, this, [this, generation] {

@@ -58,9 +58,9 @@ struct ParamModule
 // A setting: kept on the device, belongs in a parameter file and in Write Changes. Process values
 // (bus set values, control words) and live values are shown, never saved, compared or written
 // as settings.
-inline bool isSetting(const dev::ParamMeta &)
+inline bool isSetting(const dev::ParamMeta &row)
 {
-    return true;
+    return row.kind == dev::RowKind::Setting;
 }
 
 // Equal raw values (numbers compared exactly: both come from the same integer or float32 grid).

@@ -136,9 +136,8 @@ QStringList ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos
             it = std::prev(modules.end());
             it->address = info.address;
             it->dictionary = info.dictionary;
-        } else if (!addMissing &&
-                   (it->version != info.identification.version ||
-                    it->mode != info.identification.mode)) {
+        } else if (!addMissing && (it->version != info.identification.version ||
+                                   it->mode != info.identification.mode)) {
             report << tr("Module %1: the document is for %2, the device is %3. Rows the device "
                          "does not apply are kept but not written.")
                           .arg(info.address)
@@ -244,7 +243,10 @@ void ParameterDocument::loadFile(const dev::files::ParamFile &file,
         m.record = record;
         m.mapReport = dev::files::mapModule(record, *dict);
         for (const dev::files::RowMapping &r : m.mapReport->rows) {
-            if (r.applies() && r.meta && r.row != dev::files::RowMapping::kNoRow) {
+            // Process and live values in an old file are not settings: neither shown as the
+            // document's value nor written (the map report names them).
+            if (r.applies() && r.meta && r.row != dev::files::RowMapping::kNoRow &&
+                isSetting(*r.meta)) {
                 m.file[r.meta] = record.values[r.row].raw;
                 m.working[r.meta] = record.values[r.row].raw;
             }
@@ -273,6 +275,12 @@ dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) co
         record.mode = m.mode;
         record.label = m.label.toStdString();
         std::set<const dev::ParamMeta *> written;
+        // A file holds settings only: process and live values an old file had are dropped.
+        std::erase_if(record.values, [&](const dev::files::ValueRow &row) {
+            bool byAddress = false;
+            const dev::ParamMeta *meta = dev::files::findMeta(*m.dictionary, row, &byAddress);
+            return meta && !isSetting(*meta);
+        });
         for (dev::files::ValueRow &row : record.values) {
             bool byAddress = false;
             const dev::ParamMeta *meta = dev::files::findMeta(*m.dictionary, row, &byAddress);
@@ -286,7 +294,8 @@ dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) co
         }
         for (const dev::ParamMeta &meta : m.dictionary->params) {
             const auto it = m.working.find(&meta);
-            if (it != m.working.end() && !written.count(&meta) && meta.access != dev::Access::Write)
+            if (it != m.working.end() && !written.count(&meta) &&
+                meta.access != dev::Access::Write && isSetting(meta))
                 record.values.push_back(dev::files::makeValueRow(meta, it->second));
         }
         file.modules.push_back(std::move(record));
@@ -427,8 +436,8 @@ std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
         if (!row.writable() || !m.active(row) || !isSetting(row))
             continue;
         const auto working = m.value(&row, Layer::Working);
-        const auto device = deviceCurrent(module, &row) ? value(module, &row, Layer::Device)
-                                                        : std::nullopt;
+        const auto device =
+            deviceCurrent(module, &row) ? value(module, &row, Layer::Device) : std::nullopt;
         if (!working || sameValue(working, device))
             continue;
         WriteItem item;

@@ -263,21 +263,21 @@ QString ParameterTreeModel::deviceAgeText(int module, const dev::ParamMeta &row)
     const ImageEntry *entry = m.paired ? image.entry(m.address, &row) : nullptr;
     if (!entry)
         return {};
-    const auto seconds = std::chrono::duration_cast<std::chrono::seconds>(
-                             DeviceImage::Clock::now() - entry->when)
-                             .count();
-    const QString age = seconds < 120 ? tr("%n second(s) ago", nullptr, static_cast<int>(seconds))
-                                      : tr("%n minute(s) ago", nullptr,
-                                           static_cast<int>(seconds / 60));
+    const auto seconds =
+        std::chrono::duration_cast<std::chrono::seconds>(DeviceImage::Clock::now() - entry->when)
+            .count();
+    const QString age = seconds < 120
+                            ? tr("%n second(s) ago", nullptr, static_cast<int>(seconds))
+                            : tr("%n minute(s) ago", nullptr, static_cast<int>(seconds / 60));
     if (!image.connected() || entry->connection != image.connection())
         return tr("Read %1, before the connection was lost or renewed: not known to be on the "
                   "device now. Read the device again.")
             .arg(age);
     if (!image.isCurrent(*entry))
         return tr("Read %1: too old to be trusted. Read the device again.").arg(age);
-    return entry->source == ImageSource::Written ? tr("Written %1, acknowledged by the device.")
-                                                       .arg(age)
-                                                 : tr("Read from the device %1.").arg(age);
+    return entry->source == ImageSource::Written
+               ? tr("Written %1, acknowledged by the device.").arg(age)
+               : tr("Read from the device %1.").arg(age);
 }
 
 QString ParameterTreeModel::rangeText(const dev::ParamMeta &row) const

@@ -50,10 +50,9 @@ void ActuatorLedger::onImageChanged(int module, const std::vector<ImageChange> &
         any = true;
     }
     // A row back at its original value needs nothing put back.
-    const auto settled = std::remove_if(m_changes.begin(), m_changes.end(),
-                                        [](const ActuatorChange &a) {
-                                            return a.original && *a.original == a.now;
-                                        });
+    const auto settled =
+        std::remove_if(m_changes.begin(), m_changes.end(),
+                       [](const ActuatorChange &a) { return a.original && *a.original == a.now; });
     any = any || settled != m_changes.end();
     m_changes.erase(settled, m_changes.end());
     if (any)
@@ -66,11 +65,10 @@ std::map<int, std::vector<WriteItem>> ActuatorLedger::restorePlan() const
     // The set-value source last: set values go back while the bus still drives the valve, then
     // the source returns to the analogue input.
     std::vector<ActuatorChange> ordered = m_changes;
-    std::stable_sort(ordered.begin(), ordered.end(),
-                     [](const ActuatorChange &a, const ActuatorChange &b) {
-                         return a.row->kind != dev::RowKind::Setting &&
-                                b.row->kind == dev::RowKind::Setting;
-                     });
+    std::stable_sort(
+        ordered.begin(), ordered.end(), [](const ActuatorChange &a, const ActuatorChange &b) {
+            return a.row->kind != dev::RowKind::Setting && b.row->kind == dev::RowKind::Setting;
+        });
     for (const ActuatorChange &c : ordered) {
         if (!c.original)
             continue;

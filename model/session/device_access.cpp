@@ -53,6 +53,7 @@ DeviceAccess::DeviceAccess(Session &session, const dev::DictionarySet &dictionar
                            dev::HcsProduct product, QObject *parent)
     : QObject(parent), m_session(session), m_dictionaries(dictionaries), m_product(product)
 {
+    m_ownImage.beginConnection(); // its values are current while this access lives
 }
 
 DeviceAccess::~DeviceAccess() = default;
@@ -175,8 +176,7 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
         auto rowsOfT = t.rows;
         handle->m_ids.push_back(m_session.submit(
             std::move(t), priority,
-            [state, conclude, image, module,
-             rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
+            [state, conclude, image, module, rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
                 if (outcome.status == OutcomeStatus::Ok &&
                     outcome.reply.values.size() == rowsOfT.size()) {
                     std::vector<std::pair<const dev::ParamMeta *, dev::RawValue>> answered;
@@ -203,14 +203,14 @@ RequestId DeviceAccess::write(int module, const dev::ParamMeta &row, const dev::
                               Priority priority, Completion done)
 {
     QPointer<DeviceImage> image = &this->image();
-    return m_session.submit(m_session.adapter().planWrite(module, row, value), priority,
-                            [image, module, row = &row, value,
-                             done = std::move(done)](const Outcome &outcome) {
-                                if (outcome.status == OutcomeStatus::Ok && image)
-                                    image->recordWritten(module, row, value);
-                                if (done)
-                                    done(outcome);
-                            });
+    return m_session.submit(
+        m_session.adapter().planWrite(module, row, value), priority,
+        [image, module, row = &row, value, done = std::move(done)](const Outcome &outcome) {
+            if (outcome.status == OutcomeStatus::Ok && image)
+                image->recordWritten(module, row, value);
+            if (done)
+                done(outcome);
+        });
 }
 
 void DeviceAccess::ReadHandle::cancel()

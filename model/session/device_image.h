@@ -60,8 +60,8 @@ public:
 
     // What the device answered. Emits changed() for rows whose value changed (a fresh time
     // alone is recorded silently).
-    void recordRead(int module, const std::vector<std::pair<const dev::ParamMeta *, dev::RawValue>>
-                                    &values);
+    void recordRead(int module,
+                    const std::vector<std::pair<const dev::ParamMeta *, dev::RawValue>> &values);
     void recordWritten(int module, const dev::ParamMeta *row, const dev::RawValue &value);
     // The value on the device is no longer known (a frame the image cannot follow was sent).
     void forget(int module, const dev::ParamMeta *row);

@@ -24,8 +24,7 @@ NodeView::NodeView(model::ParameterDocument &document, QWidget *parent)
             [this](int module, const dev::ParamMeta *) {
                 QTreeWidgetItem *node = topLevelItem(0);
                 if (node && module < node->childCount())
-                    node->child(module)->setText(
-                        4, model::stateWordText(m_document, module));
+                    node->child(module)->setText(4, model::stateWordText(m_document, module));
             });
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         const QVariant module = item->data(0, Qt::UserRole);
