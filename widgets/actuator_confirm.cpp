@@ -50,11 +50,12 @@ void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::funct
             yes();
         return;
     }
-    auto *box = new QMessageBox(QMessageBox::Warning, ActuatorConfirm::tr("This Write Can Move the Valve"),
-                                ActuatorConfirm::tr("These values drive the actuator. The axis may move as soon as "
-                                   "they are written.\n\n%1\n\nWrite them?")
-                                    .arg(lines.join(QLatin1Char('\n'))),
-                                QMessageBox::NoButton, parent);
+    auto *box = new QMessageBox(
+        QMessageBox::Warning, ActuatorConfirm::tr("This Write Can Move the Valve"),
+        ActuatorConfirm::tr("These values drive the actuator. The axis may move as soon as "
+                            "they are written.\n\n%1\n\nWrite them?")
+            .arg(lines.join(QLatin1Char('\n'))),
+        QMessageBox::NoButton, parent);
     box->setObjectName(QStringLiteral("actuatorConfirm"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     QPushButton *write = box->addButton(ActuatorConfirm::tr("Write"), QMessageBox::AcceptRole);
@@ -78,19 +79,20 @@ void askRestoreActuators(QWidget *parent, const QString &when, const QStringList
         answer(answerHook()(lines));
         return;
     }
-    auto *box = new QMessageBox(QMessageBox::Question, ActuatorConfirm::tr("Put Back What Was Changed?"),
-                                ActuatorConfirm::tr("%1 ValveTune changed values that drive the actuator:\n\n%2\n\n"
-                                   "Put the original values back?")
-                                    .arg(when, lines.join(QLatin1Char('\n'))),
-                                QMessageBox::NoButton, parent);
+    auto *box = new QMessageBox(
+        QMessageBox::Question, ActuatorConfirm::tr("Put Back What Was Changed?"),
+        ActuatorConfirm::tr("%1 ValveTune changed values that drive the actuator:\n\n%2\n\n"
+                            "Put the original values back?")
+            .arg(when, lines.join(QLatin1Char('\n'))),
+        QMessageBox::NoButton, parent);
     box->setObjectName(QStringLiteral("actuatorRestore"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     QPushButton *back = box->addButton(ActuatorConfirm::tr("Put Back"), QMessageBox::AcceptRole);
     box->addButton(ActuatorConfirm::tr("Leave As Is"), QMessageBox::RejectRole);
     box->setDefaultButton(back);
-    QObject::connect(box, &QMessageBox::finished, box, [box, back, answer = std::move(answer)](int) {
-        answer(box->clickedButton() == back);
-    });
+    QObject::connect(
+        box, &QMessageBox::finished, box,
+        [box, back, answer = std::move(answer)](int) { answer(box->clickedButton() == back); });
     box->open();
 }
 

@@ -291,9 +291,8 @@ TEST_F(TrustE2E, AReconnectMakesEveryDeviceValueNotCurrentUntilRead)
     window->device().disconnectFromDevice();
     EXPECT_FALSE(doc().deviceCurrent(0, row("C1.07")));
     EXPECT_TRUE(doc().value(0, row("C1.07"), model::Layer::Device)); // still shown, greyed
-    const QModelIndex device =
-        window->editor()->treeModel()->indexOf(0, row("C1.07"),
-                                               model::ParameterTreeModel::ColDevice);
+    const QModelIndex device = window->editor()->treeModel()->indexOf(
+        0, row("C1.07"), model::ParameterTreeModel::ColDevice);
     EXPECT_TRUE(device.data(Qt::ToolTipRole).toString().contains("before the connection"))
         << device.data(Qt::ToolTipRole).toString().toStdString();
     connectSimulator();

@@ -36,7 +36,7 @@ TEST(DeviceImage, AValueIsCurrentOnlyOnItsConnectionAndWhileYoung)
     EXPECT_EQ(image.value(1, row("C1.07")), dev::RawValue{500.0}); // still known, not current
     image.beginConnection();
     EXPECT_FALSE(image.currentValue(1, row("C1.07"))); // from before the reconnect
-    image.recordRead(1, {{row("C1.07"), 500.0}}); // same value, now current again: signalled
+    image.recordRead(1, {{row("C1.07"), 500.0}});      // same value, now current again: signalled
     EXPECT_EQ(changed.count(), 2);
     EXPECT_TRUE(image.currentValue(1, row("C1.07")));
 

@@ -44,7 +44,7 @@ void nextTo(FoldWizard &wizard, int id)
 // SimSpec "dma-pn-v51", 3 modules, Modbus TCP; the modules start on E22 = 4, 5, 6.
 TEST(FoldWizardSim, ScanApplyAndVerify)
 {
-    ActuatorAnswer yes; // the Apply is asked first
+    test::ActuatorAnswer yes; // the Apply is asked first
     auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     dev::sim::HcsNode &node = *c->simEndpoint()->node();
@@ -154,7 +154,7 @@ using test::waitUntil;
 // Point-to-point guidance: "connect the cable to module 2, then Next".
 TEST(FoldWizardSim, PointToPointGuidesModuleByModule)
 {
-    ActuatorAnswer yes; // each module's Apply is asked first
+    test::ActuatorAnswer yes; // each module's Apply is asked first
     auto c = openSim({"dma-pn-v51", 1, "modbus-rtu", {}, {}});
     ASSERT_TRUE(c);
     FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());
