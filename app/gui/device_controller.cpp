@@ -2,6 +2,8 @@
 
 #include "app_settings.h"
 #include "model/params/device_jobs.h"
+#include "model/session/actuator_restore.h"
+#include "widgets/actuator_confirm.h"
 #include "widgets/connect/connect_dialog.h"
 #include "widgets/editor/compare_dialog.h"
 #include "widgets/editor/write_dialog.h"
@@ -51,7 +53,72 @@ void DeviceController::showConnectFailure(const QString &reason)
 
 void DeviceController::disconnectFromDevice()
 {
-    m_workspace.disconnectFromDevice();
+    offerRestore(tr("Before disconnecting:"), [this] { m_workspace.disconnectFromDevice(); });
+}
+
+void DeviceController::offerRestore(const QString &when, std::function<void()> then)
+{
+    model::ActuatorLedger &ledger = m_workspace.actuatorLedger();
+    if (!m_workspace.isConnected() || ledger.empty() || m_restore) {
+        if (!m_restore)
+            then();
+        return;
+    }
+    const dev::Language lang = m_workspace.document().language();
+    QStringList lines;
+    for (const model::ActuatorChange &c : ledger.changes())
+        lines << (c.original ? ui::actuatorWriteLine(c.module, *c.row, c.now, *c.original, lang)
+                             : tr("Module %1: %2 cannot be put back: its value before the change "
+                                  "was never read.")
+                                   .arg(c.module)
+                                   .arg(QString::fromStdString(c.row->name)));
+    ui::askRestoreActuators(m_window, when, lines, [this, then](bool putBack) {
+        if (!putBack || !m_workspace.isConnected()) {
+            then();
+            return;
+        }
+        std::map<int, const dev::Dictionary *> dictionaries;
+        for (const model::ModuleInfo &info : m_workspace.modules())
+            dictionaries[info.address] = info.dictionary;
+        m_restore = new model::ActuatorRestore(m_workspace.connection()->access(),
+                                               m_workspace.actuatorLedger().restorePlan(),
+                                               std::move(dictionaries), this);
+        connect(m_restore, &model::ActuatorRestore::finished, this, [this, then](bool) {
+            const dev::Language now = m_workspace.document().language();
+            QStringList back, notBack;
+            std::map<int, std::vector<model::WriteItem>> byModule;
+            for (const model::RestoredRow &r : m_restore->results()) {
+                byModule[r.module].push_back(r.item);
+                const QString name = tr("%1 on module %2")
+                                         .arg(QString::fromStdString(r.item.row->name))
+                                         .arg(r.module);
+                if (model::isOnDevice(r.item.status))
+                    back << name;
+                else
+                    notBack << tr("%1 (%2)").arg(name, model::writeReasonText(r.item, now).isEmpty()
+                                                           ? model::writeStatusText(r.item.status)
+                                                           : model::writeReasonText(r.item, now));
+            }
+            for (const model::ActuatorChange &c : m_workspace.actuatorLedger().unrestorable())
+                notBack << tr("%1 on module %2 (value before unknown)")
+                               .arg(QString::fromStdString(c.row->name))
+                               .arg(c.module);
+            for (const auto &[module, items] : byModule)
+                emit written(module, items);
+            m_restore->deleteLater();
+            m_restore = nullptr;
+            QString text = back.isEmpty()
+                               ? QString()
+                               : tr("Put back: %1.").arg(back.join(QStringLiteral(", ")));
+            if (!notBack.isEmpty())
+                text += (text.isEmpty() ? QString() : QStringLiteral(" ")) +
+                        tr("Not put back: %1.").arg(notBack.join(QStringLiteral(", ")));
+            m_lastRestore = text;
+            emit statusMessage(text);
+            then();
+        });
+        m_restore->start();
+    });
 }
 
 void DeviceController::scan()
@@ -77,11 +144,27 @@ void DeviceController::scan()
 
 void DeviceController::readAll()
 {
+    readRows(tr("Reading all parameters…"), {}, [this](bool complete, const QStringList &problems) {
+        emit statusMessage(complete ? tr("All parameters read.")
+                                    : tr("Read incomplete: %1")
+                                          .arg(problems.isEmpty()
+                                                   ? tr("cancelled")
+                                                   : problems.join(QStringLiteral("; "))));
+        emit readFinished(complete);
+    });
+}
+
+void DeviceController::readRows(const QString &label,
+                                std::function<std::vector<const dev::ParamMeta *>(int)> rows,
+                                std::function<void(bool, const QStringList &)> then)
+{
     if (!m_workspace.isConnected() || m_read)
         return;
     m_read =
         new model::ReadAllJob(m_workspace.connection()->access(), m_workspace.document(), this);
-    m_progress = new QProgressDialog(tr("Reading all parameters…"), tr("Cancel"), 0, 1, m_window);
+    if (rows)
+        m_read->setRows(std::move(rows));
+    m_progress = new QProgressDialog(label, tr("Cancel"), 0, 1, m_window);
     m_progress->setObjectName(QStringLiteral("readAllProgress"));
     m_progress->setAttribute(Qt::WA_DeleteOnClose);
     m_progress->setWindowModality(Qt::WindowModal);
@@ -93,23 +176,45 @@ void DeviceController::readAll()
         m_progress->setValue(done);
     });
     connect(m_progress.data(), &QProgressDialog::canceled, m_read, &model::ReadAllJob::cancel);
-    connect(m_read, &model::ReadAllJob::finished, this, [this](bool complete) {
+    connect(m_read, &model::ReadAllJob::finished, this, [this, then](bool complete) {
         if (m_progress)
             m_progress->close();
         const QStringList problems = m_read->problems();
         m_read->deleteLater();
         m_read = nullptr;
-        emit statusMessage(complete ? tr("All parameters read.")
-                                    : tr("Read incomplete: %1")
-                                          .arg(problems.isEmpty()
-                                                   ? tr("cancelled")
-                                                   : problems.join(QStringLiteral("; "))));
-        emit readFinished(complete);
+        then(complete, problems);
     });
     m_read->start();
 }
 
 ui::WriteDialog *DeviceController::writeChanges()
+{
+    if (!m_workspace.isConnected() || m_read)
+        return nullptr;
+    const model::ParameterDocument &doc = m_workspace.document();
+    bool unknown = false;
+    for (int i = 0; i < doc.moduleCount() && !unknown; ++i)
+        unknown = !doc.rowsToRead(i).empty();
+    if (!unknown)
+        return openWriteDialog();
+    readRows(
+        tr("Reading what the device holds before writing…"),
+        [this](int module) { return m_workspace.document().rowsToRead(module); },
+        [this](bool complete, const QStringList &problems) {
+            if (!complete) {
+                emit statusMessage(
+                    tr("Nothing written: the device values could not all be read (%1).")
+                        .arg(problems.isEmpty() ? tr("cancelled")
+                                                : problems.join(QStringLiteral("; "))));
+                return;
+            }
+            if (auto *dialog = openWriteDialog())
+                emit writeDialogOpened(dialog);
+        });
+    return nullptr;
+}
+
+ui::WriteDialog *DeviceController::openWriteDialog()
 {
     if (!m_workspace.isConnected())
         return nullptr;
@@ -141,10 +246,31 @@ ui::WriteDialog *DeviceController::writeChanges()
 
 void DeviceController::compareWithDevice()
 {
-    auto *dialog = new ui::CompareDialog(m_workspace.document(), m_window);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->compareWithDevice();
-    dialog->open();
+    if (!m_workspace.isConnected() || m_read)
+        return;
+    auto compared = [this](int module) {
+        std::vector<const dev::ParamMeta *> rows;
+        const model::ParamModule &m = m_workspace.document().module(module);
+        for (const dev::ParamMeta *row : model::readableRows(*m.dictionary, m.version, m.mode))
+            if (row->writable() && model::isSetting(*row))
+                rows.push_back(row);
+        return rows;
+    };
+    readRows(tr("Reading the device to compare…"), compared,
+             [this](bool complete, const QStringList &problems) {
+                 if (!complete) {
+                     emit statusMessage(tr("Not compared: the device could not be read (%1).")
+                                            .arg(problems.isEmpty()
+                                                     ? tr("cancelled")
+                                                     : problems.join(QStringLiteral("; "))));
+                     return;
+                 }
+                 auto *dialog = new ui::CompareDialog(m_workspace.document(), m_window);
+                 dialog->setAttribute(Qt::WA_DeleteOnClose);
+                 dialog->compareWithDevice();
+                 dialog->open();
+                 emit compareDialogOpened(dialog);
+             });
 }
 
 } // namespace vt::app

@@ -9,18 +9,21 @@
 
 #include <QObject>
 #include <QPointer>
+#include <functional>
 
 class QMessageBox;
 class QProgressDialog;
 class QWidget;
 
 namespace vt::model {
+class ActuatorRestore;
 class ReadAllJob;
-}
+} // namespace vt::model
 
 namespace vt::ui {
+class CompareDialog;
 class WriteDialog;
-}
+} // namespace vt::ui
 
 namespace vt::app {
 
@@ -36,30 +39,53 @@ public:
 
     void connectDialog();
     void connectTo(const model::ConnectionSpec &spec);
+    // Offers to put back the actuator-moving values this tool changed, then disconnects.
     void disconnectFromDevice();
+    // When the tool changed actuator-moving values on the node (set values, the set-value
+    // source, control words): asks whether to put them back (default yes), writes them back and
+    // reports what is back and what is not; then `then()`. `when`: the sentence that says why
+    // ("Before disconnecting:"). Without such changes `then()` runs at once.
+    void offerRestore(const QString &when, std::function<void()> then);
     void scan();
     void readAll();
-    // Opens the write confirmation (nullptr when there is nothing to write; the status says why).
+    // Opens the write confirmation. Rows whose device value is not known now are read first
+    // (progress, cancel): the confirmation never offers a row "(unknown)". Returns the dialog
+    // when nothing had to be read, else nullptr and writeDialogOpened() follows; nullptr and
+    // no dialog when there is nothing to write (the status says why).
     ui::WriteDialog *writeChanges();
+    // Reads the compared rows (every readable setting of the online modules) from the device
+    // first, then opens the comparison (compareDialogOpened()).
     void compareWithDevice();
 
     model::ReadAllJob *readJob() const { return m_read; }
     // The message that says why the last connect failed (nullptr when none is open).
     QMessageBox *connectFailure() const { return m_failure; }
+    // The report of the last put-back ("Put back: A1.01 on module 1.").
+    const QString &lastRestore() const { return m_lastRestore; }
 
 signals:
     void statusMessage(const QString &text);
     void readFinished(bool complete);
+    void writeDialogOpened(vt::ui::WriteDialog *dialog);
+    void compareDialogOpened(vt::ui::CompareDialog *dialog);
     // A write ended; the monitor's tuning journal marks what reached the device.
     void written(int address, const std::vector<vt::model::WriteItem> &items);
 
 private:
     void showConnectFailure(const QString &reason);
+    // Reads rows of the document's online modules (all readable rows without `rows`) with a
+    // progress dialog; `then(complete, problems)` after.
+    void readRows(const QString &label,
+                  std::function<std::vector<const dev::ParamMeta *>(int)> rows,
+                  std::function<void(bool, const QStringList &)> then);
+    ui::WriteDialog *openWriteDialog();
 
     Workspace &m_workspace;
     AppSettings &m_settings;
     QWidget *m_window;
     model::ReadAllJob *m_read = nullptr;
+    model::ActuatorRestore *m_restore = nullptr;
+    QString m_lastRestore;
     QPointer<QProgressDialog> m_progress;
     QPointer<QMessageBox> m_failure;
 };

@@ -77,10 +77,21 @@ void FileController::newFrom(const model::NewFileChoice &choice)
         return;
     model::ParameterDocument &doc = m_workspace.document();
     doc.createNew(choice, m_workspace.dictionaries());
+    // Still connected: the new modules pair with the node's; the node's others stay out.
     if (m_workspace.isConnected())
-        doc.attachDevice(m_workspace.modules());
+        showPairing(doc.attachDevice(m_workspace.modules(), false));
     emit statusMessage(tr("New parameter set for %1 with the dictionary's defaults.")
                            .arg(QString::fromStdString(choice.dictionary->family)));
+}
+
+void FileController::showPairing(const QStringList &pairing)
+{
+    m_lastPairing = pairing;
+    if (pairing.isEmpty() || m_promptHook)
+        return;
+    auto *report = new ui::MapReportDialog(m_workspace.document(), pairing, m_window);
+    report->setAttribute(Qt::WA_DeleteOnClose);
+    report->open();
 }
 
 void FileController::open()
@@ -109,13 +120,15 @@ bool FileController::openPath(const QString &path)
     }
     model::ParameterDocument &doc = m_workspace.document();
     doc.loadFile(*file, m_workspace.dictionaries(), QFileInfo(path).absoluteFilePath());
-    // Still connected: the file's modules pair with the node's again.
+    // Still connected: the file's modules pair with the node's; the Device column stays.
+    QStringList pairing;
     if (m_workspace.isConnected())
-        doc.attachDevice(m_workspace.modules());
+        pairing = doc.attachDevice(m_workspace.modules(), false);
+    m_lastPairing = pairing;
     m_recent.add(QFileInfo(path).absoluteFilePath());
     emit statusMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
-    if (ui::MapReportDialog::needed(doc) && !m_promptHook) {
-        auto *report = new ui::MapReportDialog(doc, m_window);
+    if (ui::MapReportDialog::needed(doc, pairing) && !m_promptHook) {
+        auto *report = new ui::MapReportDialog(doc, pairing, m_window);
         report->setAttribute(Qt::WA_DeleteOnClose);
         report->open();
     }

@@ -7,6 +7,7 @@
 
 #include <QMessageBox>
 #include <QObject>
+#include <QStringList>
 #include <functional>
 
 class QWidget;
@@ -46,6 +47,8 @@ public:
     }
     // The last error shown (tests; also in the status bar).
     const QString &lastError() const { return m_lastError; }
+    // How the last New or Open paired with the connected node (empty: plainly, or offline).
+    const QStringList &lastPairing() const { return m_lastPairing; }
 
 signals:
     void statusMessage(const QString &text);
@@ -53,6 +56,7 @@ signals:
     void foldPlanRequested(const QString &path);
 
 private:
+    void showPairing(const QStringList &pairing);
     void fail(const QString &message);
     dev::Language language() const;
 
@@ -61,6 +65,7 @@ private:
     QWidget *m_window;
     std::function<QMessageBox::StandardButton()> m_promptHook;
     QString m_lastError;
+    QStringList m_lastPairing;
 };
 
 } // namespace vt::app

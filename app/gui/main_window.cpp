@@ -316,7 +316,16 @@ void MainWindow::connectWorkspace()
         m_linkStatus->clearConnection();
         m_nodeView->setNodeText(QString());
         m_inspector->clearConnection();
-        showStatus(reason.isEmpty() ? tr("Disconnected.") : tr("Connection lost: %1").arg(reason));
+        QString text =
+            reason.isEmpty() ? tr("Disconnected.") : tr("Connection lost: %1").arg(reason);
+        // The link went away with set values the tool changed: say which could not be put back.
+        QStringList left;
+        for (const model::ActuatorChange &c : m_workspace->actuatorLedger().changes())
+            left << tr("%1 on module %2").arg(QString::fromStdString(c.row->name)).arg(c.module);
+        if (!reason.isEmpty() && !left.isEmpty())
+            text += QLatin1Char(' ') + tr("Could not put back (link gone): %1. Check the axis.")
+                                           .arg(left.join(QStringLiteral(", ")));
+        showStatus(text);
         updateActions();
     });
 }
@@ -481,6 +490,15 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    // Set values the tool changed are offered back first (the safe side, whatever is answered
+    // to saving next); the window closes after.
+    if (!m_restoreOffered && m_workspace->isConnected() && !m_workspace->actuatorLedger().empty()) {
+        event->ignore();
+        m_restoreOffered = true;
+        m_device->offerRestore(tr("Before quitting:"), [this] { close(); });
+        return;
+    }
+    m_restoreOffered = false;
     if (!m_files->maybeSave()) {
         event->ignore();
         return;

@@ -102,6 +102,7 @@ private:
     ui::InspectorView *m_inspector = nullptr;
     ui::MonitorView *m_monitor = nullptr;
     QPointer<ui::FoldWizard> m_wizard;
+    bool m_restoreOffered = false; // closing: the put-back question was asked
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;

@@ -3,11 +3,14 @@
 #include "model/monitor/monitor_scheduler.h"
 #include "model/telegrams/telegram_recorder.h"
 
+#include <QSignalBlocker>
+
 namespace vt::app {
 
 Workspace::Workspace(const dev::DictionarySet &dictionaries, QObject *parent)
     : QObject(parent), m_dictionaries(dictionaries)
 {
+    m_document.setDeviceImage(&m_image);
 }
 
 // Silent: whoever listens may already be half destroyed (the main window closes the connection
@@ -25,6 +28,10 @@ void Workspace::teardown(bool notify)
         emit aboutToDisconnect();
     m_live.reset();
     m_recorder.reset();
+    {
+        const QSignalBlocker silent(notify ? nullptr : &m_image);
+        m_image.endConnection();
+    }
     if (m_connection) {
         m_connection->disconnect(this);
         m_connection->close();
@@ -43,6 +50,9 @@ void Workspace::connectTo(const model::ConnectionSpec &spec)
         return;
     }
     m_connection = std::move(made).value();
+    m_connection->access().useImage(m_image);
+    m_image.beginConnection();
+    m_ledger.clear();
     m_recorder = std::make_unique<model::TelegramRecorder>(m_connection->session(), m_log);
     const quint64 generation = ++m_generation;
     connect(m_connection.get(), &model::Connection::opened, this, [this, generation] {
@@ -154,16 +164,7 @@ void Workspace::updateLivePoll()
         if (!rows.empty())
             m_live->setModule(info.address, std::move(rows), m_liveHz);
     }
-    connect(m_live.get(), &model::MonitorScheduler::sampled, this,
-            [this](const model::MonitorSample &sample) {
-                const int index = m_document.findModule(sample.module);
-                if (index < 0)
-                    return;
-                std::vector<model::RowValue> values;
-                for (std::size_t i = 0; i < sample.rows.size() && i < sample.values.size(); ++i)
-                    values.push_back({sample.rows[i], sample.values[i]});
-                m_document.applyRead(index, values);
-            });
+    // The samples reach the document through the device image (DeviceAccess records them).
     m_live->start();
 }
 

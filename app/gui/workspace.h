@@ -5,6 +5,7 @@
 #pragma once
 
 #include "model/params/parameter_document.h"
+#include "model/session/actuator_ledger.h"
 #include "model/session/connection.h"
 #include "model/telegrams/telegram_log.h"
 
@@ -28,6 +29,11 @@ public:
 
     const dev::DictionarySet &dictionaries() const { return m_dictionaries; }
     model::ParameterDocument &document() { return m_document; }
+    // What is known to be on the node's modules; outlives each connection.
+    model::DeviceImage &deviceImage() { return m_image; }
+    // The actuator-moving values this tool changed on this connection (offered back on stop,
+    // disconnect and quit).
+    model::ActuatorLedger &actuatorLedger() { return m_ledger; }
     model::TelegramLog &telegramLog() { return m_log; }
     model::Connection *connection() const { return m_connection.get(); }
     const std::vector<model::ModuleInfo> &modules() const { return m_modules; }
@@ -63,6 +69,8 @@ private:
     void updateLivePoll();
 
     const dev::DictionarySet &m_dictionaries;
+    model::DeviceImage m_image;
+    model::ActuatorLedger m_ledger{m_image};
     model::ParameterDocument m_document;
     model::TelegramLog m_log;
     std::unique_ptr<model::Connection> m_connection;

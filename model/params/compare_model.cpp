@@ -48,8 +48,10 @@ void CompareModel::compareWithFile(const dev::files::ParamFile &file, const QStr
 
 std::optional<dev::RawValue> CompareModel::otherValue(int module, const dev::ParamMeta *row) const
 {
+    // Only what is known to be on the device now: a stale value is not compared.
     if (m_other == Other::Device)
-        return m_document.value(module, row, Layer::Device);
+        return m_document.deviceCurrent(module, row) ? m_document.value(module, row, Layer::Device)
+                                                     : std::nullopt;
     const auto it = m_fileValues.find(module);
     if (it == m_fileValues.end())
         return std::nullopt;
@@ -67,7 +69,7 @@ void CompareModel::refresh()
             continue;
         for (const dev::ParamMeta &meta : m.dictionary->params) {
             // Settable parameters only: display values always differ from a snapshot.
-            if (meta.access != dev::Access::ReadWrite || !m.active(meta))
+            if (meta.access != dev::Access::ReadWrite || !m.active(meta) || !isSetting(meta))
                 continue;
             const auto theirs = otherValue(i, &meta);
             if (!theirs)

@@ -20,7 +20,7 @@ void ReadAllJob::start()
     m_queue.clear();
     m_problems.clear();
     for (int i = 0; i < m_document.moduleCount(); ++i)
-        if (m_document.module(i).online)
+        if (m_document.module(i).online && (!m_rowsOf || !m_rowsOf(i).empty()))
             m_queue.push_back(i);
     m_running = true;
     m_cancelled = false;
@@ -49,13 +49,12 @@ void ReadAllJob::next()
     const int module = m_queue.front();
     m_queue.erase(m_queue.begin());
     const ParamModule &m = m_document.module(module);
-    auto rows = readableRows(*m.dictionary, m.version, m.mode);
+    auto rows = m_rowsOf ? m_rowsOf(module) : readableRows(*m.dictionary, m.version, m.mode);
     const int address = m.address;
     auto lastTotal = std::make_shared<int>(0);
     m_handle = m_access.read(
         address, std::move(rows), Priority::User,
-        [this, module, address, lastTotal](const ReadResult &result) {
-            m_document.applyRead(module, result.values);
+        [this, address, lastTotal](const ReadResult &result) {
             m_doneBefore += *lastTotal;
             std::size_t failedRows = 0;
             QString reason;
@@ -139,7 +138,6 @@ void WriteChangesJob::next()
             [this](int done, int) { emit progress(m_doneBefore + done, m_total); });
     connect(job, &WriteJob::finished, this, [this, job, module](bool) {
         m_results[m_current].items = job->items();
-        m_document.applyWritten(module, job->items());
         m_doneBefore += static_cast<int>(job->items().size());
         ++m_current;
         // The job is still on the stack: delete it from the event loop (or with this job).

@@ -1,8 +1,9 @@
 // The editor's device actions over every online module of a ParameterDocument: Read all (each
-// module's readable rows in the fewest exchanges, with progress and cancel) and Write changes
-// (model::WriteJob per module — range check, pacing, read back — one module after the other,
-// with a per-parameter result list). Results go straight into the document. GUI thread; the
-// DeviceAccess and the document must outlive the job.
+// module's readable rows, or the rows a write or compare needs, in the fewest exchanges, with
+// progress and cancel) and Write changes (model::WriteJob per module — range check, pacing, read
+// back — one module after the other, with a per-parameter result list). The answers go into the
+// device image (DeviceAccess), which the document reads. GUI thread; the DeviceAccess and the
+// document must outlive the job.
 #pragma once
 
 #include "model/params/parameter_document.h"
@@ -10,6 +11,7 @@
 #include "model/session/write_job.h"
 
 #include <QObject>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -21,6 +23,11 @@ class ReadAllJob : public QObject
 public:
     ReadAllJob(DeviceAccess &access, ParameterDocument &document, QObject *parent = nullptr);
     ~ReadAllJob() override;
+
+    // Which rows of a document module to read (default: every readable row); modules with none
+    // are skipped.
+    using RowsOf = std::function<std::vector<const dev::ParamMeta *>(int module)>;
+    void setRows(RowsOf rows) { m_rowsOf = std::move(rows); }
 
     void start();
     void cancel();
@@ -37,6 +44,7 @@ private:
 
     DeviceAccess &m_access;
     ParameterDocument &m_document;
+    RowsOf m_rowsOf;
     std::vector<int> m_queue; // document module indexes still to read
     std::shared_ptr<DeviceAccess::ReadHandle> m_handle;
     QStringList m_problems;

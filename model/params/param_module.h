@@ -1,6 +1,7 @@
-// ParamModule: the values ValveTune holds for one module in three layers — what the device holds
-// (last read or verified write), what the open file holds, and the working value the user edits
-// (what Save writes and Write sends). Plain value; owned by the ParameterDocument.
+// ParamModule: one module of a document — what the open file holds and the working value the user
+// edits (what Save writes and Write sends). What the device holds is not here: it is in the
+// DeviceImage, at `address`, for a module paired with the device (ParameterDocument::value with
+// Layer::Device reads it). Plain value; owned by the ParameterDocument.
 #pragma once
 
 #include "dict/dictionary.h"
@@ -26,23 +27,26 @@ struct ParamModule
     QString identity;         // for people: "dma-pn-v51 51.02, mode 3"
     bool identityOwn = false; // identity is ours (a tr() sentence), not the device's own words
     QString label;            // the user's name for the module, from the file
-    bool online = false;      // identified on the connected node
+    bool online = false;      // paired with a module identified on the connected node
+    // Paired with the device module at `address` on this or an earlier connection: the Device
+    // column shows the image's values (not current after a disconnect). A file opened or a New
+    // document is not paired until the device is attached again.
+    bool paired = false;
     int versRaw = -1;
-    std::map<const dev::ParamMeta *, dev::RawValue> device, file, working;
+    std::map<const dev::ParamMeta *, dev::RawValue> file, working;
     // The module record as loaded: rows and keys this dictionary does not apply are written back
     // from here on save (nothing is dropped).
     std::optional<dev::files::ModuleRecord> record;
     std::optional<dev::files::MapReport> mapReport;
 
-    const std::map<const dev::ParamMeta *, dev::RawValue> &layer(Layer which) const
-    {
-        return which == Layer::Device ? device : which == Layer::File ? file : working;
-    }
+    // The file or working value (Layer::Device: ask the document).
     std::optional<dev::RawValue> value(const dev::ParamMeta *row, Layer which) const
     {
-        const auto &values = layer(which);
+        const auto &values = which == Layer::File ? file : working;
         const auto it = values.find(row);
-        return it == values.end() ? std::nullopt : std::optional<dev::RawValue>(it->second);
+        return it == values.end() || which == Layer::Device
+                   ? std::nullopt
+                   : std::optional<dev::RawValue>(it->second);
     }
     // Rows that apply to this module's version and mode and can be accessed.
     bool active(const dev::ParamMeta &row) const
@@ -51,6 +55,14 @@ struct ParamModule
                row.appliesTo(version.substr(0, version.find('.')), mode);
     }
 };
+
+// A setting: kept on the device, belongs in a parameter file and in Write Changes. Process values
+// (bus set values, control words) and live values are shown, never saved, compared or written
+// as settings.
+inline bool isSetting(const dev::ParamMeta &row)
+{
+    return row.kind == dev::RowKind::Setting;
+}
 
 // Equal raw values (numbers compared exactly: both come from the same integer or float32 grid).
 inline bool sameValue(const std::optional<dev::RawValue> &a, const std::optional<dev::RawValue> &b)

@@ -37,6 +37,9 @@ std::string valueText(const dev::ParamMeta &row, const dev::RawValue &value, dev
 
 ParameterDocument::ParameterDocument(QObject *parent) : QObject(parent)
 {
+    connect(&m_ownImage, &DeviceImage::changed, this, &ParameterDocument::onImageChanged);
+    connect(&m_ownImage, &DeviceImage::currencyChanged, this,
+            &ParameterDocument::onCurrencyChanged);
 }
 
 ParameterDocument::~ParameterDocument() = default;
@@ -91,16 +94,42 @@ void ParameterDocument::createNew(const NewFileChoice &choice,
     loadFile(newParamFile(choice, {}, std::chrono::system_clock::now()), dictionaries, QString());
 }
 
-void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)
+void ParameterDocument::setDeviceImage(DeviceImage *image)
 {
+    DeviceImage *now = image ? image : &m_ownImage;
+    if (now == &deviceImage())
+        return;
+    if (m_image)
+        m_image->disconnect(this);
+    m_ownImage.disconnect(this);
+    m_image = image;
+    connect(now, &DeviceImage::changed, this, &ParameterDocument::onImageChanged);
+    connect(now, &DeviceImage::currencyChanged, this, &ParameterDocument::onCurrencyChanged);
+    for (ParamModule &m : m_modules)
+        m.paired = m.online;
+    onCurrencyChanged();
+}
+
+QStringList ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos, bool addMissing)
+{
+    QStringList report;
     std::vector<ParamModule> modules = m_modules;
     auto sameFamily = [](const ParamModule &m, const ModuleInfo &info) {
         return m.dictionary == info.dictionary;
     };
-    // A one-module file goes onto the one module of its family on the node, whatever its address.
+    auto family = [](const dev::Dictionary *d) {
+        return d ? QString::fromStdString(d->family) : tr("unknown");
+    };
+    // A one-module document goes onto the one module of its family on the node, whatever its
+    // address.
     if (modules.size() == 1 && infos.size() == 1 && !modules[0].online &&
-        sameFamily(modules[0], infos[0]))
+        sameFamily(modules[0], infos[0]) && modules[0].address != infos[0].address) {
+        report << tr("Module %1 of the document goes to module %2 of the node.")
+                      .arg(modules[0].address)
+                      .arg(infos[0].address);
         modules[0].address = infos[0].address;
+    }
+    std::vector<bool> pairedNow(modules.size(), false);
     for (const ModuleInfo &info : infos) {
         if (!info.dictionary)
             continue;
@@ -108,12 +137,29 @@ void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)
             return m.address == info.address && sameFamily(m, info);
         });
         if (it == modules.end()) {
+            if (!addMissing) {
+                report << tr("Module %1 of the node (%2) is not in the document: not shown.")
+                              .arg(info.address)
+                              .arg(family(info.dictionary));
+                continue;
+            }
             modules.push_back(ParamModule{});
+            pairedNow.push_back(false);
             it = std::prev(modules.end());
             it->address = info.address;
             it->dictionary = info.dictionary;
+        } else if (!addMissing && (it->version != info.identification.version ||
+                                   it->mode != info.identification.mode)) {
+            report << tr("Module %1: the document is for %2, the device is %3. Rows the device "
+                         "does not apply are kept but not written.")
+                          .arg(info.address)
+                          .arg(it->identity,
+                               moduleIdentity(*info.dictionary, info.identification.version,
+                                              info.identification.mode));
         }
+        pairedNow[static_cast<std::size_t>(it - modules.begin())] = true;
         it->online = true;
+        it->paired = true;
         it->version = info.identification.version;
         it->mode = info.identification.mode;
         it->versRaw = info.versRaw;
@@ -122,7 +168,24 @@ void ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos)
                            : info.identityText;
         it->identityOwn = info.identityText.isEmpty();
     }
+    for (std::size_t i = 0; i < modules.size(); ++i) {
+        if (pairedNow[i])
+            continue;
+        const ParamModule &m = modules[i];
+        const auto other = std::find_if(infos.begin(), infos.end(), [&](const ModuleInfo &info) {
+            return info.address == m.address;
+        });
+        if (other != infos.end())
+            report << tr("Module %1 of the document is %2, the node's module %1 is %3: not "
+                         "paired, it stays offline.")
+                          .arg(m.address)
+                          .arg(family(m.dictionary), family(other->dictionary));
+        else
+            report << tr("Module %1 of the document has no module on the node: it stays offline.")
+                          .arg(m.address);
+    }
     resetModules(std::move(modules));
+    return report;
 }
 
 void ParameterDocument::detachDevice()
@@ -131,8 +194,45 @@ void ParameterDocument::detachDevice()
         if (m_modules[i].online) {
             m_modules[i].online = false;
             emit moduleChanged(static_cast<int>(i));
+            emit moduleValuesChanged(static_cast<int>(i));
         }
     }
+}
+
+void ParameterDocument::onImageChanged(int address, const std::vector<ImageChange> &changes)
+{
+    for (std::size_t i = 0; i < m_modules.size(); ++i) {
+        ParamModule &m = m_modules[i];
+        if (!m.online || m.address != address || !m.dictionary)
+            continue;
+        const auto &params = m.dictionary->params;
+        std::vector<const dev::ParamMeta *> touched;
+        for (const ImageChange &c : changes) {
+            if (!c.row || params.empty() || c.row < &params.front() || c.row > &params.back())
+                continue; // a row of another module's dictionary at this address
+            touched.push_back(c.row);
+            const auto working = m.value(c.row, Layer::Working);
+            const bool follows = !c.row->writable() || !isSetting(*c.row) || !working ||
+                                 (!m.file.count(c.row) && sameValue(working, c.before));
+            if (follows)
+                if (const auto now = deviceImage().value(address, c.row))
+                    m.working[c.row] = *now;
+        }
+        const int index = static_cast<int>(i);
+        if (touched.size() > 16) {
+            emit moduleValuesChanged(index);
+        } else {
+            for (const dev::ParamMeta *row : touched)
+                emit valueChanged(index, row);
+        }
+    }
+}
+
+void ParameterDocument::onCurrencyChanged()
+{
+    for (std::size_t i = 0; i < m_modules.size(); ++i)
+        if (m_modules[i].paired)
+            emit moduleValuesChanged(static_cast<int>(i));
 }
 
 void ParameterDocument::loadFile(const dev::files::ParamFile &file,
@@ -157,7 +257,10 @@ void ParameterDocument::loadFile(const dev::files::ParamFile &file,
         m.record = record;
         m.mapReport = dev::files::mapModule(record, *dict);
         for (const dev::files::RowMapping &r : m.mapReport->rows) {
-            if (r.applies() && r.meta && r.row != dev::files::RowMapping::kNoRow) {
+            // Process and live values in an old file are not settings: neither shown as the
+            // document's value nor written (the map report names them).
+            if (r.applies() && r.meta && r.row != dev::files::RowMapping::kNoRow &&
+                isSetting(*r.meta)) {
                 m.file[r.meta] = record.values[r.row].raw;
                 m.working[r.meta] = record.values[r.row].raw;
             }
@@ -186,6 +289,12 @@ dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) co
         record.mode = m.mode;
         record.label = m.label.toStdString();
         std::set<const dev::ParamMeta *> written;
+        // A file holds settings only: process and live values an old file had are dropped.
+        std::erase_if(record.values, [&](const dev::files::ValueRow &row) {
+            bool byAddress = false;
+            const dev::ParamMeta *meta = dev::files::findMeta(*m.dictionary, row, &byAddress);
+            return meta && !isSetting(*meta);
+        });
         for (dev::files::ValueRow &row : record.values) {
             bool byAddress = false;
             const dev::ParamMeta *meta = dev::files::findMeta(*m.dictionary, row, &byAddress);
@@ -199,7 +308,8 @@ dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) co
         }
         for (const dev::ParamMeta &meta : m.dictionary->params) {
             const auto it = m.working.find(&meta);
-            if (it != m.working.end() && !written.count(&meta) && meta.access != dev::Access::Write)
+            if (it != m.working.end() && !written.count(&meta) &&
+                meta.access != dev::Access::Write && isSetting(meta))
                 record.values.push_back(dev::files::makeValueRow(meta, it->second));
         }
         file.modules.push_back(std::move(record));
@@ -241,7 +351,31 @@ std::optional<dev::RawValue> ParameterDocument::value(int module, const dev::Par
 {
     if (module < 0 || module >= moduleCount())
         return std::nullopt;
-    return m_modules[static_cast<std::size_t>(module)].value(row, layer);
+    const ParamModule &m = m_modules[static_cast<std::size_t>(module)];
+    if (layer == Layer::Device)
+        return m.paired ? deviceImage().value(m.address, row) : std::nullopt;
+    return m.value(row, layer);
+}
+
+bool ParameterDocument::deviceCurrent(int module, const dev::ParamMeta *row) const
+{
+    if (module < 0 || module >= moduleCount())
+        return false;
+    const ParamModule &m = m_modules[static_cast<std::size_t>(module)];
+    return m.online && deviceImage().currentValue(m.address, row).has_value();
+}
+
+std::vector<const dev::ParamMeta *> ParameterDocument::rowsToRead(int module) const
+{
+    std::vector<const dev::ParamMeta *> rows;
+    if (module < 0 || module >= moduleCount() || !this->module(module).online)
+        return rows;
+    const ParamModule &m = this->module(module);
+    for (const dev::ParamMeta &row : m.dictionary->params)
+        if (row.readable() && row.writable() && isSetting(row) && m.active(row) &&
+            m.working.count(&row) && !deviceCurrent(module, &row))
+            rows.push_back(&row);
+    return rows;
 }
 
 std::optional<QString> ParameterDocument::edit(int module, const dev::ParamMeta *row,
@@ -308,47 +442,6 @@ void ParameterDocument::setWorking(int module, const dev::ParamMeta *row,
     emit valueChanged(module, row);
 }
 
-void ParameterDocument::applyRead(int module, const std::vector<RowValue> &values)
-{
-    if (module < 0 || module >= moduleCount())
-        return;
-    ParamModule &m = m_modules[static_cast<std::size_t>(module)];
-    std::vector<const dev::ParamMeta *> touched;
-    for (const RowValue &v : values) {
-        if (!v.row)
-            continue;
-        const auto oldDevice = m.value(v.row, Layer::Device);
-        const auto working = m.value(v.row, Layer::Working);
-        const bool follows = !v.row->writable() || !working ||
-                             (!m.file.count(v.row) && sameValue(working, oldDevice));
-        if (sameValue(oldDevice, v.value) && (!follows || sameValue(working, v.value)))
-            continue;
-        m.device[v.row] = v.value;
-        if (follows)
-            m.working[v.row] = v.value;
-        touched.push_back(v.row);
-    }
-    if (touched.size() > 16) {
-        emit moduleValuesChanged(module);
-    } else {
-        for (const dev::ParamMeta *row : touched)
-            emit valueChanged(module, row);
-    }
-}
-
-void ParameterDocument::applyWritten(int module, const std::vector<WriteItem> &items)
-{
-    if (module < 0 || module >= moduleCount())
-        return;
-    ParamModule &m = m_modules[static_cast<std::size_t>(module)];
-    for (const WriteItem &item : items) {
-        if (!item.row || !isOnDevice(item.status))
-            continue;
-        m.device[item.row] = item.readBack.value_or(item.value);
-        emit valueChanged(module, item.row);
-    }
-}
-
 std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
 {
     std::vector<WriteItem> items;
@@ -356,10 +449,11 @@ std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
         return items;
     const ParamModule &m = m_modules[static_cast<std::size_t>(module)];
     for (const dev::ParamMeta &row : m.dictionary->params) {
-        if (!row.writable() || !m.active(row))
+        if (!row.writable() || !m.active(row) || !isSetting(row))
             continue;
         const auto working = m.value(&row, Layer::Working);
-        const auto device = m.value(&row, Layer::Device);
+        const auto device =
+            deviceCurrent(module, &row) ? value(module, &row, Layer::Device) : std::nullopt;
         if (!working || sameValue(working, device))
             continue;
         WriteItem item;
@@ -373,13 +467,15 @@ std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
 
 bool ParameterDocument::differsFromDevice(int module, const dev::ParamMeta *row) const
 {
+    if (!row || !isSetting(*row))
+        return false;
     const auto device = value(module, row, Layer::Device);
     return device && !sameValue(value(module, row), device);
 }
 
 bool ParameterDocument::changed(int module, const dev::ParamMeta *row) const
 {
-    if (!row || !row->writable())
+    if (!row || !row->writable() || !isSetting(*row))
         return false;
     const auto working = value(module, row);
     if (!working)
@@ -397,9 +493,10 @@ void ParameterDocument::revertToDevice()
 {
     std::vector<Change> changes;
     for (int i = 0; i < moduleCount(); ++i)
-        for (const auto &[row, value] : m_modules[static_cast<std::size_t>(i)].device)
-            if (row->writable())
-                changes.push_back({i, row, value});
+        for (const dev::ParamMeta &row : m_modules[static_cast<std::size_t>(i)].dictionary->params)
+            if (row.writable() && isSetting(row))
+                if (const auto device = value(i, &row, Layer::Device))
+                    changes.push_back({i, &row, *device});
     editMany(changes, [] { return tr("Revert to device"); });
 }
 

@@ -1,7 +1,9 @@
 // ParameterDocument: the parameters of every module on screen — from the connected node, an open
-// .vtpar file or File ▸ New — in three layers (device, file, working; param_module.h), with undo
-// for every edit, the rows a safe write must send, and the ParamFile that Save writes. The tree
-// and compare models and the editor widgets all work on one document. GUI thread.
+// .vtpar file or File ▸ New — as file and working values (param_module.h), with undo for every
+// edit, the rows a safe write must send, and the ParamFile that Save writes. What the device
+// holds is read from the DeviceImage the document is paired with, never copied: a document is
+// never the device. The tree and compare models and the editor widgets all work on one document.
+// GUI thread.
 #pragma once
 
 #include "core/local_text.h"
@@ -9,9 +11,12 @@
 #include "model/params/param_module.h"
 #include "model/params/value_commands.h"
 #include "model/session/device_access.h"
+#include "model/session/device_image.h"
 #include "model/session/write_record.h"
 
 #include <QObject>
+#include <QPointer>
+#include <QStringList>
 #include <QUndoStack>
 #include <vector>
 
@@ -43,10 +48,16 @@ public:
     // File ▸ New: the modules of the choice with the dictionary's defaults (newParamFile), no file
     // path yet (Save asks for one).
     void createNew(const NewFileChoice &choice, const dev::DictionarySet &dictionaries);
-    // The identified modules of a connection: a module of the open file with the same address and
-    // family becomes online; other device modules are added; file modules stay (offline).
-    void attachDevice(const std::vector<ModuleInfo> &modules);
-    // All modules offline; their values stay (the device layer is what was last known).
+    // The device image the Device column reads (the connection's). Without one the document
+    // keeps an empty image of its own.
+    void setDeviceImage(DeviceImage *image);
+    const DeviceImage &deviceImage() const { return m_image ? *m_image : m_ownImage; }
+    // The identified modules of a connection: a module of the document with the same address and
+    // family becomes online (paired); with `addMissing`, device modules the document lacks are
+    // added (connecting to a node shows the node), otherwise they stay out (a file or New while
+    // connected shows the document's modules). Returns what paired with what, for people.
+    QStringList attachDevice(const std::vector<ModuleInfo> &modules, bool addMissing = true);
+    // All modules offline; the Device column keeps the last known values, shown as not current.
     void detachDevice();
     // Replaces the document with a loaded file (each record mapped onto its family's dictionary;
     // the reports say what did not map). Undo history is cleared. Records of a family the set does
@@ -88,16 +99,19 @@ public:
     void setWorking(int module, const dev::ParamMeta *row,
                     const std::optional<dev::RawValue> &value);
 
-    // Values read from the device. Read-only rows and rows the user has not changed follow the
-    // device; a file's values stay (the "differs from device" filter shows them).
-    void applyRead(int module, const std::vector<RowValue> &values);
-    // After a write job: rows now on the device update the device layer.
-    void applyWritten(int module, const std::vector<WriteItem> &items);
+    // Device values arrive through the image: read-only rows and rows the user has not changed
+    // follow the device; a file's values stay (the "differs from device" filter shows them).
 
-    // The safe write's rows: writable, active rows whose working value differs from the device's
-    // (or the device value is unknown), in dictionary order, with `before` set where known.
+    // Is the device's value of this row known now (this connection, not too old)?
+    bool deviceCurrent(int module, const dev::ParamMeta *row) const;
+    // The rows a safe write or a compare must read first: settings of an online module with a
+    // working value whose device value is not current.
+    std::vector<const dev::ParamMeta *> rowsToRead(int module) const;
+    // The safe write's rows: writable, active settings whose working value differs from the
+    // device's current value, in dictionary order, with `before` set; rows whose device value is
+    // not current are listed too (before unset) — read them first (rowsToRead) so none are.
     std::vector<WriteItem> pendingWrites(int module) const;
-    // Rows whose working value differs from the device (for filters and Revert to device).
+    // Rows whose working value differs from the device's last known value (filters, Revert).
     bool differsFromDevice(int module, const dev::ParamMeta *row) const;
     // Working value differs from the file's (or, with no file value, from the device's).
     bool changed(int module, const dev::ParamMeta *row) const;
@@ -119,6 +133,8 @@ signals:
 
 private:
     void resetModules(std::vector<ParamModule> modules);
+    void onImageChanged(int address, const std::vector<ImageChange> &changes);
+    void onCurrencyChanged();
 
     std::vector<ParamModule> m_modules;
     std::vector<dev::files::ModuleRecord> m_unmapped;
@@ -126,6 +142,8 @@ private:
     QString m_filePath;
     dev::Language m_language = dev::Language::English;
     QUndoStack m_undo;
+    DeviceImage m_ownImage;
+    QPointer<DeviceImage> m_image; // null: m_ownImage
 };
 
 } // namespace vt::model

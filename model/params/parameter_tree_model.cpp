@@ -47,14 +47,16 @@ QString formatRaw(const dev::ParamMeta &row, const dev::RawValue &value, dev::La
     return qs(dev::formatValue(row, raw, lang));
 }
 
-QString stateWordText(const ParamModule &module, dev::Language lang)
+QString stateWordText(const ParameterDocument &document, int moduleIndex)
 {
+    const ParamModule &module = document.module(moduleIndex);
+    const dev::Language lang = document.language();
     if (!module.dictionary)
         return {};
     for (const dev::ParamMeta &row : module.dictionary->params) {
         if (!isBitField(row) || (row.block != "d" && row.block != "db") || !row.readable())
             continue;
-        if (const auto value = module.value(&row, Layer::Device))
+        if (const auto value = document.value(moduleIndex, &row, Layer::Device))
             return qs(row.name) + QStringLiteral(" = ") + formatRaw(row, *value, lang);
         return {};
     }
@@ -255,6 +257,30 @@ QString ParameterTreeModel::valueText(int module, const dev::ParamMeta &row, Lay
     return value ? formatRaw(row, *value, m_document.language()) : QString();
 }
 
+QString ParameterTreeModel::deviceAgeText(int module, const dev::ParamMeta &row) const
+{
+    const ParamModule &m = m_document.module(module);
+    const DeviceImage &image = m_document.deviceImage();
+    const ImageEntry *entry = m.paired ? image.entry(m.address, &row) : nullptr;
+    if (!entry)
+        return {};
+    const auto seconds =
+        std::chrono::duration_cast<std::chrono::seconds>(DeviceImage::Clock::now() - entry->when)
+            .count();
+    const QString age = seconds < 120
+                            ? tr("%n second(s) ago", nullptr, static_cast<int>(seconds))
+                            : tr("%n minute(s) ago", nullptr, static_cast<int>(seconds / 60));
+    if (!image.connected() || entry->connection != image.connection())
+        return tr("Read %1, before the connection was lost or renewed: not known to be on the "
+                  "device now. Read the device again.")
+            .arg(age);
+    if (!image.isCurrent(*entry))
+        return tr("Read %1: too old to be trusted. Read the device again.").arg(age);
+    return entry->source == ImageSource::Written
+               ? tr("Written %1, acknowledged by the device.").arg(age)
+               : tr("Read from the device %1.").arg(age);
+}
+
 QString ParameterTreeModel::rangeText(const dev::ParamMeta &row) const
 {
     const dev::Language lang = m_document.language();
@@ -354,8 +380,16 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
         }
         return paramData(node, column, Qt::DisplayRole);
     case Qt::ToolTipRole:
+        if (column == ColDevice)
+            if (const QString age = deviceAgeText(module, row); !age.isEmpty())
+                return age;
+        return helpText(module, row);
     case HelpRole: return helpText(module, row);
     case Qt::ForegroundRole:
+        // A device value not known now (before a reconnect, too old): grey, its age on hover.
+        if (column == ColDevice && m_document.value(module, &row, Layer::Device) &&
+            !m_document.deviceCurrent(module, &row))
+            return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
         if (!row.writable() || !m.active(row))
             return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
         return {};

@@ -75,6 +75,8 @@ private:
     QVariant moduleData(const Node &node, int column, int role) const;
     QString valueText(int module, const dev::ParamMeta &row, Layer layer) const;
     QString rangeText(const dev::ParamMeta &row) const;
+    // "Read 12 seconds ago", or why the device value is not current; empty without one.
+    QString deviceAgeText(int module, const dev::ParamMeta &row) const;
     QString helpText(int module, const dev::ParamMeta &row) const;
 
     ParameterDocument &m_document;
@@ -87,6 +89,6 @@ private:
 // Text of a raw value as the editor shows it (enum label, bits, "1.000 V", a quoted string).
 QString formatRaw(const dev::ParamMeta &row, const dev::RawValue &value, dev::Language lang);
 // The module's status word (the first bit-field row of its display block) as text, if known.
-QString stateWordText(const ParamModule &module, dev::Language lang);
+QString stateWordText(const ParameterDocument &document, int module);
 
 } // namespace vt::model

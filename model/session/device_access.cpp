@@ -53,6 +53,7 @@ DeviceAccess::DeviceAccess(Session &session, const dev::DictionarySet &dictionar
                            dev::HcsProduct product, QObject *parent)
     : QObject(parent), m_session(session), m_dictionaries(dictionaries), m_product(product)
 {
+    m_ownImage.beginConnection(); // its values are current while this access lives
 }
 
 DeviceAccess::~DeviceAccess() = default;
@@ -170,15 +171,21 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
         QTimer::singleShot(0, this, conclude);
         return handle;
     }
+    QPointer<DeviceImage> image = &this->image();
     for (auto &t : plan) {
         auto rowsOfT = t.rows;
         handle->m_ids.push_back(m_session.submit(
             std::move(t), priority,
-            [state, conclude, rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
+            [state, conclude, image, module, rowsOfT = std::move(rowsOfT)](const Outcome &outcome) {
                 if (outcome.status == OutcomeStatus::Ok &&
                     outcome.reply.values.size() == rowsOfT.size()) {
-                    for (std::size_t i = 0; i < rowsOfT.size(); ++i)
+                    std::vector<std::pair<const dev::ParamMeta *, dev::RawValue>> answered;
+                    for (std::size_t i = 0; i < rowsOfT.size(); ++i) {
                         state->got[rowsOfT[i]] = outcome.reply.values[i];
+                        answered.emplace_back(rowsOfT[i], outcome.reply.values[i]);
+                    }
+                    if (image)
+                        image->recordRead(module, answered);
                 } else if (outcome.status != OutcomeStatus::Cancelled) {
                     state->failures.push_back(RowFailure{rowsOfT, outcome});
                 }
@@ -195,8 +202,15 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
 RequestId DeviceAccess::write(int module, const dev::ParamMeta &row, const dev::RawValue &value,
                               Priority priority, Completion done)
 {
-    return m_session.submit(m_session.adapter().planWrite(module, row, value), priority,
-                            std::move(done));
+    QPointer<DeviceImage> image = &this->image();
+    return m_session.submit(
+        m_session.adapter().planWrite(module, row, value), priority,
+        [image, module, row = &row, value, done = std::move(done)](const Outcome &outcome) {
+            if (outcome.status == OutcomeStatus::Ok && image)
+                image->recordWritten(module, row, value);
+            if (done)
+                done(outcome);
+        });
 }
 
 void DeviceAccess::ReadHandle::cancel()

@@ -6,9 +6,11 @@
 
 #include "dict/dictionary.h"
 #include "dict/identify.h"
+#include "model/session/device_image.h"
 #include "model/session/session.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <functional>
 #include <memory>
@@ -75,6 +77,10 @@ public:
 
     Session &session() const { return m_session; }
     const dev::DictionarySet &dictionaries() const { return m_dictionaries; }
+    // Every answer to a read or a write goes into this image. By default the access keeps its
+    // own; useImage() points it at one that outlives the connection (the GUI's).
+    DeviceImage &image() const { return m_image ? *m_image : m_ownImage; }
+    void useImage(DeviceImage &image) { m_image = &image; }
 
     void identify(int module, std::function<void(const IdentifyResult &)> done);
 
@@ -87,7 +93,7 @@ public:
                                      ReadProgress progress = {});
 
     // Writes one raw value. The caller range-checks first (dev::checkWrite); this does not read
-    // back.
+    // back. An acknowledged write is recorded in the image as written, not verified.
     RequestId write(int module, const dev::ParamMeta &row, const dev::RawValue &value,
                     Priority priority, Completion done);
 
@@ -95,6 +101,8 @@ private:
     Session &m_session;
     const dev::DictionarySet &m_dictionaries;
     dev::HcsProduct m_product;
+    mutable DeviceImage m_ownImage;
+    QPointer<DeviceImage> m_image; // null: m_ownImage
 };
 
 // Cancels what is still queued of one read.

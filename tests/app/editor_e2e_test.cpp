@@ -125,7 +125,10 @@ TEST_F(EditorE2E, EditWriteUndoSaveReopenCompare)
     QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
     window->device().readAll();
     ASSERT_TRUE(read.wait(kWaitMs));
-    window->device().compareWithDevice();
+    qRegisterMetaType<ui::CompareDialog *>();
+    QSignalSpy compared(&window->device(), &app::DeviceController::compareDialogOpened);
+    window->device().compareWithDevice(); // reads the compared rows first
+    ASSERT_TRUE(compared.wait(kWaitMs));
     auto *compare = window->findChild<ui::CompareDialog *>();
     ASSERT_NE(compare, nullptr);
     EXPECT_EQ(compare->compareModel()->rowCount(), 0);
@@ -165,8 +168,7 @@ TEST_F(EditorE2E, LiveDisplayValuesArriveWithoutDisturbingAnEdit)
     ASSERT_NE(line, nullptr);
     line->setText(QStringLiteral("0.5"));
     // A stale display value is replaced by the slow poll while the editor stays open with its text.
-    model::ParameterDocument &doc = window->workspace().document();
-    doc.applyRead(0, {{row("d1.11"), 12345.0}});
+    window->workspace().deviceImage().recordRead(1, {{row("d1.11"), 12345.0}});
     ASSERT_EQ(working("d1.11"), dev::RawValue{12345.0});
     ASSERT_TRUE(waitUntil([&] { return working("d1.11") != dev::RawValue{12345.0}; }));
     EXPECT_EQ(line->text(), "0.5");

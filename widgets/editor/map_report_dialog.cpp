@@ -10,9 +10,9 @@
 
 namespace vt::ui {
 
-bool MapReportDialog::needed(const model::ParameterDocument &document)
+bool MapReportDialog::needed(const model::ParameterDocument &document, const QStringList &pairing)
 {
-    if (!document.unknownFamilies().empty())
+    if (!document.unknownFamilies().empty() || !pairing.isEmpty())
         return true;
     for (const model::ParamModule &m : document.modules()) {
         if (!m.mapReport)
@@ -27,13 +27,20 @@ bool MapReportDialog::needed(const model::ParameterDocument &document)
     return false;
 }
 
-MapReportDialog::MapReportDialog(const model::ParameterDocument &document, QWidget *parent)
+MapReportDialog::MapReportDialog(const model::ParameterDocument &document,
+                                 const QStringList &pairing, QWidget *parent)
     : QDialog(parent)
 {
     setObjectName(QStringLiteral("mapReportDialog"));
     setWindowTitle(tr("What Did Not Map"));
     const dev::Language lang = document.language();
     auto q = [lang](const dev::LocalText &t) { return QString::fromStdString(t.in(lang)); };
+    if (!pairing.isEmpty()) {
+        m_text += tr("With the connected node:") + QLatin1Char('\n');
+        for (const QString &line : pairing)
+            m_text += QStringLiteral("  ") + line + QLatin1Char('\n');
+        m_text += QLatin1Char('\n');
+    }
     for (const model::ParamModule &m : document.modules()) {
         if (!m.mapReport)
             continue;

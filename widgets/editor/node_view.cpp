@@ -24,8 +24,7 @@ NodeView::NodeView(model::ParameterDocument &document, QWidget *parent)
             [this](int module, const dev::ParamMeta *) {
                 QTreeWidgetItem *node = topLevelItem(0);
                 if (node && module < node->childCount())
-                    node->child(module)->setText(
-                        4, model::stateWordText(m_document.module(module), m_document.language()));
+                    node->child(module)->setText(4, model::stateWordText(m_document, module));
             });
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         const QVariant module = item->data(0, Qt::UserRole);
@@ -61,7 +60,7 @@ void NodeView::rebuild()
                       m.label.isEmpty() ? QString::fromStdString(m.dictionary->family) : m.label);
         item->setText(2, QString::fromStdString(m.version));
         item->setText(3, QString::fromStdString(m.mode));
-        item->setText(4, model::stateWordText(m, m_document.language()));
+        item->setText(4, model::stateWordText(m_document, i));
         item->setText(5, m.online ? tr("online") : tr("offline"));
         item->setToolTip(1, m.identity);
     }

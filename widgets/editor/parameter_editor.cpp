@@ -142,7 +142,7 @@ void ParameterEditor::updateColumns()
 {
     bool device = false;
     for (const model::ParamModule &m : m_document.modules())
-        device = device || m.online || !m.device.empty();
+        device = device || m.paired;
     // Device and file values side by side when both exist; the file column needs a file.
     m_view->setColumnHidden(ParameterTreeModel::ColDevice, !device);
     m_view->setColumnHidden(ParameterTreeModel::ColFile, !m_document.hasFile());

@@ -1,11 +1,14 @@
 #include "write_dialog.h"
 
 #include "model/params/parameter_tree_model.h"
+#include "model/session/actuator_ledger.h"
 #include "model/text_language.h"
+#include "widgets/actuator_confirm.h"
 
 #include <QDialogButtonBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
@@ -138,6 +141,23 @@ void WriteDialog::showItem(int planIndex, int index)
 }
 
 void WriteDialog::confirm()
+{
+    if (m_started)
+        return;
+    // Rows that can move the valve (the set-value source …) are named once more on their own.
+    QStringList moving;
+    for (const model::ModuleWriteResult &r : m_job->results())
+        for (const model::WriteItem &item : r.items)
+            if (model::movesActuator(*item.row))
+                moving << actuatorWriteLine(m_document.module(r.module).address, *item.row,
+                                            item.before, item.value, m_document.language());
+    confirmActuatorWrites(this, moving, [this, guard = QPointer<WriteDialog>(this)] {
+        if (guard)
+            start();
+    });
+}
+
+void WriteDialog::start()
 {
     if (m_started)
         return;

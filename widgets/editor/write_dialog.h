@@ -23,7 +23,8 @@ public:
                 std::vector<model::ModuleWriteResult> plan, QWidget *parent = nullptr);
     ~WriteDialog() override;
 
-    // Starts the write (what the confirmation's "Write" button does).
+    // What the "Write" button does: rows that can move the valve are confirmed once more on
+    // their own, then the write starts.
     void confirm();
     bool isWriting() const;
     bool finishedWriting() const { return m_finished; }
@@ -38,6 +39,7 @@ protected:
     void reject() override;
 
 private:
+    void start();
     void fillConfirmation();
     void showItem(int module, int index);
 

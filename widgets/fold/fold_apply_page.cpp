@@ -4,12 +4,14 @@
 #include "model/fold/module_guide.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"
+#include "widgets/actuator_confirm.h"
 #include "widgets/fold/fold_wizard.h"
 
 #include <QCheckBox>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -131,6 +133,27 @@ void FoldApplyPage::startApply()
         for (const model::FoldModule &m : plan.modules)
             current.push_back(m.address);
     }
+    // The apply rewrites the modules' options and addresses on a live node: asked once, naming
+    // each module.
+    QStringList lines;
+    for (std::size_t i = 0; i < plan.modules.size(); ++i) {
+        if (pointToPoint() && static_cast<int>(i) != m_guided)
+            continue;
+        lines << tr("Module at address %1: the plan's options, then address %2")
+                     .arg(current[i])
+                     .arg(plan.modules[i].address);
+    }
+    confirmActuatorWrites(
+        this, lines, [this, guard = QPointer<FoldApplyPage>(this), current = std::move(current)] {
+            if (guard && fold() && fold()->online() && !isRunning())
+                runApply(current);
+        });
+}
+
+void FoldApplyPage::runApply(const std::vector<int> &current)
+{
+    FoldWizard *wizard = fold();
+    const model::FoldPlan &plan = wizard->plan();
     // A new job per run keeps the previous modules' results only when guiding module by module.
     if (!m_job || !pointToPoint()) {
         delete m_job;

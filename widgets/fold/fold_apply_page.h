@@ -28,6 +28,7 @@ public:
 
     // Bus: the whole node. Point-to-point: the module the guide names now.
     void startApply();
+    void runApply(const std::vector<int> &current); // after the person agreed
     bool isRunning() const;
     model::FoldApply *job() const { return m_job; }
     // The connection changes or goes: the apply job (which uses its access) is dropped first.

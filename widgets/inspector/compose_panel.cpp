@@ -8,6 +8,7 @@
 #include "model/session/connection.h"
 #include "model/text_language.h"
 #include "transports/byte_span.h"
+#include "widgets/actuator_confirm.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -128,14 +129,16 @@ ComposePanel::ComposePanel(QWidget *parent)
     retranslate();
 }
 
-void ComposePanel::setConnection(vt::model::Connection *connection)
+void ComposePanel::setConnection(vt::model::Connection *connection,
+                                 const std::vector<vt::model::ModuleInfo> &modules)
 {
     m_connection = connection;
+    m_modules = modules;
     if (connection) {
         // Pre-fill the addresses the link talks to, so the first frame goes somewhere real.
-        const auto modules = connection->moduleAddresses();
-        if (!modules.empty()) {
-            const QString first = QString::number(modules.front());
+        const auto addresses = connection->moduleAddresses();
+        if (!addresses.empty()) {
+            const QString first = QString::number(addresses.front());
             for (const char *name : {"sadr", "unit", "poll", "node"})
                 m_edits[QString::fromLatin1(name)]->setText(first);
         }
@@ -151,6 +154,7 @@ void ComposePanel::setConnection(vt::model::Connection *connection)
 void ComposePanel::clearConnection()
 {
     m_connection = nullptr;
+    m_modules.clear();
     updateSend();
 }
 
@@ -409,9 +413,18 @@ bool ComposePanel::send()
     if (!canSend())
         return false;
     const vt::dev::inspect::ComposedFrame frame = *m_frame;
+    const int module = moduleOf(m_spec);
+    const vt::dev::ParamMeta *row = frame.writes ? writtenRow(m_spec) : nullptr;
     if (frame.writes) {
-        const QString question = tr("This frame changes the device:\n%1\n\nSend it?")
-                                     .arg(QString::fromStdString(vt::dev::toHex(frame.bytes)));
+        const QString hex = QString::fromStdString(vt::dev::toHex(frame.bytes));
+        const QString question =
+            row ? tr("This frame changes the device:\n%1\n%2\n\nSend it?")
+                      .arg(actuatorWriteLine(module, *row,
+                                             m_connection->access().image().value(module, row),
+                                             vt::dev::RawValue{static_cast<double>(m_spec.value)},
+                                             vt::model::textLanguage()),
+                           hex)
+                : tr("This frame changes the device:\n%1\n\nSend it?").arg(hex);
         const bool yes = m_confirm ? m_confirm(question)
                                    : QMessageBox::question(this, tr("Send a write"), question) ==
                                          QMessageBox::Yes;
@@ -429,8 +442,10 @@ bool ComposePanel::send()
     m_resultText = [] { return tr("Sent; waiting for the answer…"); };
     m_result->setText(m_resultText());
     QPointer<ComposePanel> self(this);
+    const bool writes = frame.writes;
     m_connection->session().submit(
-        std::move(t), vt::model::Priority::User, [self](const vt::model::Outcome &o) {
+        std::move(t), vt::model::Priority::User,
+        [self, writes, module, row](const vt::model::Outcome &o) {
             if (!self)
                 return;
             self->m_busy = false;
@@ -444,12 +459,61 @@ bool ComposePanel::send()
                 return why.isEmpty() ? vt::model::outcomeStatusText(status)
                                      : tr("%1: %2").arg(vt::model::outcomeStatusText(status), why);
             };
+            // A write may have changed the device whatever the answer: read that parameter back
+            // so the device image follows; an address no dictionary names cannot be followed.
+            if (writes && o.sent && self->m_connection) {
+                if (row) {
+                    self->m_connection->access().read(module, {row}, vt::model::Priority::User,
+                                                      [](const vt::model::ReadResult &) {});
+                } else {
+                    self->m_resultText = [first = self->m_resultText] {
+                        return first() + QLatin1Char('\n') +
+                               tr("No parameter of the module's dictionary has this address: the "
+                                  "editor's Device column cannot follow it. Read the device "
+                                  "again.");
+                    };
+                }
+            }
             const QString text = self->m_resultText();
             self->m_result->setText(text);
             self->updateSend();
             emit self->sendFinished(text, o.status == vt::model::OutcomeStatus::Ok);
         });
     return true;
+}
+
+const vt::dev::ParamMeta *ComposePanel::writtenRow(const vt::dev::inspect::ComposeSpec &spec) const
+{
+    using vt::dev::inspect::ComposeKind;
+    const int module = moduleOf(spec);
+    const vt::dev::Dictionary *dictionary = nullptr;
+    for (const vt::model::ModuleInfo &info : m_modules)
+        if (info.address == module)
+            dictionary = info.dictionary;
+    if (!dictionary)
+        return nullptr;
+    for (const vt::dev::ParamMeta &row : dictionary->params) {
+        switch (spec.kind) {
+        case ComposeKind::GatewayWrite:
+        case ComposeKind::ModbusWrite:
+            if (row.id && *row.id == spec.id)
+                return &row;
+            break;
+        case ComposeKind::HartParamWrite:
+        case ComposeKind::PkwWrite:
+            if (row.ind && row.pnu && *row.ind == spec.ind && *row.pnu == spec.pnu &&
+                (spec.kind == ComposeKind::PkwWrite || row.instance == spec.instance))
+                return &row;
+            break;
+        case ComposeKind::SdoDownload:
+            if (row.canopen && row.canopen->index == spec.index &&
+                row.canopen->sub == spec.subindex)
+                return &row;
+            break;
+        default: return nullptr;
+        }
+    }
+    return nullptr;
 }
 
 void ComposePanel::retranslate()

@@ -1,10 +1,13 @@
 // ComposePanel: the inspector's composer — build a request from fields (HCS CMD 3/6/15, Modbus
 // FC 3/6, DSP-408 PKW, HART, CANopen SDO) with the codecs' encoders, see its bytes and fields,
-// and send it on the current link as a raw transaction. Writes ask for confirmation first; a
-// frame the link cannot carry keeps Send disabled and says why.
+// and send it on the current link as a raw transaction. Writes ask for confirmation first, naming
+// the parameter and its old → new value where the module's dictionary knows the address; once
+// answered, that parameter is read back so the device image (the editor's Device column) follows.
+// A frame the link cannot carry keeps Send disabled and says why.
 #pragma once
 
 #include "inspect/compose.h"
+#include "model/session/device_access.h"
 #include "model/session/session.h"
 
 #include <QPointer>
@@ -35,7 +38,9 @@ public:
     explicit ComposePanel(QWidget *parent = nullptr);
 
     // The link to send on; not owned (QPointer: a destroyed connection disables Send).
-    void setConnection(vt::model::Connection *connection);
+    // `modules`: the identified modules, whose dictionaries name a written address.
+    void setConnection(vt::model::Connection *connection,
+                       const std::vector<vt::model::ModuleInfo> &modules = {});
     void clearConnection();
     // Asked before a write leaves; returns true to send. Default: a QMessageBox question.
     void setConfirmation(std::function<bool(const QString &question)> confirm);
@@ -74,9 +79,12 @@ private:
     void updateSend();
     std::optional<long long> number(const QString &name, QString *problem) const;
     int moduleOf(const vt::dev::inspect::ComposeSpec &spec) const;
+    // The dictionary row a write frame addresses on its module; null when none is known.
+    const vt::dev::ParamMeta *writtenRow(const vt::dev::inspect::ComposeSpec &spec) const;
 
     QPointer<vt::model::Connection> m_connection;
     std::function<bool(const QString &)> m_confirm;
+    std::vector<vt::model::ModuleInfo> m_modules;
     QComboBox *m_kind;
     QComboBox *m_familyBox;
     QComboBox *m_widthBox;

@@ -155,7 +155,7 @@ void InspectorView::setConnection(vt::model::Connection *connection,
     m_decode->setDictionary(dict);
     m_decode->setFamily(familyFor(modules.empty() ? -1 : modules.front().address));
     m_compose->setFamily(familyFor(modules.empty() ? -1 : modules.front().address));
-    m_compose->setConnection(connection);
+    m_compose->setConnection(connection, modules);
     onCurrentRowChanged();
 }
 

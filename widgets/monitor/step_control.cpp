@@ -2,6 +2,7 @@
 
 #include "dict/cooking.h"
 #include "model/text_language.h"
+#include "widgets/actuator_confirm.h"
 #include "widgets/number_box.h"
 
 #include <QComboBox>
@@ -9,6 +10,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <cmath>
@@ -25,6 +27,9 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
     m_write = new QPushButton(this);
     m_activate = new QPushButton(this);
     m_activate->setVisible(false);
+    m_arm = new QPushButton(this);
+    m_arm->setObjectName(QStringLiteral("stepArm"));
+    m_arm->setCheckable(true);
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -36,6 +41,7 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
     line->addWidget(m_row);
     line->addWidget(m_value);
     line->addWidget(m_write);
+    line->addWidget(m_arm);
     line->addWidget(m_activate);
     line->addStretch(1);
     auto *layout = new QVBoxLayout(this);
@@ -48,6 +54,7 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
     connect(m_write, &QPushButton::clicked, this, &StepControl::writeStep);
     connect(m_activate, &QPushButton::clicked, this, &StepControl::enableBusSetValue);
     connect(m_value, &NumberBox::refused, m_status, &QLabel::setText);
+    connect(m_arm, &QPushButton::clicked, this, [this](bool on) { setArmed(on); });
     retranslate();
     updateEnabled();
 }
@@ -76,6 +83,8 @@ void StepControl::clearConnection()
 {
     m_step.reset(); // a running WriteJob is cancelled with it
     m_access = nullptr;
+    m_armed = false;
+    showArmed();
     m_modules.clear();
     const QSignalBlocker blockModule(m_module);
     const QSignalBlocker blockRow(m_row);
@@ -191,6 +200,25 @@ void StepControl::writeStep()
     }
     const double factor = row->scale.factor != 0 ? row->scale.factor : 1.0;
     const double raw = std::round(*typed / factor);
+    if (m_armed) {
+        startStep(*row, raw);
+        return;
+    }
+    const model::ModuleInfo *module = currentModule();
+    const QString line =
+        actuatorWriteLine(module->address, *row, m_access->image().value(module->address, row),
+                          dev::RawValue{raw}, model::textLanguage());
+    confirmActuatorWrites(this, {line}, [this, guard = QPointer<StepControl>(this), row, raw] {
+        if (guard && m_step && currentRow() == row)
+            startStep(*row, raw);
+    });
+}
+
+void StepControl::startStep(const dev::ParamMeta &rowRef, double raw)
+{
+    const dev::ParamMeta *row = &rowRef;
+    if (!m_step || m_step->isBusy())
+        return;
     m_activate->setVisible(false);
     m_status->setText(tr("Checking E17, then writing %1 …").arg(QString::fromStdString(row->name)));
     m_step->setLanguage(model::textLanguage());
@@ -202,10 +230,57 @@ void StepControl::enableBusSetValue()
 {
     if (!m_step || m_step->isBusy())
         return;
-    m_activate->setVisible(false);
-    m_status->setText(tr("Writing E17 = 2 …"));
-    m_step->enableBusSetValue();
-    updateEnabled();
+    const model::ModuleInfo *module = currentModule();
+    const dev::ParamMeta *e17 = model::SetValueStep::activationRow(*module->dictionary);
+    if (!e17)
+        return;
+    const QString line = actuatorWriteLine(
+        module->address, *e17, m_access->image().value(module->address, e17),
+        dev::RawValue{double(model::SetValueStep::kBusSetValueOnly)}, model::textLanguage());
+    confirmActuatorWrites(this, {line}, [this, guard = QPointer<StepControl>(this)] {
+        if (!guard || !m_step || m_step->isBusy())
+            return;
+        m_activate->setVisible(false);
+        m_status->setText(tr("Writing E17 = 2 …"));
+        m_step->enableBusSetValue();
+        updateEnabled();
+    });
+}
+
+void StepControl::setArmed(bool armed)
+{
+    const dev::ParamMeta *row = currentRow();
+    const model::ModuleInfo *module = currentModule();
+    if (!armed || !row || !module) {
+        m_armed = false;
+        showArmed();
+        return;
+    }
+    const QString line = tr("Module %1: %2 (%3), every step until disconnect, without asking again")
+                             .arg(module->address)
+                             .arg(QString::fromStdString(row->name),
+                                  QString::fromStdString(row->label.in(model::textLanguage())));
+    m_arm->setChecked(false); // checked only once the person agreed
+    confirmActuatorWrites(this, {line}, [this, guard = QPointer<StepControl>(this)] {
+        if (!guard || !m_access)
+            return;
+        m_armed = true;
+        showArmed();
+    });
+}
+
+void StepControl::showArmed()
+{
+    m_arm->setChecked(m_armed);
+    m_arm->setText(m_armed ? tr("Armed") : tr("Arm"));
+    m_arm->setStyleSheet(m_armed
+                             ? QStringLiteral("QPushButton { color: white; background: #c62828; "
+                                              "font-weight: bold; }")
+                             : QString());
+    m_arm->setToolTip(m_armed ? tr("Steps are written without asking until you disarm or "
+                                   "disconnect. Click to disarm.")
+                              : tr("Arm the step: after one confirmation, steps are written "
+                                   "without asking again until disconnect."));
 }
 
 void StepControl::onWritten(int module, const std::vector<model::WriteItem> &items, bool complete)
@@ -253,6 +328,7 @@ void StepControl::updateEnabled()
     m_value->setEnabled(ready);
     m_write->setEnabled(ready);
     m_activate->setEnabled(ready);
+    m_arm->setEnabled(m_armed || ready);
 }
 
 void StepControl::changeEvent(QEvent *event)
@@ -269,6 +345,7 @@ void StepControl::retranslate()
     m_write->setToolTip(
         tr("Writes the bus set value (range-checked, read back) and marks it on the time axis. "
            "E17 must be 2 (only the digital set values active), as the manuals require."));
+    showArmed();
     m_activate->setText(tr("Set E17 = 2"));
     m_activate->setToolTip(tr("Switches the analogue set value off (E17 = 2, stored in EEPROM)."));
     for (int i = 0; i < m_module->count(); ++i)

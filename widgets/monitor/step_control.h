@@ -1,7 +1,8 @@
 // StepControl: the monitor's set value step — pick a module and its bus set value
 // (A1.01 / A2.01), a value in display units, and write it through model::SetValueStep, which
 // checks E17 first. A refusal is shown inline with the manuals' reason and an offer to set
-// E17 = 2. GUI thread.
+// E17 = 2. Both move the valve: each asks the person first (module, parameter, old → new), unless
+// the step is armed — once per connection, visibly, disarmed on disconnect. GUI thread.
 #pragma once
 
 #include "model/monitor/set_value_step.h"
@@ -33,10 +34,13 @@ public:
     void setStepValue(double display);
     double stepValue() const;
 
-    // The Step button: E17 check, then the write.
+    // The Step button: confirmation (unless armed), E17 check, then the write.
     void writeStep();
-    // The offered "Set E17 = 2" button.
+    // The offered "Set E17 = 2" button (always confirmed).
     void enableBusSetValue();
+    // Arms the step for this connection after one confirmation (false: disarm at once).
+    void setArmed(bool armed);
+    bool isArmed() const { return m_armed; }
 
     QString statusText() const;
     bool activationOffered() const; // the "Set E17 = 2" button is shown
@@ -58,6 +62,8 @@ private:
     const model::ModuleInfo *currentModule() const;
     void onWritten(int module, const std::vector<model::WriteItem> &items, bool complete);
     static QString writtenText(const std::vector<model::WriteItem> &items);
+    void startStep(const dev::ParamMeta &row, double raw);
+    void showArmed();
 
     model::DeviceAccess *m_access = nullptr;
     std::vector<model::ModuleInfo> m_modules; // those with a bus set value
@@ -68,6 +74,8 @@ private:
     NumberBox *m_value = nullptr;
     QPushButton *m_write = nullptr;
     QPushButton *m_activate = nullptr;
+    QPushButton *m_arm = nullptr;
+    bool m_armed = false;
     QLabel *m_status = nullptr;
     // A status made from run-time facts (a write's outcome, the E17 hint) is rendered again in a
     // language switched to while it shows.

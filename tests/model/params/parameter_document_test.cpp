@@ -67,7 +67,10 @@ TEST(ParameterDocument, EditIsUndoableAndRefusedOutOfRangeWithTheLimits)
 
 TEST(ParameterDocument, ReadValuesFollowUnlessTheUserOrAFileSetThem)
 {
+    model::DeviceImage image;
+    image.beginConnection();
     ParameterDocument doc;
+    doc.setDeviceImage(&image);
     model::ModuleInfo info;
     info.address = 1;
     info.dictionary = &dma();
@@ -78,14 +81,14 @@ TEST(ParameterDocument, ReadValuesFollowUnlessTheUserOrAFileSetThem)
     ASSERT_EQ(doc.moduleCount(), 1);
     EXPECT_TRUE(doc.module(0).online);
 
-    doc.applyRead(0, {{row("C1.07"), 500.0}, {row("C1.08"), 600.0}, {row("d1.11"), 42.0}});
+    image.recordRead(1, {{row("C1.07"), 500.0}, {row("C1.08"), 600.0}, {row("d1.11"), 42.0}});
     EXPECT_EQ(doc.value(0, row("C1.07")), dev::RawValue{500.0});
     EXPECT_FALSE(doc.differsFromDevice(0, row("C1.07")));
     EXPECT_TRUE(doc.pendingWrites(0).empty());
 
     EXPECT_FALSE(doc.edit(0, row("C1.07"), 1000.0));
     // A later read (the live d-block) does not overwrite the edit, but updates display values.
-    doc.applyRead(0, {{row("C1.07"), 500.0}, {row("d1.11"), 43.0}});
+    image.recordRead(1, {{row("C1.07"), 500.0}, {row("d1.11"), 43.0}});
     EXPECT_EQ(doc.value(0, row("C1.07")), dev::RawValue{1000.0});
     EXPECT_EQ(doc.value(0, row("d1.11")), dev::RawValue{43.0});
     EXPECT_TRUE(doc.differsFromDevice(0, row("C1.07")));
@@ -96,11 +99,8 @@ TEST(ParameterDocument, ReadValuesFollowUnlessTheUserOrAFileSetThem)
     EXPECT_EQ(pending[0].value, dev::RawValue{1000.0});
     EXPECT_EQ(pending[0].before, dev::RawValue{500.0});
 
-    // Written and verified: the device layer follows; undo then differs from the device again.
-    auto written = pending;
-    written[0].status = model::WriteStatus::Verified;
-    written[0].readBack = 1000.0;
-    doc.applyWritten(0, written);
+    // Written and acknowledged: the Device column follows; undo then differs from the device again.
+    image.recordWritten(1, row("C1.07"), 1000.0);
     EXPECT_FALSE(doc.differsFromDevice(0, row("C1.07")));
     doc.undoStack()->undo();
     EXPECT_EQ(doc.value(0, row("C1.07")), dev::RawValue{500.0});

@@ -29,6 +29,7 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
     ASSERT_EQ(c->modules.size(), 1u);
     model::ParameterDocument doc;
     model::ParameterTreeModel tree(doc);
+    doc.setDeviceImage(&c->access().image());
     doc.attachDevice(c->modules);
     ASSERT_TRUE(readAll(*c->connection, doc));
     const dev::Dictionary &dict = *c->modules[0].dictionary;
@@ -59,6 +60,7 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
     ASSERT_TRUE(reread.ok()) << reread.error().toStdString();
     model::ParameterDocument reopened;
     reopened.loadFile(*reread, dictionaries(), path);
+    reopened.setDeviceImage(&c->access().image());
     reopened.attachDevice(c->modules);
     ASSERT_TRUE(readAll(*c->connection, reopened));
     EXPECT_EQ(reopened.value(0, c107), dev::RawValue{1000.0});

@@ -1,6 +1,7 @@
 // The fold wizard on a simulated node : the scan finds the modules,
 // Apply writes addresses and options and the closing scan confirms them; the test bench gets
 // every module's decoded CMD 15 answer over the node image with TADR toggling.
+#include "actuator_answer.h"
 #include "dict/dictionary_loader.h"
 #include "model/session/connection.h"
 #include "sim/hcs_module.h"
@@ -43,6 +44,7 @@ void nextTo(FoldWizard &wizard, int id)
 // SimSpec "dma-pn-v51", 3 modules, Modbus TCP; the modules start on E22 = 4, 5, 6.
 TEST(FoldWizardSim, ScanApplyAndVerify)
 {
+    test::ActuatorAnswer yes; // the Apply is asked first
     auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
     ASSERT_TRUE(c);
     dev::sim::HcsNode &node = *c->simEndpoint()->node();
@@ -78,6 +80,8 @@ TEST(FoldWizardSim, ScanApplyAndVerify)
     auto *apply = static_cast<FoldApplyPage *>(wizard.currentPage());
     QSignalSpy applied(apply, &FoldApplyPage::applyFinished);
     apply->findChild<QAbstractButton *>(QStringLiteral("apply"))->click();
+    ASSERT_EQ(yes.asked.size(), 1);
+    EXPECT_EQ(yes.asked[0].size(), 3) << "one line per module";
     EXPECT_FALSE(wizard.button(QWizard::NextButton)->isEnabled()); // while writing
     ASSERT_TRUE(applied.wait(kWaitMs));
     EXPECT_TRUE(applied.front().front().toBool());
@@ -150,6 +154,7 @@ using test::waitUntil;
 // Point-to-point guidance: "connect the cable to module 2, then Next".
 TEST(FoldWizardSim, PointToPointGuidesModuleByModule)
 {
+    test::ActuatorAnswer yes; // each module's Apply is asked first
     auto c = openSim({"dma-pn-v51", 1, "modbus-rtu", {}, {}});
     ASSERT_TRUE(c);
     FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());

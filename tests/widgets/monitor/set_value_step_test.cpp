@@ -1,5 +1,6 @@
 // The monitor's set value step: refused while E17 ≠ 2 with the manuals' reason, E17 set
 // on request, then the step written through WriteJob, read back and journalled.
+#include "actuator_answer.h"
 #include "model/monitor/set_value_step.h"
 #include "sim_rig.h"
 #include "widgets/monitor/monitor_view.h"
@@ -84,6 +85,7 @@ TEST(SetValueStep, OutOfRangeStepIsRefusedLocallyByWriteJob)
 
 TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
 {
+    ActuatorAnswer yes;
     auto rig = connectSim("dma-pn-v51");
     ASSERT_TRUE(rig);
     ui::MonitorView view;
@@ -100,6 +102,7 @@ TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
 
     control.enableBusSetValue();
     ASSERT_TRUE(written.wait(kWaitMs));
+    ASSERT_EQ(yes.asked.size(), 2); // the step (then refused: E17 is not 2), and E17
     ASSERT_EQ(view.session().journal().markers().size(), 1u);
     EXPECT_TRUE(view.session().journal().markers().back().text.startsWith("E17 "));
 
