@@ -54,6 +54,50 @@
         <source>ValveTune could not connect: %1</source>
         <translation>ValveTune konnte keine Verbindung herstellen: %1</translation>
     </message>
+    <message>
+        <source>Before disconnecting:</source>
+        <translation>Vor dem Trennen:</translation>
+    </message>
+    <message>
+        <source>Module %1: %2 cannot be put back: its value before the change was never read.</source>
+        <translation>Modul %1: %2 kann nicht zurückgesetzt werden: sein Wert vor der Änderung wurde nie gelesen.</translation>
+    </message>
+    <message>
+        <source>%1 on module %2</source>
+        <translation>%1 an Modul %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 on module %2 (value before unknown)</source>
+        <translation>%1 an Modul %2 (Wert vorher unbekannt)</translation>
+    </message>
+    <message>
+        <source>Put back: %1.</source>
+        <translation>Zurückgesetzt: %1.</translation>
+    </message>
+    <message>
+        <source>Not put back: %1.</source>
+        <translation>Nicht zurückgesetzt: %1.</translation>
+    </message>
+    <message>
+        <source>Reading what the device holds before writing…</source>
+        <translation>Vor dem Schreiben wird gelesen, was das Gerät hält…</translation>
+    </message>
+    <message>
+        <source>Nothing written: the device values could not all be read (%1).</source>
+        <translation>Nichts geschrieben: die Gerätewerte konnten nicht alle gelesen werden (%1).</translation>
+    </message>
+    <message>
+        <source>Reading the device to compare…</source>
+        <translation>Das Gerät wird zum Vergleichen gelesen…</translation>
+    </message>
+    <message>
+        <source>Not compared: the device could not be read (%1).</source>
+        <translation>Nicht verglichen: das Gerät konnte nicht gelesen werden (%1).</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::FileController</name>
@@ -291,6 +335,18 @@
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
+    <message>
+        <source>%1 on module %2</source>
+        <translation>%1 an Modul %2</translation>
+    </message>
+    <message>
+        <source>Could not put back (link gone): %1. Check the axis.</source>
+        <translation>Nicht zurückgesetzt (Verbindung weg): %1. Achse prüfen.</translation>
+    </message>
+    <message>
+        <source>Before quitting:</source>
+        <translation>Vor dem Beenden:</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::Workspace</name>
@@ -437,10 +493,6 @@
         <translation>%1 Baud %2 kann nicht auf %3 eingestellt werden: %4</translation>
     </message>
     <message>
-        <source>Cannot open %1: no file descriptor</source>
-        <translation>%1 kann nicht geöffnet werden: kein Dateideskriptor</translation>
-    </message>
-    <message>
         <source>Write to %1 failed: %2</source>
         <translation>Schreiben auf %1 fehlgeschlagen: %2</translation>
     </message>
@@ -485,6 +537,13 @@
     <message>
         <source>Connection to %1 failed: %2</source>
         <translation>Verbindung zu %1 fehlgeschlagen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::ActuatorRestore</name>
+    <message>
+        <source>module %1 is not on the node</source>
+        <translation>Modul %1 ist nicht am Knoten</translation>
     </message>
 </context>
 <context>
@@ -1544,6 +1603,30 @@
         <source>%1 %2, mode %3</source>
         <translation>%1 %2, Modus %3</translation>
     </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>Module %1 of the document goes to module %2 of the node.</source>
+        <translation>Modul %1 des Dokuments geht auf Modul %2 des Knotens.</translation>
+    </message>
+    <message>
+        <source>Module %1 of the node (%2) is not in the document: not shown.</source>
+        <translation>Modul %1 des Knotens (%2) ist nicht im Dokument: nicht angezeigt.</translation>
+    </message>
+    <message>
+        <source>Module %1: the document is for %2, the device is %3. Rows the device does not apply are kept but not written.</source>
+        <translation>Modul %1: das Dokument ist für %2, das Gerät ist %3. Zeilen, die für das Gerät nicht gelten, bleiben erhalten, werden aber nicht geschrieben.</translation>
+    </message>
+    <message>
+        <source>Module %1 of the document is %2, the node&apos;s module %1 is %3: not paired, it stays offline.</source>
+        <translation>Modul %1 des Dokuments ist %2, Modul %1 des Knotens ist %3: nicht zugeordnet, es bleibt offline.</translation>
+    </message>
+    <message>
+        <source>Module %1 of the document has no module on the node: it stays offline.</source>
+        <translation>Modul %1 des Dokuments hat kein Modul am Knoten: es bleibt offline.</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::ParameterTreeModel</name>
@@ -1636,6 +1719,36 @@
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n second(s) ago</source>
+        <translation>
+            <numerusform>vor %n Sekunde</numerusform>
+            <numerusform>vor %n Sekunden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n minute(s) ago</source>
+        <translation>
+            <numerusform>vor %n Minute</numerusform>
+            <numerusform>vor %n Minuten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read %1, before the connection was lost or renewed: not known to be on the device now. Read the device again.</source>
+        <translation>Gelesen %1, bevor die Verbindung verloren oder erneuert wurde: nicht bekannt, ob der Wert jetzt auf dem Gerät ist. Gerät erneut lesen.</translation>
+    </message>
+    <message>
+        <source>Read %1: too old to be trusted. Read the device again.</source>
+        <translation>Gelesen %1: zu alt, um ihm zu trauen. Gerät erneut lesen.</translation>
+    </message>
+    <message>
+        <source>Written %1, acknowledged by the device.</source>
+        <translation>Geschrieben %1, vom Gerät bestätigt.</translation>
+    </message>
+    <message>
+        <source>Read from the device %1.</source>
+        <translation>Vom Gerät gelesen %1.</translation>
     </message>
 </context>
 <context>
@@ -2153,6 +2266,57 @@ Lizenziert unter der GNU General Public License, Version 3 oder später. Die Dia
     </message>
 </context>
 <context>
+    <name>vt::ui::ActuatorConfirm</name>
+    <message>
+        <source>Module %1: %2 (%3) %4 → %5</source>
+        <translation>Modul %1: %2 (%3) %4 → %5</translation>
+    </message>
+    <message>
+        <source>This Write Can Move the Valve</source>
+        <translation>Dieses Schreiben kann das Ventil bewegen</translation>
+    </message>
+    <message>
+        <source>These values drive the actuator. The axis may move as soon as they are written.
+
+%1
+
+Write them?</source>
+        <translation>Diese Werte steuern den Antrieb. Die Achse kann sich bewegen, sobald sie geschrieben sind.
+
+%1
+
+Schreiben?</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Put Back What Was Changed?</source>
+        <translation>Geänderte Werte zurücksetzen?</translation>
+    </message>
+    <message>
+        <source>%1 ValveTune changed values that drive the actuator:
+
+%2
+
+Put the original values back?</source>
+        <translation>%1 ValveTune hat Werte geändert, die den Antrieb steuern:
+
+%2
+
+Die ursprünglichen Werte zurückschreiben?</translation>
+    </message>
+    <message>
+        <source>Put Back</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Leave As Is</source>
+        <translation>So lassen</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::CanPage</name>
     <message>
         <source>CAN (CANopen)</source>
@@ -2472,6 +2636,22 @@ Senden?</translation>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>This frame changes the device:
+%1
+%2
+
+Send it?</source>
+        <translation>Dieser Rahmen ändert das Gerät:
+%1
+%2
+
+Senden?</translation>
+    </message>
+    <message>
+        <source>No parameter of the module&apos;s dictionary has this address: the editor&apos;s Device column cannot follow it. Read the device again.</source>
+        <translation>Kein Parameter im Wörterbuch des Moduls hat diese Adresse: die Gerätespalte des Editors kann nicht folgen. Gerät erneut lesen.</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::ConnectDialog</name>
@@ -2681,6 +2861,10 @@ Senden?</translation>
     <message>
         <source>Writes and notes</source>
         <translation>Schreibvorgänge und Hinweise</translation>
+    </message>
+    <message>
+        <source>Module at address %1: the plan&apos;s options, then address %2</source>
+        <translation>Modul an Adresse %1: die Optionen des Plans, dann Adresse %2</translation>
     </message>
 </context>
 <context>
@@ -3286,6 +3470,10 @@ Senden?</translation>
         <source>Rows that did not map are kept in the file and written back unchanged on save.</source>
         <translation>Nicht zugeordnete Zeilen bleiben in der Datei erhalten und werden beim Speichern unverändert zurückgeschrieben.</translation>
     </message>
+    <message>
+        <source>With the connected node:</source>
+        <translation>Mit dem verbundenen Knoten:</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::MonitorPlot</name>
@@ -3710,6 +3898,26 @@ Senden?</translation>
     <message>
         <source>Switches the analogue set value off (E17 = 2, stored in EEPROM).</source>
         <translation>Schaltet den analogen Sollwert ab (E17 = 2, im EEPROM gespeichert).</translation>
+    </message>
+    <message>
+        <source>Module %1: %2 (%3), every step until disconnect, without asking again</source>
+        <translation>Modul %1: %2 (%3), jeder Sprung bis zum Trennen, ohne erneute Nachfrage</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Scharf</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Scharf schalten</translation>
+    </message>
+    <message>
+        <source>Steps are written without asking until you disarm or disconnect. Click to disarm.</source>
+        <translation>Sprünge werden ohne Nachfrage geschrieben, bis Sie entschärfen oder trennen. Klicken zum Entschärfen.</translation>
+    </message>
+    <message>
+        <source>Arm the step: after one confirmation, steps are written without asking again until disconnect.</source>
+        <translation>Sprung scharf schalten: nach einer Bestätigung werden Sprünge bis zum Trennen ohne erneute Nachfrage geschrieben.</translation>
     </message>
 </context>
 <context>

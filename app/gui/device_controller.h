@@ -7,11 +7,10 @@
 #include "model/session/connection.h"
 #include "model/session/write_record.h"
 
+#include <QMessageBox>
 #include <QObject>
 #include <QPointer>
 #include <functional>
-
-class QMessageBox;
 class QProgressDialog;
 class QWidget;
 

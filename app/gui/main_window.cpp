@@ -14,7 +14,9 @@
 #include "widgets/curve/lcurve_editor.h"
 #include "widgets/editor/node_view.h"
 #include "widgets/editor/parameter_editor.h"
+#include "widgets/fold/fold_apply_page.h"
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/inspector/compose_panel.h"
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/monitor/monitor_view.h"
 #include "workspace.h"
@@ -228,6 +230,9 @@ void MainWindow::createDocks()
                 m_telegramsDock->raise();
                 m_inspector->showFramesFor(m_workspace->document().module(module).address, name);
             });
+    // A write sent from Compose reaches the tuning journal as every other write does.
+    connect(m_inspector->composePanel(), &ui::ComposePanel::wrote, m_monitor,
+            &ui::MonitorView::journalWrites);
     connect(m_inspector, &ui::InspectorView::parameterActivated, this,
             [this](int address, const QString &name) {
                 const int module = m_workspace->document().findModule(address);
@@ -337,6 +342,16 @@ ui::FoldWizard *MainWindow::openFoldWizard(const QString &planPath)
             m_workspace->dictionaries(),
             m_workspace->isConnected() ? m_workspace->connection() : nullptr, this);
         m_wizard->setAttribute(Qt::WA_DeleteOnClose);
+        // The apply's writes reach the tuning journal as every other write does.
+        if (auto *apply =
+                qobject_cast<ui::FoldApplyPage *>(m_wizard->page(ui::FoldWizard::ApplyPageId)))
+            connect(apply, &ui::FoldApplyPage::applyFinished, this, [this, apply] {
+                if (!apply->job())
+                    return;
+                for (const model::FoldApplyModule &m : apply->job()->modules())
+                    if (!m.writes.empty())
+                        m_monitor->journalWrites(m.current, m.writes);
+            });
     } else if (m_workspace->isConnected()) {
         m_wizard->setConnection(m_workspace->connection());
     }

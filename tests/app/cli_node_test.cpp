@@ -79,7 +79,7 @@ TEST_F(CliNode, ReadWriteAndDiffCoverEveryModule)
     const QString file = path("node.vtpar");
     const CliRun read = node({"read", "--out", file});
     ASSERT_EQ(read.code, kExitOk) << what(read);
-    EXPECT_TRUE(read.says(" values of 3 module(s) to ")) << read.out;
+    EXPECT_TRUE(read.says(" settings of 3 module(s) to ")) << read.out;
     std::ifstream in(file.toStdString());
     const auto saved = nlohmann::json::parse(in, nullptr, false);
     ASSERT_EQ(saved["modules"].size(), 3u) << saved.dump();

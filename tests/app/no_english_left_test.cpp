@@ -4,6 +4,7 @@
 // page), one switch to German leaves no visible text that equals an English source of the
 // catalogue (translations/valvetune_de.ts) whose German differs — neither a whole text nor a
 // sentence with its placeholders filled in.
+#include "actuator_answer.h"
 #include "app/gui/app_settings.h"
 #include "app/gui/device_controller.h"
 #include "app/gui/language.h"
@@ -269,6 +270,7 @@ QString tr(const char *context, const char *text)
 
 TEST(NoEnglishLeft, EveryWindowIsGermanAfterARunTimeSwitch)
 {
+    ActuatorAnswer yes; // the step and E17 move the valve: answered here
     const std::vector<Source> sources = englishSources();
     ASSERT_GT(sources.size(), 500u); // the catalogue was read
 
@@ -378,6 +380,7 @@ TEST(NoEnglishLeft, EveryWindowIsGermanAfterARunTimeSwitch)
 // The E17 hint quotes the manuals; in German it quotes the German DMA manual's words.
 TEST(NoEnglishLeft, TheE17HintQuotesTheManualInTheUiLanguage)
 {
+    ActuatorAnswer yes; // the step and E17 move the valve: answered here
     QTemporaryDir dir;
     app::AppSettings settings(dir.filePath("settings.ini"));
     app::Language language;

@@ -445,7 +445,9 @@ bool ComposePanel::send()
     const bool writes = frame.writes;
     m_connection->session().submit(
         std::move(t), vt::model::Priority::User,
-        [self, writes, module, row](const vt::model::Outcome &o) {
+        [self, writes, module, row,
+         before = row ? m_connection->access().image().value(module, row) : std::nullopt,
+         value = m_spec.value](const vt::model::Outcome &o) {
             if (!self)
                 return;
             self->m_busy = false;
@@ -478,6 +480,14 @@ bool ComposePanel::send()
             self->m_result->setText(text);
             self->updateSend();
             emit self->sendFinished(text, o.status == vt::model::OutcomeStatus::Ok);
+            if (writes && row && o.status == vt::model::OutcomeStatus::Ok) {
+                vt::model::WriteItem item;
+                item.row = row;
+                item.value = vt::dev::RawValue{static_cast<double>(value)};
+                item.before = before;
+                item.status = vt::model::WriteStatus::Written;
+                emit self->wrote(module, {item});
+            }
         });
     return true;
 }

@@ -9,6 +9,7 @@
 #include "inspect/compose.h"
 #include "model/session/device_access.h"
 #include "model/session/session.h"
+#include "model/session/write_record.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -69,6 +70,8 @@ public slots:
 signals:
     // The raw exchange ended: outcome text for people; answered = the device replied.
     void sendFinished(const QString &outcome, bool answered);
+    // A write of a known parameter was answered: for the tuning journal.
+    void wrote(int module, const std::vector<vt::model::WriteItem> &items);
 
 protected:
     void changeEvent(QEvent *event) override;
