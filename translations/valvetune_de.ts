@@ -98,6 +98,10 @@
         <source>Not compared: the device could not be read (%1).</source>
         <translation>Nicht verglichen: das Gerät konnte nicht gelesen werden (%1).</translation>
     </message>
+    <message>
+        <source>Disconnected. %1</source>
+        <translation>Getrennt. %1</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::FileController</name>

@@ -53,12 +53,18 @@ void DeviceController::showConnectFailure(const QString &reason)
 
 void DeviceController::disconnectFromDevice()
 {
-    offerRestore(tr("Before disconnecting:"), [this] { m_workspace.disconnectFromDevice(); });
+    offerRestore(tr("Before disconnecting:"), [this] {
+        m_workspace.disconnectFromDevice();
+        // The report of the put-back stays in view after the disconnect's own status line.
+        if (!m_lastRestore.isEmpty())
+            emit statusMessage(tr("Disconnected. %1").arg(m_lastRestore));
+    });
 }
 
 void DeviceController::offerRestore(const QString &when, std::function<void()> then)
 {
     model::ActuatorLedger &ledger = m_workspace.actuatorLedger();
+    m_lastRestore.clear();
     if (!m_workspace.isConnected() || ledger.empty() || m_restore) {
         if (!m_restore)
             then();
