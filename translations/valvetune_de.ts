@@ -351,6 +351,10 @@
         <source>Before quitting:</source>
         <translation>Vor dem Beenden:</translation>
     </message>
+    <message>
+        <source>The monitor was stopped:</source>
+        <translation>Der Monitor wurde angehalten:</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::Workspace</name>

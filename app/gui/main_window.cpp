@@ -230,6 +230,9 @@ void MainWindow::createDocks()
                 m_telegramsDock->raise();
                 m_inspector->showFramesFor(m_workspace->document().module(module).address, name);
             });
+    // Stopping the monitor ends a test: the set values the tool changed are offered back.
+    connect(m_monitor, &ui::MonitorView::stoppedByUser, this,
+            [this] { m_device->offerRestore(tr("The monitor was stopped:"), [] {}); });
     // A write sent from Compose reaches the tuning journal as every other write does.
     connect(m_inspector->composePanel(), &ui::ComposePanel::wrote, m_monitor,
             &ui::MonitorView::journalWrites);

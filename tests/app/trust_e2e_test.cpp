@@ -19,6 +19,7 @@
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/monitor/step_control.h"
 
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -284,6 +285,21 @@ TEST_F(TrustE2E, QuittingWithAStepActiveAsksToPutItBack)
     EXPECT_EQ(asked.size(), before + 1);
     EXPECT_TRUE(window->device().lastRestore().startsWith("Put back"))
         << window->device().lastRestore().toStdString();
+}
+
+TEST_F(TrustE2E, StoppingTheMonitorOffersToPutTheStepBack)
+{
+    connectSimulator();
+    auto *run = window->monitor()->findChild<QPushButton *>(QStringLiteral("monitorRun"));
+    ASSERT_NE(run, nullptr);
+    run->click(); // start
+    ASSERT_NO_FATAL_FAILURE(stepTo2V());
+    const qsizetype before = asked.size();
+    run->click(); // stop: the end of the test
+    ASSERT_EQ(asked.size(), before + 1);
+    ASSERT_TRUE(waitUntil([&] { return window->workspace().actuatorLedger().empty(); }));
+    EXPECT_EQ(storedRaw(simModule(), *row("A1.01")), 0.0);
+    EXPECT_TRUE(window->workspace().isConnected());
 }
 
 TEST_F(TrustE2E, AReconnectMakesEveryDeviceValueNotCurrentUntilRead)

@@ -39,6 +39,7 @@ MonitorView::MonitorView(QWidget *parent)
     : QWidget(parent), m_session(new model::MonitorSession(this))
 {
     m_run = new QPushButton(this);
+    m_run->setObjectName(QStringLiteral("monitorRun"));
     m_run->setCheckable(true);
     m_rateLabel = new QLabel(this);
     m_rate = new NumberBox(this);
@@ -116,6 +117,10 @@ MonitorView::MonitorView(QWidget *parent)
                 emit statusMessage(text);
             });
     connect(m_run, &QPushButton::toggled, this, [this](bool on) { on ? start() : pause(); });
+    connect(m_run, &QPushButton::clicked, this, [this](bool on) {
+        if (!on)
+            emit stoppedByUser();
+    });
     connect(m_rate, &QDoubleSpinBox::valueChanged, this,
             [this](double hz) { m_session->setRate(hz); });
     connect(m_window, &QDoubleSpinBox::valueChanged, this, [this] {

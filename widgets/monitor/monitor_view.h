@@ -76,6 +76,9 @@ public:
 signals:
     // For the main window's status bar: a failed poll, an export done.
     void statusMessage(const QString &text);
+    // The person stopped the monitor (its Stop button): the end of a test, when set values the
+    // tool changed are offered back.
+    void stoppedByUser();
 
 protected:
     void changeEvent(QEvent *event) override;
