@@ -258,7 +258,7 @@ void DeviceController::compareWithDevice()
         std::vector<const dev::ParamMeta *> rows;
         const model::ParamModule &m = m_workspace.document().module(module);
         for (const dev::ParamMeta *row : model::readableRows(*m.dictionary, m.version, m.mode))
-            if (row->writable() && model::isSetting(*row))
+            if (row->writable() && dev::files::isFileRow(*row))
                 rows.push_back(row);
         return rows;
     };

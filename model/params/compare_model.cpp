@@ -69,7 +69,8 @@ void CompareModel::refresh()
             continue;
         for (const dev::ParamMeta &meta : m.dictionary->params) {
             // Settable parameters only: display values always differ from a snapshot.
-            if (meta.access != dev::Access::ReadWrite || !m.active(meta) || !isSetting(meta))
+            if (meta.access != dev::Access::ReadWrite || !m.active(meta) ||
+                !dev::files::isFileRow(meta))
                 continue;
             const auto theirs = otherValue(i, &meta);
             if (!theirs)

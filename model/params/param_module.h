@@ -6,6 +6,7 @@
 
 #include "dict/dictionary.h"
 #include "dict/raw_value.h"
+#include "files/file_rows.h"
 #include "files/param_file.h"
 #include "files/param_file_map.h"
 
@@ -55,14 +56,6 @@ struct ParamModule
                row.appliesTo(version.substr(0, version.find('.')), mode);
     }
 };
-
-// A setting: kept on the device, belongs in a parameter file and in Write Changes. Process values
-// (bus set values, control words) and live values are shown, never saved, compared or written
-// as settings.
-inline bool isSetting(const dev::ParamMeta &row)
-{
-    return row.kind == dev::RowKind::Setting;
-}
 
 // Equal raw values (numbers compared exactly: both come from the same integer or float32 grid).
 inline bool sameValue(const std::optional<dev::RawValue> &a, const std::optional<dev::RawValue> &b)

@@ -212,7 +212,7 @@ void ParameterDocument::onImageChanged(int address, const std::vector<ImageChang
                 continue; // a row of another module's dictionary at this address
             touched.push_back(c.row);
             const auto working = m.value(c.row, Layer::Working);
-            const bool follows = !c.row->writable() || !isSetting(*c.row) || !working ||
+            const bool follows = !c.row->writable() || !dev::files::isFileRow(*c.row) || !working ||
                                  (!m.file.count(c.row) && sameValue(working, c.before));
             if (follows)
                 if (const auto now = deviceImage().value(address, c.row))
@@ -260,7 +260,7 @@ void ParameterDocument::loadFile(const dev::files::ParamFile &file,
             // Process and live values in an old file are not settings: neither shown as the
             // document's value nor written (the map report names them).
             if (r.applies() && r.meta && r.row != dev::files::RowMapping::kNoRow &&
-                isSetting(*r.meta)) {
+                dev::files::isFileRow(*r.meta)) {
                 m.file[r.meta] = record.values[r.row].raw;
                 m.working[r.meta] = record.values[r.row].raw;
             }
@@ -293,7 +293,7 @@ dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) co
         std::erase_if(record.values, [&](const dev::files::ValueRow &row) {
             bool byAddress = false;
             const dev::ParamMeta *meta = dev::files::findMeta(*m.dictionary, row, &byAddress);
-            return meta && !isSetting(*meta);
+            return meta && !dev::files::isFileRow(*meta);
         });
         for (dev::files::ValueRow &row : record.values) {
             bool byAddress = false;
@@ -309,7 +309,7 @@ dev::files::ParamFile ParameterDocument::toParamFile(const std::string &tool) co
         for (const dev::ParamMeta &meta : m.dictionary->params) {
             const auto it = m.working.find(&meta);
             if (it != m.working.end() && !written.count(&meta) &&
-                meta.access != dev::Access::Write && isSetting(meta))
+                meta.access != dev::Access::Write && dev::files::isFileRow(meta))
                 record.values.push_back(dev::files::makeValueRow(meta, it->second));
         }
         file.modules.push_back(std::move(record));
@@ -372,7 +372,7 @@ std::vector<const dev::ParamMeta *> ParameterDocument::rowsToRead(int module) co
         return rows;
     const ParamModule &m = this->module(module);
     for (const dev::ParamMeta &row : m.dictionary->params)
-        if (row.readable() && row.writable() && isSetting(row) && m.active(row) &&
+        if (row.readable() && row.writable() && dev::files::isFileRow(row) && m.active(row) &&
             m.working.count(&row) && !deviceCurrent(module, &row))
             rows.push_back(&row);
     return rows;
@@ -449,7 +449,7 @@ std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
         return items;
     const ParamModule &m = m_modules[static_cast<std::size_t>(module)];
     for (const dev::ParamMeta &row : m.dictionary->params) {
-        if (!row.writable() || !m.active(row) || !isSetting(row))
+        if (!row.writable() || !m.active(row) || !dev::files::isFileRow(row))
             continue;
         const auto working = m.value(&row, Layer::Working);
         const auto device =
@@ -467,7 +467,7 @@ std::vector<WriteItem> ParameterDocument::pendingWrites(int module) const
 
 bool ParameterDocument::differsFromDevice(int module, const dev::ParamMeta *row) const
 {
-    if (!row || !isSetting(*row))
+    if (!row || !dev::files::isFileRow(*row))
         return false;
     const auto device = value(module, row, Layer::Device);
     return device && !sameValue(value(module, row), device);
@@ -475,7 +475,7 @@ bool ParameterDocument::differsFromDevice(int module, const dev::ParamMeta *row)
 
 bool ParameterDocument::changed(int module, const dev::ParamMeta *row) const
 {
-    if (!row || !row->writable() || !isSetting(*row))
+    if (!row || !row->writable() || !dev::files::isFileRow(*row))
         return false;
     const auto working = value(module, row);
     if (!working)
@@ -494,7 +494,7 @@ void ParameterDocument::revertToDevice()
     std::vector<Change> changes;
     for (int i = 0; i < moduleCount(); ++i)
         for (const dev::ParamMeta &row : m_modules[static_cast<std::size_t>(i)].dictionary->params)
-            if (row.writable() && isSetting(row))
+            if (row.writable() && dev::files::isFileRow(row))
                 if (const auto device = value(i, &row, Layer::Device))
                     changes.push_back({i, &row, *device});
     editMany(changes, [] { return tr("Revert to device"); });

@@ -4,11 +4,6 @@
 
 namespace vt::model {
 
-bool movesActuator(const dev::ParamMeta &row)
-{
-    return row.movesActuator;
-}
-
 ActuatorLedger::ActuatorLedger(DeviceImage &image, QObject *parent)
     : QObject(parent), m_image(image)
 {
@@ -29,7 +24,7 @@ void ActuatorLedger::onImageChanged(int module, const std::vector<ImageChange> &
 {
     bool any = false;
     for (const ImageChange &c : rows) {
-        if (!c.row || !movesActuator(*c.row))
+        if (!c.row || !c.row->movesActuator)
             continue;
         const ImageEntry *entry = m_image.entry(module, c.row);
         auto it = std::find_if(m_changes.begin(), m_changes.end(), [&](const ActuatorChange &a) {

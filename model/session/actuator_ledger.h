@@ -15,9 +15,6 @@
 
 namespace vt::model {
 
-// Writing this row can move the actuator: it needs a person's confirmation and is offered back.
-bool movesActuator(const dev::ParamMeta &row);
-
 struct ActuatorChange
 {
     int module = 0;

@@ -1,7 +1,6 @@
 #include "write_dialog.h"
 
 #include "model/params/parameter_tree_model.h"
-#include "model/session/actuator_ledger.h"
 #include "model/text_language.h"
 #include "widgets/actuator_confirm.h"
 
@@ -148,7 +147,7 @@ void WriteDialog::confirm()
     QStringList moving;
     for (const model::ModuleWriteResult &r : m_job->results())
         for (const model::WriteItem &item : r.items)
-            if (model::movesActuator(*item.row))
+            if (item.row->movesActuator)
                 moving << actuatorWriteLine(m_document.module(r.module).address, *item.row,
                                             item.before, item.value, m_document.language());
     confirmActuatorWrites(this, moving, [this, guard = QPointer<WriteDialog>(this)] {
