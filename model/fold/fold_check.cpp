@@ -61,15 +61,15 @@ private:
         m_out.push_back({s, c, module, std::move(param), std::move(sentences)});
     }
     void add(FoldSeverity s, FoldCheckCode c, int module, std::string param, FoldText text,
-             std::vector<LocalText> args = {})
+             std::vector<FoldArg> args = {})
     {
         add(s, c, module, std::move(param), {FoldSentence{text, std::move(args)}});
     }
     // A sentence about module i ("Module %1 (%2): …"): its number and address come first.
     void addAbout(FoldSeverity s, FoldCheckCode c, std::size_t i, std::string param, FoldText text,
-                  std::vector<LocalText> more = {})
+                  std::vector<FoldArg> more = {})
     {
-        std::vector<LocalText> args{num(i + 1), foldAddressText(m_plan.node, m_plan.modules[i])};
+        std::vector<FoldArg> args{num(i + 1), foldAddress(m_plan.node, m_plan.modules[i])};
         args.insert(args.end(), more.begin(), more.end());
         add(s, c, static_cast<int>(i), std::move(param), text, std::move(args));
     }

@@ -7,6 +7,7 @@
 #include "core/local_text.h"
 #include "fold_plan.h"
 
+#include <variant>
 #include <vector>
 
 class QString;
@@ -81,10 +82,14 @@ enum class FoldText {
     CanBaudReboot,
 };
 
+// A value in a sentence: a number or name (the same in both languages, or a dictionary's
+// bilingual label) or a module's address, which is worded in the language shown.
+using FoldArg = std::variant<dev::LocalText, FoldAddress>;
+
 struct FoldSentence
 {
     FoldText text = FoldText::NoModules;
-    std::vector<dev::LocalText> args; // numbers and names the same in both languages
+    std::vector<FoldArg> args;
 
     bool operator==(const FoldSentence &) const = default;
 };

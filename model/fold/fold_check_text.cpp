@@ -159,8 +159,12 @@ QString foldFindingText(const FoldFinding &finding)
     QStringList sentences;
     for (const FoldSentence &sentence : finding.sentences) {
         QString text = FoldCheckText::source(sentence.text);
-        for (const dev::LocalText &arg : sentence.args)
-            text = text.arg(localText(arg));
+        for (const FoldArg &arg : sentence.args) {
+            if (const auto *address = std::get_if<FoldAddress>(&arg))
+                text = text.arg(foldAddressText(*address));
+            else
+                text = text.arg(localText(std::get<dev::LocalText>(arg)));
+        }
         sentences << text;
     }
     return sentences.join(QLatin1Char(' '));

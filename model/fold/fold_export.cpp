@@ -124,7 +124,7 @@ QString foldSheetHtml(const FoldSheet &sheet, Language lang)
             QStringLiteral(" / ") + (m.mode ? QString::number(m.mode) : QStringLiteral("?"));
         h += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>\n")
                  .arg(i + 1)
-                 .arg(esc(foldAddressText(c.node, m).in(lang)), sw, esc(m.name),
+                 .arg(foldAddressText(c.node, m).toHtmlEscaped(), sw, esc(m.name),
                       options.isEmpty() ? QStringLiteral("–") : options.join(QStringLiteral(", ")));
     }
     h += QStringLiteral("</table>\n");

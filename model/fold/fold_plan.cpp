@@ -7,7 +7,6 @@
 
 namespace vt::model {
 
-using dev::LocalText;
 using dev::hcs::Family;
 
 std::string_view foldNodeKey(FoldNode node)
@@ -168,14 +167,9 @@ void setFoldOption(FoldModuleOptions &options, std::string_view name, std::optio
         options.*member = value;
 }
 
-LocalText foldAddressText(FoldNode node, const FoldModule &module)
+FoldAddress foldAddress(FoldNode node, const FoldModule &module)
 {
-    const std::string n = std::to_string(module.address);
-    if (node != FoldNode::Opat)
-        return dev::same("E22 = " + n);
-    if (module.address == 0)
-        return {"SADR 0 (master)", "SADR 0 (Master)"};
-    return {"SADR " + n + " (rotary switch " + n + ")", "SADR " + n + " (Drehschalter " + n + ")"};
+    return {node, module.address};
 }
 
 } // namespace vt::model

@@ -113,7 +113,20 @@ std::vector<std::string> foldOptionNames(FoldNode node, std::size_t index);
 std::optional<int> foldOption(const FoldModuleOptions &options, std::string_view name);
 void setFoldOption(FoldModuleOptions &options, std::string_view name, std::optional<int> value);
 
-// Address text for people: "E22 = 3" (DMA), "SADR 0 (master)" / "rotary switch 2" (OPAT).
-dev::LocalText foldAddressText(FoldNode node, const FoldModule &module);
+// A module's address as its node names it: E22 on a DMA-2 node, SADR (the rotary switch, 0 for
+// the master) on an OPAT node. A value, so Qt-free code can put it into a sentence; said in the
+// language in force by foldAddressText().
+struct FoldAddress
+{
+    FoldNode node = FoldNode::DmaProfinet;
+    int address = 0;
+
+    bool operator==(const FoldAddress &) const = default;
+};
+FoldAddress foldAddress(FoldNode node, const FoldModule &module);
+// "E22 = 3" (DMA), "SADR 0 (master)" / "SADR 2 (rotary switch 2)" (OPAT), through tr() (Qt;
+// fold_plan_text.cpp).
+QString foldAddressText(const FoldAddress &address);
+QString foldAddressText(FoldNode node, const FoldModule &module);
 
 } // namespace vt::model

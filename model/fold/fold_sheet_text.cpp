@@ -90,7 +90,7 @@ QString FoldSheetText::text(const PlcConfig &c, const FoldPlan &plan, Language l
         const auto &info = dev::hcs::profileInfo(s.profile);
         const QString last = QString::number(s.outputFirst + s.outputLength - 1);
         if (m) {
-            QString where = q(foldAddressText(c.node, *m).in(lang));
+            QString where = foldAddressText(c.node, *m);
             if (!m->name.empty())
                 where += QStringLiteral(", ") + q(m->name);
             o += tr("Module %1 (%2): %3, output bytes %4..%5")

@@ -49,7 +49,7 @@ void FoldOptionsPage::rebuild()
         box->setObjectName(QStringLiteral("module%1").arg(index + 1));
         box->setTitle(tr("Module %1 — %2, V%3, mode %4")
                           .arg(index + 1)
-                          .arg(model::localText(model::foldAddressText(plan.node, module)))
+                          .arg(model::foldAddressText(plan.node, module))
                           .arg(module.version)
                           .arg(module.mode));
         auto *grid = new QGridLayout(box);
