@@ -8,8 +8,7 @@
 
 namespace vt::model {
 
-Sentence::Sentence(const char *context, const char *source)
-    : m_context(context), m_source(source)
+Sentence::Sentence(const char *context, const char *source) : m_context(context), m_source(source)
 {
 }
 

@@ -1056,6 +1056,18 @@
         <source>DMA-2 modules on a PROFINET node</source>
         <translation>DMA-2-Module an einem PROFINET-Knoten</translation>
     </message>
+    <message>
+        <source>E22 = %1</source>
+        <translation>E22 = %1</translation>
+    </message>
+    <message>
+        <source>SADR 0 (master)</source>
+        <translation>SADR 0 (Master)</translation>
+    </message>
+    <message>
+        <source>SADR %1 (rotary switch %1)</source>
+        <translation>SADR %1 (Drehschalter %1)</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::FoldPlanFile</name>

@@ -1,9 +1,9 @@
 #include "model/fold/fold_apply.h"
 
 #include "core/version.h"
+#include "core/vt_assert.h"
 #include "model/fold/fold_apply_moves.h"
 #include "model/session/write_job.h"
-#include "model/text_language.h"
 
 #include <QTimer>
 #include <algorithm>
@@ -84,12 +84,21 @@ void FoldApply::cancel()
         finish();
 }
 
-void FoldApply::fail(std::size_t index, const QString &why)
+QStringList FoldApplyModule::noteTexts() const
 {
+    QStringList texts;
+    for (const Sentence &note : notes)
+        texts << note.text();
+    return texts;
+}
+
+void FoldApply::fail(std::size_t index, const Sentence &why)
+{
+    VT_ASSERT(index < m_modules.size(), return );
     FoldApplyModule &m = m_modules[index];
     m.state = FoldApplyState::Failed;
-    m.notes << why;
-    emit message(why);
+    m.notes.push_back(why);
+    emit message(why.text());
     emit moduleChanged(static_cast<int>(index));
 }
 
@@ -117,7 +126,7 @@ void FoldApply::nextOptions()
                 tr("The address changes cannot be ordered: two modules would need the same "
                    "address."));
             for (std::size_t index : changing)
-                fail(index, tr("Address not changed."));
+                fail(index, said(QT_TR_NOOP("Address not changed.")));
         } else {
             for (const AddressMove &move : *moves)
                 m_moves.push_back(
@@ -144,7 +153,7 @@ void FoldApply::identifyThenWrite(std::size_t index)
         if (!self || !alive(g))
             return;
         if (!result.ok || !result.module.dictionary) {
-            fail(index, tr("Module %1: no module answers at address %2 (%3).")
+            fail(index, said(QT_TR_NOOP("Module %1: no module answers at address %2 (%3)."))
                             .arg(index + 1)
                             .arg(m_modules[index].current)
                             .arg(result.message));
@@ -157,12 +166,13 @@ void FoldApply::identifyThenWrite(std::size_t index)
         const FoldModule &planned = m_plan.modules[index];
         const int version = dev::majorVersionNumber(result.module.identification.version);
         if (planned.version != 0 && version != 0 && version != planned.version)
-            mod.notes
-                << tr("Software V%1 found, the plan says V%2.").arg(version).arg(planned.version);
+            mod.notes.push_back(said(QT_TR_NOOP("Software V%1 found, the plan says V%2."))
+                                    .arg(version)
+                                    .arg(planned.version));
         if (planned.mode != 0 && result.module.mode >= 0 && result.module.mode != planned.mode)
-            mod.notes << tr("Mode %1 found, the plan says mode %2.")
-                             .arg(result.module.mode)
-                             .arg(planned.mode);
+            mod.notes.push_back(said(QT_TR_NOOP("Mode %1 found, the plan says mode %2."))
+                                    .arg(result.module.mode)
+                                    .arg(planned.mode));
         writeOptions(index);
     });
 }
@@ -182,8 +192,9 @@ void FoldApply::writeOptions(std::size_t index)
         const std::string major =
             std::to_string(dev::majorVersionNumber(m.info->identification.version));
         if (!row || !row->appliesTo(major, m.info->identification.mode)) {
-            m.notes << tr("%1 does not exist on this module's software; not written.")
-                           .arg(QString::fromStdString(name));
+            m.notes.push_back(
+                said(QT_TR_NOOP("%1 does not exist on this module's software; not written."))
+                    .arg(QString::fromStdString(name)));
             continue;
         }
         WriteItem item;
@@ -228,9 +239,13 @@ void FoldApply::writeOptions(std::size_t index)
                     if (isOnDevice(item.status))
                         continue;
                     const QString name = QString::fromStdString(item.row ? item.row->name : "");
-                    const QString reason = writeReasonText(item, textLanguage());
-                    const QString why = reason.isEmpty() ? writeStatusText(item.status) : reason;
-                    done.notes << (why.startsWith(name) ? why : tr("%1: %2").arg(name, why));
+                    Sentence why = writeReason(item);
+                    if (why.isEmpty())
+                        why = writeStatusSentence(item.status);
+                    // "E17 is not writable" names the row already; "out of range" does not.
+                    done.notes.push_back(why.text().startsWith(name)
+                                             ? why
+                                             : said(QT_TR_NOOP("%1: %2")).arg(name).arg(why));
                 }
                 onOptionsDone(index);
             });
@@ -278,10 +293,11 @@ void FoldApply::nextMove()
     const dev::ParamMeta *e22 = m.info->dictionary->find("E22");
     if (m_plan.node == FoldNode::Opat || !e22 || !e22->writable()) {
         // OPAT manual §1.4: a CAN slave's address is its rotary switch; software cannot change it.
-        fail(move.module, tr("Module %1 answers at address %2: set its rotary switch to %3.")
-                              .arg(move.module + 1)
-                              .arg(move.from)
-                              .arg(m.target));
+        fail(move.module,
+             said(QT_TR_NOOP("Module %1 answers at address %2: set its rotary switch to %3."))
+                 .arg(move.module + 1)
+                 .arg(move.from)
+                 .arg(m.target));
         ++m_cursor;
         nextMove();
         return;
@@ -324,8 +340,9 @@ void FoldApply::nextMove()
             return;
         }
         mod.writes.push_back(result);
-        fail(move.module,
-             tr("Module %1: E22 not written (%2).").arg(move.module + 1).arg(result.reason));
+        fail(move.module, said(QT_TR_NOOP("Module %1: E22 not written (%2)."))
+                              .arg(move.module + 1)
+                              .arg(writeReason(result)));
         ++m_cursor;
         nextMove();
     });
@@ -336,43 +353,44 @@ void FoldApply::confirmAddress(std::size_t index, int from, int to, int at)
 {
     FoldApplyModule &m = m_modules[index];
     const dev::ParamMeta *e22 = m.info->dictionary->find("E22");
-    m_access.read(at, {e22}, Priority::User,
-                  [this, index, from, to, at, e22, g = m_generation,
-                   self = QPointer<FoldApply>(this)](const ReadResult &read) {
-                      if (!self || !alive(g))
-                          return;
-                      FoldApplyModule &mod = m_modules[index];
-                      const bool holds = read.complete() && !read.values.empty() &&
-                                         dev::rawNumber(read.values.front().value) == to;
-                      if (!holds && m_guided && at == to) {
-                          // Point-to-point: the line's unit may reach the module whatever its E22
-                          // (the connection's unit, ARCHITECTURE.md "Protocol decisions"); read it
-                          // back there.
-                          confirmAddress(index, from, to, from);
-                          return;
-                      }
-                      WriteItem item;
-                      item.row = e22;
-                      item.value = static_cast<double>(to);
-                      item.before = static_cast<double>(from);
-                      if (holds) {
-                          item.status = WriteStatus::Verified;
-                          item.readBack = read.values.front().value;
-                          mod.current = at;
-                          mod.addressWritten = to == mod.target;
-                      } else {
-                          item.status = WriteStatus::Uncertain;
-                          item.reason = tr("no answer with E22 = %1 at address %1").arg(to);
-                      }
-                      // A parked module (ring of swaps) has two E22 records; keep them all.
-                      mod.writes.push_back(item);
-                      if (item.status != WriteStatus::Verified)
-                          fail(index, tr("Module %1: %2.").arg(index + 1).arg(item.reason));
-                      else
-                          emit moduleChanged(static_cast<int>(index));
-                      ++m_cursor;
-                      nextMove();
-                  });
+    m_access.read(
+        at, {e22}, Priority::User,
+        [this, index, from, to, at, e22, g = m_generation,
+         self = QPointer<FoldApply>(this)](const ReadResult &read) {
+            if (!self || !alive(g))
+                return;
+            FoldApplyModule &mod = m_modules[index];
+            const bool holds = read.complete() && !read.values.empty() &&
+                               dev::rawNumber(read.values.front().value) == to;
+            if (!holds && m_guided && at == to) {
+                // Point-to-point: the line's unit may reach the module whatever its E22
+                // (the connection's unit, ARCHITECTURE.md "Protocol decisions"); read it
+                // back there.
+                confirmAddress(index, from, to, from);
+                return;
+            }
+            WriteItem item;
+            item.row = e22;
+            item.value = static_cast<double>(to);
+            item.before = static_cast<double>(from);
+            if (holds) {
+                item.status = WriteStatus::Verified;
+                item.readBack = read.values.front().value;
+                mod.current = at;
+                mod.addressWritten = to == mod.target;
+            } else {
+                item.status = WriteStatus::Uncertain;
+                item.reason = said(QT_TR_NOOP("no answer with E22 = %1 at address %1")).arg(to);
+            }
+            // A parked module (ring of swaps) has two E22 records; keep them all.
+            mod.writes.push_back(item);
+            if (item.status != WriteStatus::Verified)
+                fail(index, said(QT_TR_NOOP("Module %1: %2.")).arg(index + 1).arg(item.reason));
+            else
+                emit moduleChanged(static_cast<int>(index));
+            ++m_cursor;
+            nextMove();
+        });
 }
 
 void FoldApply::nextScan()
@@ -397,13 +415,14 @@ void FoldApply::nextScan()
         FoldApplyModule &m = m_modules[index];
         m.found = result.ok;
         if (!result.ok) {
-            fail(index, tr("Scan: no module answers at address %1.").arg(address));
+            fail(index, said(QT_TR_NOOP("Scan: no module answers at address %1.")).arg(address));
         } else {
             if (m.info && result.module.identification.family != m.info->identification.family)
-                m.notes << tr("Scan: address %1 answers as %2, expected %3.")
-                               .arg(address)
-                               .arg(QString::fromStdString(result.module.identification.family),
-                                    QString::fromStdString(m.info->identification.family));
+                m.notes.push_back(
+                    said(QT_TR_NOOP("Scan: address %1 answers as %2, expected %3."))
+                        .arg(address)
+                        .arg(QString::fromStdString(result.module.identification.family))
+                        .arg(QString::fromStdString(m.info->identification.family)));
             if (m.state != FoldApplyState::Failed)
                 m.state = FoldApplyState::Done;
             emit moduleChanged(static_cast<int>(index));
@@ -421,7 +440,7 @@ void FoldApply::finish()
         if (m.state == FoldApplyState::Running || m.state == FoldApplyState::Pending) {
             m.state = m_cancelled ? FoldApplyState::Failed : m.state;
             if (m_cancelled)
-                m.notes << tr("Cancelled.");
+                m.notes.push_back(said(QT_TR_NOOP("Cancelled.")));
         }
         if (m.state != FoldApplyState::Done)
             ok = false;

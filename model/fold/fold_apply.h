@@ -7,6 +7,7 @@
 #pragma once
 
 #include "model/fold/fold_plan.h"
+#include "model/sentence.h"
 #include "model/session/device_access.h"
 #include "model/session/write_record.h"
 
@@ -33,8 +34,10 @@ struct FoldApplyModule
     std::vector<WriteItem> writes;  // the options, then E22 when it changes
     bool addressWritten =
         false; // E22 changed and read back (at the new address; point-to-point: at the line's unit)
-    std::optional<bool> found; // the closing scan identified a module at `target`
-    QStringList notes;         // for people: skipped options, what went wrong
+    std::optional<bool> found;   // the closing scan identified a module at `target`
+    std::vector<Sentence> notes; // for people: skipped options, what went wrong
+
+    QStringList noteTexts() const; // the notes in the language in force
 };
 
 class FoldApply : public QObject
@@ -78,7 +81,9 @@ private:
     void confirmAddress(std::size_t index, int from, int to, int at);
     void nextScan();
     void finish();
-    void fail(std::size_t index, const QString &why);
+    void fail(std::size_t index, const Sentence &why);
+    // A sentence of this class's tr() context, said when shown (notes outlive a language switch).
+    static Sentence said(const char *source) { return {staticMetaObject.className(), source}; }
     std::vector<std::size_t> addressChanges() const;
     bool alive(unsigned generation) const
     {

@@ -38,7 +38,9 @@ void ActuatorRestore::next()
         if (dict == m_dictionaries.end() || !dict->second) {
             for (WriteItem &item : items) {
                 item.status = WriteStatus::NotSent;
-                item.reason = tr("module %1 is not on the node").arg(module);
+                item.reason = Sentence(staticMetaObject.className(),
+                                       QT_TR_NOOP("module %1 is not on the node"))
+                                  .arg(module);
                 m_results.push_back({module, std::move(item)});
             }
             continue;

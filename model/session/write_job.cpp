@@ -1,5 +1,6 @@
 #include "write_job.h"
 
+#include "core/vt_assert.h"
 #include "dict/cooking.h"
 
 #include <QPointer>
@@ -8,6 +9,38 @@
 namespace vt::model {
 
 namespace {
+
+// Each status's key (the CLI's JSON, logs) and its words for people (through tr()).
+struct StatusWords
+{
+    WriteStatus status;
+    const char *key;
+    const char *text;
+};
+constexpr StatusWords kStatusWords[] = {
+    {WriteStatus::Pending, "pending", QT_TRANSLATE_NOOP("vt::model::WriteJob", "pending")},
+    {WriteStatus::Unchanged, "unchanged", QT_TRANSLATE_NOOP("vt::model::WriteJob", "unchanged")},
+    {WriteStatus::RefusedLocally, "refused-locally",
+     QT_TRANSLATE_NOOP("vt::model::WriteJob", "refused before sending")},
+    {WriteStatus::Verified, "verified", QT_TRANSLATE_NOOP("vt::model::WriteJob", "verified")},
+    {WriteStatus::Written, "written",
+     QT_TRANSLATE_NOOP("vt::model::WriteJob", "written, not verified")},
+    {WriteStatus::Refused, "refused",
+     QT_TRANSLATE_NOOP("vt::model::WriteJob", "refused by the device")},
+    {WriteStatus::Mismatch, "mismatch",
+     QT_TRANSLATE_NOOP("vt::model::WriteJob", "read back differs")},
+    {WriteStatus::Uncertain, "uncertain", QT_TRANSLATE_NOOP("vt::model::WriteJob", "uncertain")},
+    {WriteStatus::NotSent, "not-sent", QT_TRANSLATE_NOOP("vt::model::WriteJob", "not sent")},
+};
+
+const StatusWords *wordsOf(WriteStatus status)
+{
+    for (const StatusWords &words : kStatusWords)
+        if (words.status == status)
+            return &words;
+    assertFailed("every WriteStatus has words in kStatusWords", __FILE__, __LINE__);
+    return nullptr;
+}
 
 QString valueText(const dev::ParamMeta &row, const dev::RawValue &value)
 {
@@ -60,21 +93,21 @@ void WriteJob::start()
         WriteItem &item = m_items[i];
         item.readBack.reset();
         item.exceptionCode = 0;
-        item.reason.clear();
+        item.reason = {};
         item.deviceText = {};
         item.status = WriteStatus::Pending;
         if (!item.row) {
             item.status = WriteStatus::RefusedLocally;
-            item.reason = tr("unknown parameter");
+            item.reason = said(QT_TR_NOOP("unknown parameter"));
         } else if (dev::isText(item.value) != item.row->isString()) {
             item.status = WriteStatus::RefusedLocally;
-            item.reason =
-                item.row->isString()
-                    ? tr("%1 expects text").arg(QString::fromStdString(item.row->name))
-                    : tr("%1 expects a number").arg(QString::fromStdString(item.row->name));
+            item.reason = (item.row->isString() ? said(QT_TR_NOOP("%1 expects text"))
+                                                : said(QT_TR_NOOP("%1 expects a number")))
+                              .arg(QString::fromStdString(item.row->name));
         } else if (!item.row->writable()) {
             item.status = WriteStatus::RefusedLocally;
-            item.reason = tr("%1 is not writable").arg(QString::fromStdString(item.row->name));
+            item.reason =
+                said(QT_TR_NOOP("%1 is not writable")).arg(QString::fromStdString(item.row->name));
         } else if (!dev::isText(item.value)) {
             if (auto error = dev::checkWrite(*item.row, dev::rawNumber(item.value))) {
                 item.status = WriteStatus::RefusedLocally;
@@ -176,7 +209,8 @@ void WriteJob::writeItem(int index)
                     verifyItem(index);
                     return;
                 }
-                settle(index, WriteStatus::Written, tr("acknowledged; not read back"));
+                settle(index, WriteStatus::Written,
+                       said(QT_TR_NOOP("acknowledged; not read back")));
                 next();
                 return;
             case OutcomeStatus::DeviceException:
@@ -185,18 +219,17 @@ void WriteJob::writeItem(int index)
                 next();
                 return;
             case OutcomeStatus::NotEncodable:
-                settle(index, WriteStatus::RefusedLocally, outcome.reason);
+                settle(index, WriteStatus::RefusedLocally, Sentence::verbatim(outcome.reason));
                 next();
                 return;
             case OutcomeStatus::Timeout:
             case OutcomeStatus::LinkLost:
             case OutcomeStatus::Cancelled:
-                settle(
-                    index, outcome.sent ? WriteStatus::Uncertain : WriteStatus::NotSent,
-                    outcome.sent
-                        ? tr("sent, but no answer (%1): the value may or may not be on the device")
-                              .arg(outcome.reason)
-                        : outcome.reason);
+                settle(index, outcome.sent ? WriteStatus::Uncertain : WriteStatus::NotSent,
+                       outcome.sent ? said(QT_TR_NOOP("sent, but no answer (%1): the value may or "
+                                                      "may not be on the device"))
+                                          .arg(outcome.reason)
+                                    : Sentence::verbatim(outcome.reason));
                 stopRemaining(outcome.reason);
                 done();
                 return;
@@ -207,36 +240,37 @@ void WriteJob::writeItem(int index)
 void WriteJob::verifyItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(m_module, {item.row}, Priority::User,
-                  [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
-                      if (!guard)
-                          return; // the job was destroyed while its request was out
-                      WriteItem &it = m_items[static_cast<std::size_t>(index)];
-                      if (result.values.size() == 1) {
-                          it.readBack = result.values.front().value;
-                          if (readBackEquals(it, *it.readBack))
-                              settle(index, WriteStatus::Verified);
-                          else
-                              settle(index, WriteStatus::Mismatch,
-                                     tr("read back %1, expected %2")
-                                         .arg(valueText(*it.row, *it.readBack),
-                                              valueText(*it.row, it.value)));
-                          next();
-                          return;
-                      }
-                      const Outcome outcome =
-                          result.failures.empty() ? Outcome{} : result.failures.front().outcome;
-                      settle(index, WriteStatus::Written,
-                             tr("acknowledged; the read back failed (%1)").arg(outcome.reason));
-                      if (outcome.status == OutcomeStatus::LinkLost ||
-                          outcome.status == OutcomeStatus::Timeout ||
-                          outcome.status == OutcomeStatus::Cancelled) {
-                          stopRemaining(outcome.reason);
-                          done();
-                          return;
-                      }
-                      next();
-                  });
+    m_access.read(
+        m_module, {item.row}, Priority::User,
+        [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
+            if (!guard)
+                return; // the job was destroyed while its request was out
+            WriteItem &it = m_items[static_cast<std::size_t>(index)];
+            if (result.values.size() == 1) {
+                it.readBack = result.values.front().value;
+                if (readBackEquals(it, *it.readBack))
+                    settle(index, WriteStatus::Verified);
+                else
+                    settle(index, WriteStatus::Mismatch,
+                           said(QT_TR_NOOP("read back %1, expected %2"))
+                               .arg(valueText(*it.row, *it.readBack))
+                               .arg(valueText(*it.row, it.value)));
+                next();
+                return;
+            }
+            const Outcome outcome =
+                result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+            settle(index, WriteStatus::Written,
+                   said(QT_TR_NOOP("acknowledged; the read back failed (%1)")).arg(outcome.reason));
+            if (outcome.status == OutcomeStatus::LinkLost ||
+                outcome.status == OutcomeStatus::Timeout ||
+                outcome.status == OutcomeStatus::Cancelled) {
+                stopRemaining(outcome.reason);
+                done();
+                return;
+            }
+            next();
+        });
 }
 
 void WriteJob::probeItem(int index)
@@ -251,7 +285,7 @@ void WriteJob::probeItem(int index)
             if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
                 it.readBack = result.values.front().value;
                 settle(index, WriteStatus::Verified,
-                       tr("found on the device after the interruption"));
+                       said(QT_TR_NOOP("found on the device after the interruption")));
                 next();
                 return;
             }
@@ -268,7 +302,7 @@ void WriteJob::probeItem(int index)
         });
 }
 
-void WriteJob::settle(int index, WriteStatus status, const QString &reason,
+void WriteJob::settle(int index, WriteStatus status, const Sentence &reason,
                       const dev::LocalText &deviceText)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
@@ -286,7 +320,7 @@ void WriteJob::stopRemaining(const QString &reason)
         WriteItem &item = m_items[static_cast<std::size_t>(m_order[k])];
         if (item.status == WriteStatus::Pending) {
             item.status = WriteStatus::NotSent;
-            item.reason = tr("not sent: the write stopped (%1)").arg(reason);
+            item.reason = said(QT_TR_NOOP("not sent: the write stopped (%1)")).arg(reason);
             item.deviceText = {};
             emit itemChanged(m_order[k]);
         }
@@ -315,43 +349,35 @@ bool WriteJob::readBackEquals(const WriteItem &item, const dev::RawValue &value)
     return dev::rawNumber(item.value) == dev::rawNumber(value);
 }
 
+Sentence writeStatusSentence(WriteStatus status)
+{
+    const StatusWords *words = wordsOf(status);
+    return words ? Sentence("vt::model::WriteJob", words->text) : Sentence();
+}
+
 QString writeStatusText(WriteStatus status)
 {
-    switch (status) {
-    case WriteStatus::Pending: return WriteJob::tr("pending");
-    case WriteStatus::Unchanged: return WriteJob::tr("unchanged");
-    case WriteStatus::RefusedLocally: return WriteJob::tr("refused before sending");
-    case WriteStatus::Verified: return WriteJob::tr("verified");
-    case WriteStatus::Written: return WriteJob::tr("written, not verified");
-    case WriteStatus::Refused: return WriteJob::tr("refused by the device");
-    case WriteStatus::Mismatch: return WriteJob::tr("read back differs");
-    case WriteStatus::Uncertain: return WriteJob::tr("uncertain");
-    case WriteStatus::NotSent: return WriteJob::tr("not sent");
-    }
-    return {};
+    return writeStatusSentence(status).text();
+}
+
+Sentence writeReason(const WriteItem &item)
+{
+    if (!item.deviceText.en.empty())
+        return Sentence::bilingual(item.deviceText);
+    return item.reason;
 }
 
 QString writeReasonText(const WriteItem &item, dev::Language lang)
 {
     if (!item.deviceText.en.empty())
         return QString::fromStdString(item.deviceText.in(lang));
-    return item.reason;
+    return item.reason.text();
 }
 
 const char *writeStatusKey(WriteStatus status)
 {
-    switch (status) {
-    case WriteStatus::Pending: return "pending";
-    case WriteStatus::Unchanged: return "unchanged";
-    case WriteStatus::RefusedLocally: return "refused-locally";
-    case WriteStatus::Verified: return "verified";
-    case WriteStatus::Written: return "written";
-    case WriteStatus::Refused: return "refused";
-    case WriteStatus::Mismatch: return "mismatch";
-    case WriteStatus::Uncertain: return "uncertain";
-    case WriteStatus::NotSent: return "not-sent";
-    }
-    return "?";
+    const StatusWords *words = wordsOf(status);
+    return words ? words->key : "?";
 }
 
 } // namespace vt::model

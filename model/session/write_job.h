@@ -57,8 +57,10 @@ private:
     void verifyItem(int index);
     void probeItem(int index); // resume of an Uncertain row: read before writing
     void stopRemaining(const QString &reason);
-    void settle(int index, WriteStatus status, const QString &reason = {},
+    void settle(int index, WriteStatus status, const Sentence &reason = {},
                 const dev::LocalText &deviceText = {});
+    // A sentence of this class's tr() context, said when shown (write results stay on screen).
+    static Sentence said(const char *source) { return {staticMetaObject.className(), source}; }
     void done();
     bool readBackEquals(const WriteItem &item, const dev::RawValue &value) const;
 

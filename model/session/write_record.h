@@ -6,6 +6,7 @@
 #include "core/local_text.h"
 #include "dict/param_meta.h"
 #include "dict/raw_value.h"
+#include "model/sentence.h"
 
 #include <QString>
 #include <optional>
@@ -33,7 +34,7 @@ struct WriteItem
     WriteStatus status = WriteStatus::Pending;
     std::optional<dev::RawValue> readBack;
     int exceptionCode = 0;
-    QString reason;            // the application's words, already through tr()
+    Sentence reason;           // the application's words, said when shown
     dev::LocalText deviceText; // the device's or the dictionary's words (a refusal, a range
                                // error), both languages; shown through writeReasonText()
 };
@@ -51,9 +52,12 @@ inline bool needsResume(WriteStatus s)
 }
 
 QString writeStatusText(WriteStatus status);
+Sentence writeStatusSentence(WriteStatus status); // the same, said when shown
 // Why a row ended as it did, in `lang`: the device's or dictionary's text when there is one,
 // otherwise the application's reason. Empty when there is nothing to say.
 QString writeReasonText(const WriteItem &item, dev::Language lang);
+// The same kept as a sentence, for a text that stays on screen across a language switch.
+Sentence writeReason(const WriteItem &item);
 // "verified", "refused: value out of range" … for the CLI and the result list.
 const char *writeStatusKey(WriteStatus status);
 

@@ -5,6 +5,7 @@
 #include "app/gui/language.h"
 #include "dict/dictionary_loader.h"
 #include "model/curve/lcurve.h"
+#include "model/fold/fold_apply.h"
 #include "model/fold/fold_check.h"
 #include "model/params/parameter_document.h"
 #include "model/session/write_job.h"
@@ -126,9 +127,59 @@ TEST(ModelTextsLanguage, WriteJobRefusalsInGerman)
         EXPECT_EQ(model::writeReasonText(local, model::textLanguage()),
                   QStringLiteral("d1.11 ist nicht beschreibbar"));
     }
-    // Back in English, the same result says the device's refusal in English.
+    // Back in English, the same result says the device's refusal in English, and the refusal
+    // the application worded while German was in force is said again in English.
     EXPECT_EQ(model::writeReasonText(job.items()[0], model::textLanguage()),
               QString::fromStdString(job.items()[0].deviceText.en));
+    EXPECT_EQ(model::writeReasonText(job.items()[1], model::textLanguage()),
+              QStringLiteral("d1.11 is not writable"));
+}
+
+// OPAT manual §1.4: a slave's SADR is its rotary switch. The address inside a finding is a value
+// until it is shown, so it follows the language like the sentence around it.
+TEST(ModelTextsLanguage, OpatAddressInAFindingFollowsTheLanguage)
+{
+    model::FoldPlan plan = model::defaultFoldPlan(model::FoldNode::Opat, 3);
+    plan.modules[2].address = 9; // beyond the rotary switch's 1..7
+    const auto findings = model::checkFoldPlan(plan);
+    const model::FoldFinding *f = find(findings, model::FoldCheckCode::AddressOutOfRange);
+    ASSERT_NE(f, nullptr);
+    EXPECT_TRUE(model::foldFindingText(*f).contains(QStringLiteral("SADR 9 (rotary switch 9)")))
+        << model::foldFindingText(*f).toStdString();
+    {
+        German german;
+        EXPECT_TRUE(model::foldFindingText(*f).contains(QStringLiteral("SADR 9 (Drehschalter 9)")))
+            << model::foldFindingText(*f).toStdString();
+        EXPECT_EQ(model::foldAddressText(plan.node, plan.modules[0]),
+                  QStringLiteral("SADR 0 (Master)"));
+    }
+    EXPECT_EQ(model::foldAddressText(plan.node, plan.modules[0]),
+              QStringLiteral("SADR 0 (master)"));
+}
+
+// A fold apply's notes stay on the apply page: made in German, they are said in English after a
+// switch (OPAT manual §1.4: the rotary switch instruction).
+TEST(ModelTextsLanguage, FoldApplyNotesFollowTheLanguage)
+{
+    auto c = openSim({"opat", 3, "modbus-tcp", {}, {}});
+    ASSERT_TRUE(c);
+    model::FoldPlan plan = model::defaultFoldPlan(model::FoldNode::Opat, 3);
+    plan.modules[2].address = 5;
+    model::FoldApply apply(c->access(), plan, {0, 1, 2});
+    QSignalSpy finished(&apply, &model::FoldApply::finished);
+    {
+        German german;
+        apply.start();
+        ASSERT_TRUE(finished.wait(kWaitMs) || finished.count() > 0);
+        EXPECT_TRUE(apply.modules()[2]
+                        .noteTexts()
+                        .join(QLatin1Char(' '))
+                        .contains(QStringLiteral("Drehschalter")))
+            << apply.modules()[2].noteTexts().join(QLatin1Char(' ')).toStdString();
+    }
+    const QString english = apply.modules()[2].noteTexts().join(QLatin1Char(' '));
+    EXPECT_TRUE(english.contains(QStringLiteral("set its rotary switch to 5")))
+        << english.toStdString();
 }
 
 TEST(ModelTextsLanguage, ParameterEditRefusalInGerman)

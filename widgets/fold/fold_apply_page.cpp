@@ -188,7 +188,7 @@ void FoldApplyPage::showModules()
     m_table->setRowCount(static_cast<int>(plan.modules.size()));
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const auto index = static_cast<std::size_t>(row);
-        QString address = model::localText(model::foldAddressText(plan.node, plan.modules[index]));
+        QString address = model::foldAddressText(plan.node, plan.modules[index]);
         QString state = tr("not applied");
         QString notes;
         if (m_job && index < m_job->modules().size()) {
@@ -206,7 +206,7 @@ void FoldApplyPage::showModules()
                 if (item.row)
                     written << QStringLiteral("%1: %2").arg(QString::fromStdString(item.row->name),
                                                             model::writeStatusText(item.status));
-            notes = (written + m.notes).join(QStringLiteral("; "));
+            notes = (written + m.noteTexts()).join(QStringLiteral("; "));
         }
         const QString cells[ColCount] = {tr("Module %1").arg(row + 1), address, state, notes};
         for (int c = 0; c < ColCount; ++c) {

@@ -51,7 +51,7 @@ bool run(FoldApply &apply, bool whole = true, std::size_t module = 0)
     const bool ok = !finished.isEmpty() && finished.front().front().toBool();
     if (!ok) // for the failure message of a test that expected success
         for (const FoldApplyModule &m : apply.modules())
-            log << m.notes;
+            log << m.noteTexts();
     std::cerr << (ok ? "" : log.join(QLatin1Char('\n')).toStdString() + "\n");
     return ok;
 }
@@ -70,7 +70,7 @@ TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
     for (std::size_t i = 0; i < 3; ++i) {
         const FoldApplyModule &m = apply.modules()[i];
         EXPECT_EQ(m.state, FoldApplyState::Done)
-            << m.notes.join(QStringLiteral("; ")).toStdString();
+            << m.noteTexts().join(QStringLiteral("; ")).toStdString();
         EXPECT_TRUE(m.addressWritten);
         ASSERT_TRUE(m.found.has_value());
         EXPECT_TRUE(*m.found);
@@ -81,7 +81,7 @@ TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
         ASSERT_GE(m.writes.size(), 3u);
         for (const WriteItem &item : m.writes)
             EXPECT_EQ(item.status, WriteStatus::Verified)
-                << item.row->name << ": " << item.reason.toStdString();
+                << item.row->name << ": " << item.reason.text().toStdString();
     }
     // Nothing answers where the modules were.
     for (int old : {4, 5, 6})
@@ -141,7 +141,7 @@ TEST(FoldApply, MissingModuleFails)
     FoldApply apply(c->access(), dmaPlan(3), {1, 2, 3});
     EXPECT_FALSE(run(apply));
     EXPECT_EQ(apply.modules()[2].state, FoldApplyState::Failed);
-    EXPECT_FALSE(apply.modules()[2].notes.isEmpty());
+    EXPECT_FALSE(apply.modules()[2].notes.empty());
 }
 
 // OPAT manual §1.4: the slaves' addresses are rotary switches. Options are written; an address
@@ -161,7 +161,8 @@ TEST(FoldApply, OpatOptionsAndSwitchInstruction)
     EXPECT_EQ(stored(*c, 0, "E23"), 20);
     EXPECT_EQ(apply.modules()[2].state, FoldApplyState::Failed);
     EXPECT_TRUE(apply.modules()[2]
-                    .notes.join(QLatin1Char(' '))
+                    .noteTexts()
+                    .join(QLatin1Char(' '))
                     .contains(QStringLiteral("rotary switch to 5")));
 }
 

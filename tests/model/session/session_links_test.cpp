@@ -75,7 +75,7 @@ struct Endpoint
         job.start();
         EXPECT_TRUE(finished.wait(kWaitMs));
         EXPECT_EQ(job.items()[0].status, model::WriteStatus::Verified)
-            << job.items()[0].reason.toStdString();
+            << job.items()[0].reason.text().toStdString();
         return job.items()[0].status;
     }
 };

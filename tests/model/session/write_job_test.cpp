@@ -63,7 +63,7 @@ TEST(WriteJob, WritesVerifiesAndTheSimulatorHoldsTheValue)
     EXPECT_TRUE(job.complete());
     for (const WriteItem &item : job.items()) {
         EXPECT_EQ(item.status, WriteStatus::Verified)
-            << item.row->name << ": " << item.reason.toStdString();
+            << item.row->name << ": " << item.reason.text().toStdString();
         EXPECT_EQ(storedRaw(c->simModule(), *item.row), dev::rawNumber(item.value))
             << item.row->name;
     }
