@@ -56,11 +56,12 @@ void ensureApplication()
     new QCoreApplication(argc, argv); // NOLINT: lives until the process ends, by design
 }
 
-void Context::useLanguage(dev::Language lang)
+void Context::useLanguage(dev::Language language)
 {
     ensureApplication();
+    lang = language;
     const QString code =
-        lang == dev::Language::German ? QStringLiteral("de") : QStringLiteral("en");
+        language == dev::Language::German ? QStringLiteral("de") : QStringLiteral("en");
     if (translation && translation->code() == code)
         return;
     translation.reset();

@@ -40,11 +40,13 @@ struct Context
     // --lang: the catalogue in force while the command runs, removed when runCli returns, so an
     // in-process run leaves the language as it found it.
     std::unique_ptr<i18n::Translation> translation{};
+    // The same language for the texts devices/ carries in both (device refusals, file errors).
+    dev::Language lang = dev::Language::English;
 
     // Prints "valvetune-cli: <message>" on stderr and returns the code.
     int fail(int code, const std::string &message) const;
     // Texts worded through tr() (the session's, the links', the model's) come out in `lang`.
-    void useLanguage(dev::Language lang);
+    void useLanguage(dev::Language language);
 };
 
 struct Command

@@ -20,9 +20,7 @@ int runGet(const QStringList &argsIn, Context &ctx)
     if (!options || !checkPositional(args, ctx, kName, 1, 4096, &code))
         return code;
     DeviceRun run(ctx, *options);
-    if (const int c = run.connect())
-        return c;
-    auto module = run.firstModule(&code);
+    auto module = run.connectFirstModule(&code);
     if (!module)
         return code;
     const int address = module->address;

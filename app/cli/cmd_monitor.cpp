@@ -70,9 +70,7 @@ int runMonitor(const QStringList &argsIn, Context &ctx)
         return code;
 
     DeviceRun run(ctx, *options);
-    if (const int c = run.connect())
-        return c;
-    auto module = run.firstModule(&code);
+    auto module = run.connectFirstModule(&code);
     if (!module)
         return code;
     const int address = module->address;

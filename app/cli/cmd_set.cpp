@@ -35,9 +35,7 @@ int runSet(const QStringList &argsIn, Context &ctx)
             return failUsage(ctx, kName, "expected NAME=VALUE, got '" + str(a) + "'");
     }
     DeviceRun run(ctx, *options);
-    if (const int c = run.connect())
-        return c;
-    auto module = run.firstModule(&code);
+    auto module = run.connectFirstModule(&code);
     if (!module)
         return code;
     const int address = module->address;

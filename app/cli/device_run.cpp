@@ -101,9 +101,9 @@ readableRowsNamed(const QStringList &names, const model::ModuleInfo &module, Con
             return std::nullopt;
         }
         if (!row->readable()) {
-            *code =
-                failUsage(ctx, command,
-                          row->name + " cannot be read (" + dev::accessText(row->access).en + ")");
+            *code = failUsage(ctx, command,
+                              row->name + " cannot be read (" +
+                                  dev::accessText(row->access).in(ctx.lang) + ")");
             return std::nullopt;
         }
         rows.push_back(row);
@@ -306,8 +306,12 @@ std::optional<model::ModuleInfo> DeviceRun::accept(const model::IdentifyResult &
     return std::nullopt;
 }
 
-std::optional<model::ModuleInfo> DeviceRun::firstModule(int *exitCode)
+std::optional<model::ModuleInfo> DeviceRun::connectFirstModule(int *exitCode)
 {
+    if (const int c = connect()) {
+        *exitCode = c;
+        return std::nullopt;
+    }
     const auto addresses = select(false);
     if (!addresses || addresses->empty()) {
         *exitCode = kExitUsage;

@@ -68,9 +68,9 @@ public:
 
     // Identifies one module (bounded). nullopt after printing why; *exitCode says how to exit.
     std::optional<model::ModuleInfo> identify(int address, int *exitCode);
-    // The module a single-module command (get, set, monitor) works on: --module or the first,
-    // identified. nullopt after printing why; *exitCode says how to exit.
-    std::optional<model::ModuleInfo> firstModule(int *exitCode);
+    // Connects, then identifies the module a single-module command (get, set, monitor) works
+    // on: --module or the first. nullopt after printing why; *exitCode says how to exit.
+    std::optional<model::ModuleInfo> connectFirstModule(int *exitCode);
     // Identifies several at once; the results in the order of `addresses` (failures included).
     std::vector<model::IdentifyResult> identifyEach(const std::vector<int> &addresses);
     // Reads `rows` of `address` (bounded); nullopt when the deadline passed.

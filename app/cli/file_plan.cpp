@@ -35,7 +35,7 @@ std::optional<dev::files::ParamFile> load(Context &ctx, const QString &path, int
     auto parsed = dev::files::parseParamFile(
         std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
     if (!parsed.ok()) {
-        *code = ctx.fail(kExitUsage, str(path) + ": " + parsed.error().text().en);
+        *code = ctx.fail(kExitUsage, str(path) + ": " + parsed.error().text().in(ctx.lang));
         return std::nullopt;
     }
     return *parsed;
