@@ -1,5 +1,7 @@
 #include "core/link_protocol.h"
 
+#include "core/key_lookup.h"
+
 namespace vt::dev {
 
 const char *key(LinkProtocol protocol)
@@ -16,10 +18,7 @@ const char *key(LinkProtocol protocol)
 
 template<> std::optional<LinkProtocol> fromKey<LinkProtocol>(std::string_view text)
 {
-    for (LinkProtocol p : kLinkProtocols)
-        if (text == key(p))
-            return p;
-    return std::nullopt;
+    return keyLookup<LinkProtocol>(kLinkProtocols, text);
 }
 
 } // namespace vt::dev

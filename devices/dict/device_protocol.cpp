@@ -1,5 +1,7 @@
 #include "dict/device_protocol.h"
 
+#include "core/key_lookup.h"
+
 namespace vt::dev {
 
 const char *key(DeviceProtocol protocol)
@@ -14,10 +16,7 @@ const char *key(DeviceProtocol protocol)
 
 template<> std::optional<DeviceProtocol> fromKey<DeviceProtocol>(std::string_view text)
 {
-    for (DeviceProtocol p : kDeviceProtocols)
-        if (text == key(p))
-            return p;
-    return std::nullopt;
+    return keyLookup<DeviceProtocol>(kDeviceProtocols, text);
 }
 
 } // namespace vt::dev

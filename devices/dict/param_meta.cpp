@@ -1,5 +1,7 @@
 #include "param_meta.h"
 
+#include "core/key_lookup.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
@@ -18,10 +20,7 @@ const char *key(RowKind kind)
 
 template<> std::optional<RowKind> fromKey<RowKind>(std::string_view text)
 {
-    for (RowKind k : kRowKinds)
-        if (text == key(k))
-            return k;
-    return std::nullopt;
+    return keyLookup<RowKind>(kRowKinds, text);
 }
 
 const EnumLabel *ParamMeta::findEnum(std::int64_t value) const

@@ -1,5 +1,6 @@
 // parseParamFile: bounded, typed reading of a .vtpar file (docs/FILE-FORMAT.md). Every problem
 // becomes a FileError naming where it is; nothing here throws past the function.
+#include "core/json_depth.h"
 #include "param_file.h"
 
 #include <cmath>
@@ -43,28 +44,10 @@ struct Failure
 // would recurse once per level.
 void checkDepth(std::string_view text)
 {
-    int depth = 0;
-    bool inString = false, escaped = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxDepth)
-                failAt(FileErrc::TooDeep, text, i,
-                       {"nested deeper than " + std::to_string(kMaxDepth) + " levels",
-                        "tiefer als " + std::to_string(kMaxDepth) + " Ebenen verschachtelt"});
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
+    if (const auto at = jsonTooDeepAt(text, kMaxDepth))
+        failAt(FileErrc::TooDeep, text, *at,
+               {"nested deeper than " + std::to_string(kMaxDepth) + " levels",
+                "tiefer als " + std::to_string(kMaxDepth) + " Ebenen verschachtelt"});
 }
 
 std::string typeNameDe(const Json &j)

@@ -1,6 +1,7 @@
 #include "describe_any.h"
 
 #include "canopen/sdo.h"
+#include "core/key_lookup.h"
 #include "dict/cooking.h"
 #include "dsp408/pkw.h"
 #include "dsp408/pzd.h"
@@ -30,10 +31,7 @@ const char *key(FrameFormat format)
 
 template<> std::optional<FrameFormat> fromKey<FrameFormat>(std::string_view text)
 {
-    for (FrameFormat f : kFrameFormats)
-        if (text == key(f))
-            return f;
-    return std::nullopt;
+    return keyLookup<FrameFormat>(kFrameFormats, text);
 }
 
 FrameFormat frameFormatOf(LinkProtocol protocol)

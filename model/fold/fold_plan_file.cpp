@@ -1,5 +1,7 @@
 #include "fold_plan_file.h"
 
+#include "core/json_depth.h"
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -45,33 +47,6 @@ FoldFileError io(FoldFileProblem problem, const std::string &path)
     FoldFileError e = error(FoldFileErrc::Io, {}, problem);
     e.path = path;
     return e;
-}
-
-// Nesting depth outside strings, so a hostile "[[[[…" never reaches the recursive parts of the
-// JSON library (its destructor recurses).
-bool depthWithin(std::string_view text, int limit)
-{
-    int depth = 0;
-    bool inString = false, escaped = false;
-    for (char c : text) {
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"')
-                inString = false;
-            continue;
-        }
-        if (c == '"')
-            inString = true;
-        else if (c == '[' || c == '{') {
-            if (++depth > limit)
-                return false;
-        } else if (c == ']' || c == '}')
-            --depth;
-    }
-    return true;
 }
 
 class Reader
@@ -169,7 +144,7 @@ dev::Result<FoldPlan, FoldFileError> parseFoldPlan(std::string_view text)
 {
     if (text.size() > kFoldPlanMaxBytes)
         return error(FoldFileErrc::TooLarge);
-    if (!depthWithin(text, kMaxDepth))
+    if (dev::jsonTooDeepAt(text, kMaxDepth))
         return error(FoldFileErrc::WrongFormat, {}, FoldFileProblem::TooDeep);
     Json root;
     try {
