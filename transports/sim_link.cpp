@@ -1,5 +1,6 @@
 #include "sim_link.h"
 
+#include "core/vt_assert.h"
 #include "link_log.h"
 #include "transports/byte_span.h"
 
@@ -51,11 +52,12 @@ void SimLink::open()
     QTimer::singleShot(0, this, [this, token] {
         if (token != m_openToken || state() != LinkState::Opening)
             return;
-        if (!m_server) { // a programmer error: fail like a link, do not crash (rule 12)
+        // Whoever makes a SimLink attaches its simulator; without one, fail like a link.
+        VT_ASSERT(m_server, {
             setState(LinkState::Failed);
             emit failed(tr("No simulator is attached to %1").arg(description()));
             return;
-        }
+        });
         m_requestWireFree = m_answerWireFree = DelayLine::Clock::now();
         setState(LinkState::Open);
     });

@@ -1,6 +1,7 @@
 #include "connection.h"
 
 #include "access/transaction.h"
+#include "core/vt_assert.h"
 #include "dict/dictionary.h"
 #include "model/session/adapter_factory.h"
 #include "sim/sim_device.h"
@@ -169,9 +170,8 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
         return tr("module address %1 is not 0..255").arg(*spec.unit);
 
     auto made = makeAdapter(protocol, hcsFamilyHint(spec), device);
-    if (!made)
-        return QStringLiteral("no protocol adapter for %1") // programmer error
-            .arg(QString::fromLatin1(dev::key(protocol)));
+    VT_ASSERT(made, return QStringLiteral("no protocol adapter for %1") // every protocol has one
+                        .arg(QString::fromLatin1(dev::key(protocol))));
 
     auto c = std::unique_ptr<Connection>(new Connection(std::move(spec)));
     c->m_sim = sim;

@@ -1,5 +1,7 @@
 #include "device_image.h"
 
+#include "core/vt_assert.h"
+
 namespace vt::model {
 
 DeviceImage::DeviceImage(QObject *parent) : QObject(parent)
@@ -50,8 +52,7 @@ void DeviceImage::recordRead(
 
 void DeviceImage::recordWritten(int module, const dev::ParamMeta *row, const dev::RawValue &value)
 {
-    if (!row)
-        return;
+    VT_ASSERT(row, return ); // DeviceAccess::write() passes the row it wrote
     Rows &rows = m_modules[module];
     std::optional<dev::RawValue> before;
     if (auto it = rows.find(row); it != rows.end())
