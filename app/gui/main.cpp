@@ -10,6 +10,7 @@
 
 #include <QApplication>
 #include <QGuiApplication>
+#include <QIcon>
 #include <QMessageBox>
 #include <cstdio>
 #include <unistd.h>
@@ -21,6 +22,10 @@ int main(int argc, char *argv[])
     QCoreApplication::setOrganizationName(QStringLiteral("ValveTune"));
     QCoreApplication::setApplicationName(QStringLiteral("ValveTune"));
     QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));
+    // The installed desktop entry and icon carry the application id: window managers and Wayland
+    // compositors match the window to them through it.
+    QGuiApplication::setDesktopFileName(QStringLiteral(VT_APP_ID));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral(VT_APP_ID)));
 
     QString help;
     const vt::app::GuiOptions options =
