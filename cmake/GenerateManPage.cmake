@@ -30,9 +30,9 @@ if(COMMANDS)
     list(PREPEND includes --include=${generated})
 endif()
 
-# help2man runs the program; the GUI needs no display for --help with the offscreen platform.
+# help2man runs the program, as vt_help_text() does.
 execute_process(
-    COMMAND ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen
+    COMMAND ${CMAKE_COMMAND} -E env ${VT_HELP_ENV}
             ${HELP2MAN} --no-info --section=1 --name=${SUMMARY} ${includes}
             --output=${WORK}/${name}.1 ${PROGRAM}
     RESULT_VARIABLE rc ERROR_VARIABLE err)
