@@ -524,6 +524,10 @@
         <source>Cannot open %1: %2 baud is not a rate the port supports.</source>
         <translation>%1 kann nicht geöffnet werden: %2 Baud unterstützt die Schnittstelle nicht.</translation>
     </message>
+    <message>
+        <source>Cannot open %1: permission denied. Serial ports are for the members of the group %2: add your user to it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and log in again.</source>
+        <translation>%1 kann nicht geöffnet werden: Zugriff verweigert. Serielle Schnittstellen dürfen nur Mitglieder der Gruppe %2 öffnen: Fügen Sie Ihren Benutzer mit „sudo usermod -aG %2 $USER“ hinzu, melden Sie sich dann ab und wieder an.</translation>
+    </message>
 </context>
 <context>
     <name>vt::link::SimLink</name>

@@ -51,15 +51,26 @@ public:
 struct OpenFailure
 {
     enum class Kind {
-        NotFound,        // no such device
-        CannotOpen,      // open() refused: detail says why (permission, busy …)
-        NotATerminal,    // a file or device that is no tty
-        UnsupportedBaud, // termios has no such rate
-        CannotConfigure  // the driver refused the line settings: detail says why
+        NotFound,         // no such device
+        PermissionDenied, // the user may not open it: group names the group that may
+        CannotOpen,       // open() refused for another reason: detail says why (busy …)
+        NotATerminal,     // a file or device that is no tty
+        UnsupportedBaud,  // termios has no such rate
+        CannotConfigure   // the driver refused the line settings: detail says why
     };
     Kind kind = Kind::NotFound;
     QString detail;
+    QString group; // PermissionDenied: the group to join (serialPortGroup())
 };
+
+// The kind of failure an open() that set errno `code` is.
+OpenFailure::Kind openFailureKind(int code);
+// The group whose members may open the port at `path`: the device's own group when it grants
+// read and write (dialout on Debian, uucp on Arch), else the usual serial group, dialout.
+QString serialPortGroup(const QString &path);
+// The failure of an open() of `path` that set errno `code`, with the system's text and, for a
+// permission problem, the group to join.
+OpenFailure openFailure(const QString &path, int code, const QString &systemText);
 
 // libserialport: nullptr when it cannot find or open the port (*failure says why; the termios
 // way may still succeed then) or refuses the line settings (CannotConfigure: final).

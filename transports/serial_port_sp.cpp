@@ -102,11 +102,14 @@ std::unique_ptr<SerialPortIo> openWithLibserialport(const SerialSettings &settin
     if (sp_get_port_by_name(name.constData(), &port) != SP_OK) {
         // No sysfs entry: no such device, or one libserialport does not know (a pty, a
         // /dev/serial/by-id link).
-        *failure = {OpenFailure::Kind::NotFound, lastError()};
+        *failure = {OpenFailure::Kind::NotFound, lastError(), {}};
         return nullptr;
     }
-    if (sp_open(port, SP_MODE_READ_WRITE) != SP_OK) {
-        *failure = {OpenFailure::Kind::CannotOpen, lastError()};
+    if (const sp_return opened = sp_open(port, SP_MODE_READ_WRITE); opened != SP_OK) {
+        // SP_ERR_FAIL: the system refused, and sp_last_error_code() is its errno.
+        *failure = opened == SP_ERR_FAIL
+                       ? openFailure(settings.portName, sp_last_error_code(), lastError())
+                       : OpenFailure{OpenFailure::Kind::CannotOpen, lastError(), {}};
         sp_free_port(port);
         return nullptr;
     }
@@ -121,7 +124,7 @@ std::unique_ptr<SerialPortIo> openWithLibserialport(const SerialSettings &settin
                  sp_set_config(port, config) == SP_OK;
     sp_free_config(config);
     if (!configured || io->descriptor() < 0) {
-        *failure = {OpenFailure::Kind::CannotConfigure, lastError()};
+        *failure = {OpenFailure::Kind::CannotConfigure, lastError(), {}};
         return nullptr;
     }
     return io;

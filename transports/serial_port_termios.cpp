@@ -108,25 +108,24 @@ std::unique_ptr<SerialPortIo> openWithTermios(const SerialSettings &settings, Op
     const int fd = ::open(path.constData(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
         const int code = errno;
-        *failure = {code == ENOENT ? OpenFailure::Kind::NotFound : OpenFailure::Kind::CannotOpen,
-                    systemError(code)};
+        *failure = openFailure(settings.portName, code, systemError(code));
         return nullptr;
     }
     if (!::isatty(fd)) {
         ::close(fd);
-        *failure = {OpenFailure::Kind::NotATerminal, {}};
+        *failure = {OpenFailure::Kind::NotATerminal, {}, {}};
         return nullptr;
     }
     termios t{};
     if (::tcgetattr(fd, &t) != 0) {
         const int code = errno;
         ::close(fd);
-        *failure = {OpenFailure::Kind::CannotOpen, systemError(code)};
+        *failure = {OpenFailure::Kind::CannotOpen, systemError(code), {}};
         return nullptr;
     }
     if (!applyLineSettings(t, settings)) {
         ::close(fd);
-        *failure = {OpenFailure::Kind::UnsupportedBaud, {}};
+        *failure = {OpenFailure::Kind::UnsupportedBaud, {}, {}};
         return nullptr;
     }
     // A pty keeps CS8 without parity whatever is asked (the kernel's pty driver clears CSIZE
@@ -139,7 +138,7 @@ std::unique_ptr<SerialPortIo> openWithTermios(const SerialSettings &settings, Op
         if (code == EINVAL && ::tcgetattr(fd, &held) == 0 && differsOnlyInCharacterFormat(held, t))
             return std::make_unique<TermiosPort>(fd);
         ::close(fd);
-        *failure = {OpenFailure::Kind::CannotConfigure, systemError(code)};
+        *failure = {OpenFailure::Kind::CannotConfigure, systemError(code), {}};
         return nullptr;
     }
     qCDebug(lcLink).noquote() << "serial" << settings.portName

@@ -33,21 +33,26 @@ SerialWorker::~SerialWorker()
     release();
 }
 
-QString SerialWorker::openFailureText(const OpenFailure &failure) const
+QString SerialWorker::openFailureText(const OpenFailure &failure, const SerialSettings &settings)
 {
-    const QString &name = m_settings.portName;
+    const QString &name = settings.portName;
     switch (failure.kind) {
     case OpenFailure::Kind::NotFound: return tr("Serial port %1 not found").arg(name);
+    case OpenFailure::Kind::PermissionDenied:
+        // Opening a serial port is for the members of its group; the fix is the user's.
+        return tr("Cannot open %1: permission denied. Serial ports are for the members of the "
+                  "group %2: add your user to it with \"sudo usermod -aG %2 $USER\", then log "
+                  "out and log in again.")
+            .arg(name, failure.group);
     case OpenFailure::Kind::CannotOpen: return tr("Cannot open %1: %2").arg(name, failure.detail);
     case OpenFailure::Kind::NotATerminal:
         return tr("Cannot open %1: it is not a serial port or terminal.").arg(name);
     case OpenFailure::Kind::UnsupportedBaud:
         return tr("Cannot open %1: %2 baud is not a rate the port supports.")
-            .arg(name, QString::number(m_settings.baudRate));
+            .arg(name, QString::number(settings.baudRate));
     case OpenFailure::Kind::CannotConfigure:
         return tr("Cannot apply %1 baud %2 to %3: %4")
-            .arg(QString::number(m_settings.baudRate), m_settings.formatText(), name,
-                 failure.detail);
+            .arg(QString::number(settings.baudRate), settings.formatText(), name, failure.detail);
     }
     return tr("Cannot open %1: %2").arg(name, failure.detail);
 }
@@ -73,7 +78,7 @@ void SerialWorker::openPort(quint64 session, const SerialSettings &settings)
         m_port = openWithTermios(settings, &failure);
     }
     if (!m_port) {
-        emit failed(session, openFailureText(failure));
+        emit failed(session, openFailureText(failure, settings));
         return;
     }
     warnIfNotApplied();

@@ -34,6 +34,9 @@ public:
     // Writes all bytes or fails; a write of the current session only.
     void write(quint64 session, const QByteArray &bytes);
 
+    // The sentence failed() carries when the port of `settings` did not open.
+    static QString openFailureText(const OpenFailure &failure, const SerialSettings &settings);
+
 signals:
     void opened(quint64 session);
     void failed(quint64 session, const QString &reason);
@@ -44,7 +47,6 @@ private:
     void fail(const QString &reason);
     void release();
     void warnIfNotApplied() const;
-    QString openFailureText(const OpenFailure &failure) const;
 
     std::unique_ptr<SerialPortIo> m_port;
     QSocketNotifier *m_notifier = nullptr;

@@ -44,6 +44,11 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
         QStringList{QStringLiteral("connect")},
         QStringLiteral("Connect at start-up, with valvetune-cli's connection options (below)."));
     parser.addOptions({lang, simulate, open, connectOption});
+    // A file manager and the desktop entry (Exec=valvetune %f) pass the file as the argument.
+    parser.addPositionalArgument(
+        QStringLiteral("FILE"),
+        QStringLiteral("A parameter file (.vtpar) or fold plan (.vtfold) to open, as --open does."),
+        QStringLiteral("[FILE]"));
 
     if (helpText)
         *helpText = parser.helpText() + QLatin1Char('\n') +
@@ -71,13 +76,11 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
         out.exitCode = parser.isSet(help) ? -1 : -2; // main() prints help / version
         return out;
     }
-    if (!parser.positionalArguments().isEmpty()) {
-        out.error =
-            QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first());
-        out.exitNow = true;
-        out.exitCode = 2;
-        return out;
-    }
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1)
+        return usageError(QStringLiteral("unexpected argument '%1': give one file").arg(files[1]));
+    if (!files.isEmpty() && parser.isSet(open))
+        return usageError(QStringLiteral("give one file: '%1' or --open").arg(files.first()));
     if (parser.isSet(lang)) {
         out.language = parser.value(lang);
         if (!Language::isKnown(out.language)) {
@@ -103,6 +106,8 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
     }
     if (parser.isSet(open))
         out.openFile = parser.value(open);
+    else if (!files.isEmpty())
+        out.openFile = files.first();
     if (out.connection && !out.simulate.isEmpty())
         return usageError(QStringLiteral("give one connection: --simulate or --connect"));
     return out;

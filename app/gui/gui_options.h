@@ -1,6 +1,7 @@
 // GuiOptions: the valvetune command line (--simulate FAMILY[:MODULES], --connect with
-// valvetune-cli's connection options, --lang en|de, --open FILE), parsed into a plain struct that
-// main() acts on: QCommandLineParser for the GUI's own options, app/cmdline for the connection.
+// valvetune-cli's connection options, --lang en|de, --open FILE or just FILE), parsed into a
+// plain struct that main() acts on (startup.h): QCommandLineParser for the GUI's own options,
+// app/cmdline for the connection.
 #pragma once
 
 #include "model/session/connection.h"
@@ -15,7 +16,7 @@ struct GuiOptions
 {
     QString language; // "en", "de" or empty (settings / system locale decide)
     QString simulate; // family id, optionally ":MODULES"
-    QString openFile;
+    QString openFile; // --open FILE or the positional FILE
     // --connect: the link to open at start-up (--tcp, --port, --can, --hart, --sim and their
     // settings, as valvetune-cli takes them).
     std::optional<model::ConnectionSpec> connection;

@@ -2,16 +2,15 @@
 // remembered choice, then the system locale), shows the main window and connects when asked to
 // (--simulate, --connect).
 #include "app/gui/app_settings.h"
-#include "app/gui/device_controller.h"
-#include "app/gui/file_controller.h"
 #include "app/gui/gui_options.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "app/gui/startup.h"
 #include "model/assert_handler.h"
-#include "model/session/sim_endpoint.h"
 
 #include <QApplication>
 #include <QGuiApplication>
+#include <QIcon>
 #include <QMessageBox>
 #include <cstdio>
 #include <unistd.h>
@@ -23,6 +22,10 @@ int main(int argc, char *argv[])
     QCoreApplication::setOrganizationName(QStringLiteral("ValveTune"));
     QCoreApplication::setApplicationName(QStringLiteral("ValveTune"));
     QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));
+    // The installed desktop entry and icon carry the application id: window managers and Wayland
+    // compositors match the window to them through it.
+    QGuiApplication::setDesktopFileName(QStringLiteral(VT_APP_ID));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral(VT_APP_ID)));
 
     QString help;
     const vt::app::GuiOptions options =
@@ -55,15 +58,6 @@ int main(int argc, char *argv[])
 
     vt::app::MainWindow window(settings, language);
     window.show();
-    if (!options.openFile.isEmpty())
-        window.files().openPath(options.openFile);
-    if (!options.simulate.isEmpty()) {
-        vt::model::ConnectionSpec spec;
-        spec.kind = vt::model::ConnectionKind::Sim;
-        spec.sim = *vt::model::parseSimSpec(options.simulate); // checked by parseGuiOptions
-        window.device().connectTo(spec);
-    }
-    if (options.connection)
-        window.device().connectTo(*options.connection);
+    vt::app::startFromOptions(window, options);
     return QApplication::exec();
 }

@@ -9,6 +9,8 @@
 
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace vt::clitest {
 namespace {
@@ -87,6 +89,42 @@ TEST_F(CliDevice, AFileThatIsNoTerminalIsRefused)
     EXPECT_EQ(r.code, kExitConnection) << what(r);
     EXPECT_EQ(r.errLines(), 1) << r.err;
     EXPECT_TRUE(r.complains("/dev/null: it is not a serial port or terminal.")) << r.err;
+}
+
+// A port the user may not open: the real valvetune-cli, without privileges, on the simulator's pty
+// with mode 000, says which group to join and how, in English and in German. Root opens any
+// port, so as root the command runs as nobody (setpriv, util-linux).
+TEST(CliSerialPermission, PermissionDeniedTellsTheUserToJoinDialout)
+{
+    simtest::Sim sim({"--device", "dma-pn-v51", "--pty"});
+    const QString pty = sim.listening();
+    ASSERT_TRUE(pty.startsWith("/dev/pts/")) << sim.stderrText().toStdString();
+    ASSERT_EQ(::chmod(pty.toLocal8Bit().constData(), 0), 0);
+
+    const auto runCli = [&](const QStringList &args) {
+        if (::geteuid() != 0)
+            return simtest::run(QStringLiteral(VT_CLI_PATH), args);
+        const QString setpriv = QStandardPaths::findExecutable(QStringLiteral("setpriv"));
+        EXPECT_FALSE(setpriv.isEmpty()) << "setpriv (util-linux) is missing";
+        return simtest::run(setpriv, QStringList{"--reuid=65534", "--regid=65534", "--clear-groups",
+                                                 QStringLiteral(VT_CLI_PATH)} +
+                                         args);
+    };
+    const auto en = runCli({"info", "--port", pty});
+    ASSERT_TRUE(en.finished);
+    EXPECT_EQ(en.code, kExitConnection) << en.err.toStdString();
+    EXPECT_TRUE(en.err.contains(
+        pty + ": permission denied. Serial ports are for the members of the group dialout: add "
+              "your user to it with \"sudo usermod -aG dialout $USER\", then log out and log in "
+              "again."))
+        << en.err.toStdString();
+
+    const auto de = runCli({"info", "--port", pty, "--lang", "de"});
+    ASSERT_TRUE(de.finished);
+    EXPECT_EQ(de.code, kExitConnection) << de.err.toStdString();
+    EXPECT_TRUE(de.err.contains("sudo usermod -aG dialout $USER") &&
+                de.err.contains("Gruppe dialout"))
+        << de.err.toStdString();
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 // valvetune --connect on a real link: the GUI's connection to a valvetune-sim process over
 // Modbus TCP, with valvetune-cli working on the same simulated node at the same time, and a
-// refused connection said in a message.
+// refused connection or a serial port the user may not open said in a message.
 #include "app/gui/app_settings.h"
 #include "app/gui/device_controller.h"
 #include "app/gui/gui_options.h"
@@ -15,6 +15,10 @@
 #include <QTcpServer>
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
+#include <linux/capability.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 namespace vt {
 namespace {
@@ -22,6 +26,37 @@ namespace {
 using simtest::run;
 using simtest::Sim;
 using test::kWaitMs;
+
+// Root opens any file whatever its mode (CAP_DAC_OVERRIDE). While this lives, the calling thread
+// and the threads it starts (a serial link's worker) do without that, so an open meets the
+// file's mode as a user's would; the thread gets its capabilities back at the end.
+class WithoutDacOverride
+{
+public:
+    WithoutDacOverride()
+    {
+        if (::geteuid() != 0 || ::syscall(SYS_capget, &m_header, m_saved) != 0)
+            return;
+        __user_cap_data_struct reduced[2] = {m_saved[0], m_saved[1]};
+        constexpr unsigned kDac = (1u << CAP_DAC_OVERRIDE) | (1u << CAP_DAC_READ_SEARCH);
+        reduced[0].effective &= ~kDac;
+        m_dropped = ::syscall(SYS_capset, &m_header, reduced) == 0;
+    }
+    ~WithoutDacOverride()
+    {
+        if (m_dropped)
+            ::syscall(SYS_capset, &m_header, m_saved);
+    }
+    WithoutDacOverride(const WithoutDacOverride &) = delete;
+    WithoutDacOverride &operator=(const WithoutDacOverride &) = delete;
+    // Whether an open() of this thread now meets the file's mode.
+    bool bound() const { return m_dropped || ::geteuid() != 0; }
+
+private:
+    __user_cap_header_struct m_header{_LINUX_CAPABILITY_VERSION_3, 0};
+    __user_cap_data_struct m_saved[2] = {};
+    bool m_dropped = false;
+};
 
 struct GuiConnect : ::testing::Test
 {
@@ -105,6 +140,29 @@ TEST_F(GuiConnect, ARefusedConnectionIsShownInAMessage)
     const QString text = window->device().connectFailure()->text();
     EXPECT_TRUE(text.startsWith("ValveTune could not connect: ")) << text.toStdString();
     EXPECT_TRUE(text.contains("refused", Qt::CaseInsensitive)) << text.toStdString();
+    EXPECT_FALSE(window->workspace().isConnected());
+}
+
+// A serial port the user may not open (here the simulator's pty with mode 000): the message says
+// which group to join and how.
+TEST_F(GuiConnect, APortTheUserMayNotOpenSaysHowToJoinDialout)
+{
+    Sim sim({"--device", "dma-pn-v51", "--pty"});
+    const QString pty = sim.listening();
+    ASSERT_TRUE(pty.startsWith("/dev/pts/")) << sim.stderrText().toStdString();
+    ASSERT_EQ(::chmod(pty.toLocal8Bit().constData(), 0), 0);
+
+    WithoutDacOverride user;
+    ASSERT_TRUE(user.bound()) << "cannot give up CAP_DAC_OVERRIDE";
+    start({"valvetune", "--connect", "--port", pty});
+    ASSERT_TRUE(test::waitUntil([&] {
+        return window->device().connectFailure() && window->device().connectFailure()->isVisible();
+    }));
+    const QString text = window->device().connectFailure()->text();
+    EXPECT_TRUE(text.contains(pty + ": permission denied.")) << text.toStdString();
+    EXPECT_TRUE(text.contains("the group dialout: add your user to it with \"sudo usermod -aG "
+                              "dialout $USER\", then log out and log in again."))
+        << text.toStdString();
     EXPECT_FALSE(window->workspace().isConnected());
 }
 

@@ -19,7 +19,7 @@ TEST(GuiOptions, LanguageIsValidated)
 TEST(GuiOptions, UnknownOptionsAndArgumentsAreUsageErrors)
 {
     EXPECT_EQ(parseGuiOptions({"valvetune", "--frobnicate"}).exitCode, 2);
-    EXPECT_EQ(parseGuiOptions({"valvetune", "stray"}).exitCode, 2);
+    EXPECT_EQ(parseGuiOptions({"valvetune", "a.vtpar", "b.vtpar"}).exitCode, 2);
     EXPECT_EQ(parseGuiOptions({"valvetune", "--lang"}).exitCode, 2); // missing value
 }
 
@@ -41,6 +41,23 @@ TEST(GuiOptions, SimulateAndOpenAreTakenAndCheckedForNonsense)
         EXPECT_EQ(e.exitCode, 2) << bad;
         EXPECT_TRUE(e.error.startsWith("--simulate: ")) << bad;
     }
+}
+
+// The desktop entry starts "valvetune %f": a file manager passes the file as the one argument.
+TEST(GuiOptions, AFileArgumentIsOpenedAsOpenDoes)
+{
+    auto file = parseGuiOptions({"valvetune", "/home/me/press 1.vtpar"});
+    EXPECT_FALSE(file.exitNow) << file.error.toStdString();
+    EXPECT_EQ(file.openFile, "/home/me/press 1.vtpar");
+
+    auto withLanguage = parseGuiOptions({"valvetune", "--lang", "de", "node.vtfold"});
+    EXPECT_FALSE(withLanguage.exitNow) << withLanguage.error.toStdString();
+    EXPECT_EQ(withLanguage.openFile, "node.vtfold");
+    EXPECT_EQ(withLanguage.language, "de");
+
+    auto both = parseGuiOptions({"valvetune", "--open", "a.vtpar", "b.vtpar"});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_TRUE(both.error.contains("give one file")) << both.error.toStdString();
 }
 
 // --connect takes valvetune-cli's connection options, parsed by the same code (app/cmdline).

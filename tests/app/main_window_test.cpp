@@ -1,12 +1,18 @@
 #include "app/gui/app_settings.h"
+#include "app/gui/file_controller.h"
+#include "app/gui/gui_options.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "app/gui/startup.h"
+#include "app/gui/workspace.h"
 #include "qt_printers.h"
 #include "widgets/connect/link_status_widget.h"
+#include "widgets/fold/fold_wizard.h"
 
 #include <QAction>
 #include <QCoreApplication>
 #include <QDockWidget>
+#include <QFile>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -74,6 +80,34 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
     EXPECT_TRUE(w.findChild<QAction *>("actionConnect")->isEnabled());
     EXPECT_FALSE(w.findChild<QAction *>("actionReadAll")->isEnabled());
     EXPECT_FALSE(w.findChild<QAction *>("actionSave")->isEnabled());
+}
+
+// "valvetune FILE", as the desktop entry (Exec=valvetune %f) starts it for a double-clicked file:
+// a parameter file opens in the editor, a fold plan in the fold wizard.
+TEST_F(Fixture, TheFileOnTheCommandLineOpens)
+{
+    const QString vtpar = dir.filePath("press 1.vtpar");
+    QFile file(vtpar);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "valvetune-parameters", "formatVersion": 1, "modules": [
+        {"address": 1, "family": "dma-pb-v32", "version": "32.10", "mode": "3", "values": [
+            {"name": "C1.07", "id": 48, "raw": 1250, "display": "1.250 V"}]}]})");
+    file.close();
+
+    MainWindow w(settings, language);
+    w.files().setPromptHook([] { return QMessageBox::Discard; }); // no map report dialog
+    w.show();
+    const GuiOptions options = parseGuiOptions({"valvetune", vtpar});
+    ASSERT_FALSE(options.exitNow) << options.error.toStdString();
+    startFromOptions(w, options);
+    EXPECT_TRUE(w.files().lastError().isEmpty()) << w.files().lastError().toStdString();
+    EXPECT_EQ(w.workspace().document().filePath(), vtpar);
+
+    const QString plan = QStringLiteral(VT_SOURCE_DIR "/tests/fuzz/fold/seeds/opat_3.vtfold");
+    startFromOptions(w, parseGuiOptions({"valvetune", plan}));
+    auto *wizard = w.findChild<vt::ui::FoldWizard *>();
+    ASSERT_NE(wizard, nullptr);
+    EXPECT_EQ(wizard->plan().modules.size(), 3u);
 }
 
 TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)

@@ -1,0 +1,47 @@
+# Fails when a man page lacks a command or an option that the program's --help prints, so the
+# page and the program cannot drift apart. With COMMANDS=ON every command's --help is checked too
+# and each command needs its own section.
+#   cmake -DPROGRAM=<executable> -DPAGE=<name.1.gz> [-DCOMMANDS=ON] -P CheckManPage.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/HelpText.cmake)
+
+get_filename_component(name ${PROGRAM} NAME)
+execute_process(COMMAND gzip -dc ${PAGE} OUTPUT_VARIABLE page RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR page STREQUAL "")
+    message(FATAL_ERROR "cannot read ${PAGE}")
+endif()
+# What a reader sees: no font changes, \- is a hyphen, \e a backslash.
+string(REGEX REPLACE "\\\\f[BIRP]" "" page "${page}")
+string(REPLACE "\\-" "-" page "${page}")
+string(REPLACE "\\e" "\\" page "${page}")
+
+set(missing)
+vt_help_text(${PROGRAM} --help help)
+vt_help_options("${help}" options)
+if(COMMANDS)
+    vt_help_commands(${PROGRAM} commands)
+    if(NOT commands)
+        message(FATAL_ERROR "${name} --help lists no commands")
+    endif()
+    foreach(command IN LISTS commands)
+        string(FIND "${page}" ".SS \"${name} ${command}\"" at)
+        if(at EQUAL -1)
+            list(APPEND missing "command ${command}")
+        endif()
+        vt_help_text(${PROGRAM} "${command};--help" text)
+        vt_help_options("${text}" more)
+        list(APPEND options ${more})
+    endforeach()
+    list(REMOVE_DUPLICATES options)
+endif()
+foreach(option IN LISTS options)
+    # Whole options only: --port must not pass because --portable is there.
+    if(NOT page MATCHES "(^|[^a-z0-9-])${option}([^a-z0-9-]|$)")
+        list(APPEND missing "option ${option}")
+    endif()
+endforeach()
+list(LENGTH options count)
+if(missing)
+    list(JOIN missing ", " missing)
+    message(FATAL_ERROR "${PAGE} lacks what ${name} --help prints: ${missing}")
+endif()
+message(STATUS "${PAGE}: all ${count} options of ${name} --help are there")
