@@ -237,69 +237,67 @@ void WriteJob::writeItem(int index)
         });
 }
 
+void WriteJob::readItem(int index, std::function<void(WriteItem &, const ReadResult &)> then)
+{
+    m_access.read(m_module, {m_items[static_cast<std::size_t>(index)].row}, Priority::User,
+                  [this, guard = QPointer<WriteJob>(this), index,
+                   then = std::move(then)](const ReadResult &result) {
+                      if (!guard)
+                          return; // the job was destroyed while its request was out
+                      then(m_items[static_cast<std::size_t>(index)], result);
+                  });
+}
+
 void WriteJob::verifyItem(int index)
 {
-    WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(
-        m_module, {item.row}, Priority::User,
-        [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
-            if (!guard)
-                return; // the job was destroyed while its request was out
-            WriteItem &it = m_items[static_cast<std::size_t>(index)];
-            if (result.values.size() == 1) {
-                it.readBack = result.values.front().value;
-                if (readBackEquals(it, *it.readBack))
-                    settle(index, WriteStatus::Verified);
-                else
-                    settle(index, WriteStatus::Mismatch,
-                           said(QT_TR_NOOP("read back %1, expected %2"))
-                               .arg(valueText(*it.row, *it.readBack))
-                               .arg(valueText(*it.row, it.value)));
-                next();
-                return;
-            }
-            const Outcome outcome =
-                result.failures.empty() ? Outcome{} : result.failures.front().outcome;
-            settle(index, WriteStatus::Written,
-                   said(QT_TR_NOOP("acknowledged; the read back failed (%1)")).arg(outcome.reason));
-            if (outcome.status == OutcomeStatus::LinkLost ||
-                outcome.status == OutcomeStatus::Timeout ||
-                outcome.status == OutcomeStatus::Cancelled) {
-                stopRemaining(outcome.reason);
-                done();
-                return;
-            }
+    readItem(index, [this, index](WriteItem &it, const ReadResult &result) {
+        if (result.values.size() == 1) {
+            it.readBack = result.values.front().value;
+            if (readBackEquals(it, *it.readBack))
+                settle(index, WriteStatus::Verified);
+            else
+                settle(index, WriteStatus::Mismatch,
+                       said(QT_TR_NOOP("read back %1, expected %2"))
+                           .arg(valueText(*it.row, *it.readBack))
+                           .arg(valueText(*it.row, it.value)));
             next();
-        });
+            return;
+        }
+        const Outcome outcome =
+            result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        settle(index, WriteStatus::Written,
+               said(QT_TR_NOOP("acknowledged; the read back failed (%1)")).arg(outcome.reason));
+        if (outcome.status == OutcomeStatus::LinkLost || outcome.status == OutcomeStatus::Timeout ||
+            outcome.status == OutcomeStatus::Cancelled) {
+            stopRemaining(outcome.reason);
+            done();
+            return;
+        }
+        next();
+    });
 }
 
 void WriteJob::probeItem(int index)
 {
-    WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.read(
-        m_module, {item.row}, Priority::User,
-        [this, guard = QPointer<WriteJob>(this), index](const ReadResult &result) {
-            if (!guard)
-                return; // the job was destroyed while its request was out
-            WriteItem &it = m_items[static_cast<std::size_t>(index)];
-            if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
-                it.readBack = result.values.front().value;
-                settle(index, WriteStatus::Verified,
-                       said(QT_TR_NOOP("found on the device after the interruption")));
-                next();
-                return;
-            }
-            if (result.values.size() == 1) { // not there: write it now, paced like any write
-                it.status = WriteStatus::Pending;
-                --m_cursor;
-                next();
-                return;
-            }
-            const Outcome outcome =
-                result.failures.empty() ? Outcome{} : result.failures.front().outcome;
-            stopRemaining(outcome.reason); // it stays Uncertain
-            done();
-        });
+    readItem(index, [this, index](WriteItem &it, const ReadResult &result) {
+        if (result.values.size() == 1 && readBackEquals(it, result.values.front().value)) {
+            it.readBack = result.values.front().value;
+            settle(index, WriteStatus::Verified,
+                   said(QT_TR_NOOP("found on the device after the interruption")));
+            next();
+            return;
+        }
+        if (result.values.size() == 1) { // not there: write it now, paced like any write
+            it.status = WriteStatus::Pending;
+            --m_cursor;
+            next();
+            return;
+        }
+        const Outcome outcome =
+            result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        stopRemaining(outcome.reason); // it stays Uncertain
+        done();
+    });
 }
 
 void WriteJob::settle(int index, WriteStatus status, const Sentence &reason,

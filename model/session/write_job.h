@@ -13,6 +13,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
+#include <functional>
 
 namespace vt::model {
 
@@ -54,6 +55,8 @@ private:
     void run(); // works through m_order from the start
     void next();
     void writeItem(int index);
+    // Reads item `index`'s row; `then` runs with the item unless the job died in the meantime.
+    void readItem(int index, std::function<void(WriteItem &, const ReadResult &)> then);
     void verifyItem(int index);
     void probeItem(int index); // resume of an Uncertain row: read before writing
     void stopRemaining(const QString &reason);
