@@ -102,6 +102,10 @@
         <source>Disconnected. %1</source>
         <translation>Getrennt. %1</translation>
     </message>
+    <message>
+        <source>The device warned: %1</source>
+        <translation>Das Gerät warnte: %1</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::FileController</name>
@@ -1923,6 +1927,10 @@
             <numerusform>Modul %1: %n Zeile nicht gelesen (%2)</numerusform>
             <numerusform>Modul %1: %n Zeilen nicht gelesen (%2)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Module %1: %2: %3 (%4)</source>
+        <translation>Modul %1: %2: %3 (%4)</translation>
     </message>
 </context>
 <context>

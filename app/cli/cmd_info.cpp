@@ -75,11 +75,7 @@ int runInfo(const QStringList &argsIn, Context &ctx)
                 }
                 m["texts"] = texts;
                 // HART-7 manual §4.4.1 "Status": a warning comes with the value; both are said.
-                for (const model::RowValue &v : read->values)
-                    if (v.warningCode != 0)
-                        ctx.err << "valvetune-cli: warning: module " << r.module.address << ": "
-                                << v.row->name << ": " << v.warning.in(run.lang()) << " ("
-                                << v.warningCode << ")\n";
+                printWarnings(ctx.err, r.module.address, read->values, run.lang());
                 for (const model::RowFailure &f : read->failures)
                     ctx.err << "valvetune-cli: warning: module " << r.module.address << ": "
                             << outcomeText(f.outcome, run.lang()) << '\n';
