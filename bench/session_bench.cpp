@@ -183,7 +183,10 @@ void benchMonitor()
     link->open();
     spin([&] { return link->state() == link::LinkState::Open; }, 5000);
     const dev::Dictionary &dict = *dev::builtinDictionaries()->find("dma-pn-v51");
-    const auto rows = model::defaultMonitorRows(dict);
+    // The closed-loop display block d1.07 .. d1.13: seven consecutive IDs, one request per sample.
+    std::vector<const dev::ParamMeta *> rows;
+    for (int id = 7; id <= 13; ++id)
+        rows.push_back(dict.findId(id));
     model::MonitorScheduler monitor(access);
     monitor.setModule(1, rows, 0);
     QElapsedTimer timer;

@@ -102,6 +102,10 @@
         <source>Disconnected. %1</source>
         <translation>Getrennt. %1</translation>
     </message>
+    <message>
+        <source>The device warned: %1</source>
+        <translation>Das Gerät warnte: %1</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::FileController</name>
@@ -354,6 +358,17 @@
     <message>
         <source>The monitor was stopped:</source>
         <translation>Der Monitor wurde angehalten:</translation>
+    </message>
+    <message>
+        <source>Reading the connected node for the fold wizard …</source>
+        <translation>Der angeschlossene Knoten wird für den Knoten-Assistenten gelesen …</translation>
+    </message>
+    <message numerus="yes">
+        <source>The fold wizard read %n module(s) of the connected node.</source>
+        <translation>
+            <numerusform>Der Knoten-Assistent hat %n Modul des angeschlossenen Knotens gelesen.</numerusform>
+            <numerusform>Der Knoten-Assistent hat %n Module des angeschlossenen Knotens gelesen.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1045,6 +1060,18 @@
         <source>Error</source>
         <translation>Fehler</translation>
     </message>
+    <message>
+        <source>Module %1 (address %2) is planned as V%3 in mode %4, but the connected node&apos;s module at that address runs V%5 in mode %6. The plan&apos;s options and the PLC image would not fit it; scan the node or change the plan.</source>
+        <translation>Modul %1 (Adresse %2) ist als V%3 in Modus %4 geplant, aber das Modul des angeschlossenen Knotens an dieser Adresse läuft mit V%5 in Modus %6. Die Optionen des Plans und das SPS-Abbild passen nicht dazu; scannen Sie den Knoten oder ändern Sie den Plan.</translation>
+    </message>
+    <message>
+        <source>Module %1 (address %2) is planned, but no module of the connected node answers at that address.</source>
+        <translation>Modul %1 (Adresse %2) ist geplant, aber an dieser Adresse antwortet kein Modul des angeschlossenen Knotens.</translation>
+    </message>
+    <message>
+        <source>The connected node has a module at address %1 (V%2, mode %3) that the plan does not contain.</source>
+        <translation>Der angeschlossene Knoten hat an Adresse %1 ein Modul (V%2, Modus %3), das der Plan nicht enthält.</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::FoldPlan</name>
@@ -1407,6 +1434,17 @@
     <message>
         <source>Example CMD 15 telegram (TADR 0x01, control byte 0x00, VALUE1 = 1000 = 1.000 V, VALUE2 = 0 for every module):</source>
         <translation>Beispiel CMD-15-Telegramm (TADR 0x01, Steuerbyte 0x00, VALUE1 = 1000 = 1,000 V, VALUE2 = 0 für jedes Modul):</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::IdentityTexts</name>
+    <message>
+        <source>%1-%2-%3</source>
+        <translation>%3.%2.%1</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
     </message>
 </context>
 <context>
@@ -1906,6 +1944,10 @@
             <numerusform>Modul %1: %n Zeilen nicht gelesen (%2)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Module %1: %2: %3 (%4)</source>
+        <translation>Modul %1: %2: %3 (%4)</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::SampleStore</name>
@@ -2023,24 +2065,24 @@
         <source>cannot be encoded</source>
         <translation>nicht codierbar</translation>
     </message>
+    <message>
+        <source>warning %1: %2</source>
+        <translation>Warnung %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::SetValueStep</name>
-    <message>
-        <source>E17 (set value activation mode) is %1: the analogue set value is added to the bus set value %2, so the controller would not see the step alone. The manuals: &quot;For switching off of the analogue set-value, set E17 = 2&quot; (DMA manual, ID 0x1F) and &quot;If only the set value by the PLC is used … E17 = 2 is required&quot; (OPAT manual §5.3). Set E17 to 2 (only the digital set values active) first.</source>
-        <translation>E17 (Sollwert-Aktivierungsmodus) ist %1: Der analoge Sollwert wird zum Bus-Sollwert %2 addiert, der Regler sähe den Sprung also nicht allein. Die DMA-Profibus-Anleitung (ID 0x1F): „Zum Abschalten des analogen Sollwert E17 = &quot;2&quot; setzen.“; das OPAT-Handbuch (§5.3) verlangt E17 = 2, wenn nur der Sollwert der SPS verwendet wird. Setzen Sie zuerst E17 auf 2 (nur die digitalen Sollwerte aktiv).</translation>
-    </message>
-    <message>
-        <source>This module has no set value activation mode E17; a bus set value step is not offered for it.</source>
-        <translation>Dieses Modul hat keinen Sollwert-Aktivierungsmodus E17; ein Bus-Sollwertsprung wird dafür nicht angeboten.</translation>
-    </message>
     <message>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <source>Reading E17 failed: %1</source>
-        <translation>Lesen von E17 fehlgeschlagen: %1</translation>
+        <source>%1 is %2, so the bus set value %3 alone does not drive the valve. The manual: %4 Set %1 to %5 first.</source>
+        <translation>%1 ist %2, daher steuert der Bus-Sollwert %3 allein das Ventil nicht. Das Handbuch: %4 Setzen Sie zuerst %1 auf %5.</translation>
+    </message>
+    <message>
+        <source>Reading %1 failed: %2</source>
+        <translation>Lesen von %1 fehlgeschlagen: %2</translation>
     </message>
 </context>
 <context>
@@ -3414,6 +3456,10 @@ Senden?</translation>
         <source>Drag a point or type its coordinates. Input x must rise from point to point; grey coordinates are fixed by the device. Whether the module applies the curve depends on the branch&apos;s Linearization parameter (C1.02 / C2.02).</source>
         <translation>Ziehen Sie einen Punkt oder geben Sie seine Koordinaten ein. Der Eingang x muss von Punkt zu Punkt steigen; graue Koordinaten sind vom Gerät vorgegeben. Ob das Modul die Kennlinie anwendet, hängt vom Parameter Linearisierung des Zweigs ab (C1.02 / C2.02).</translation>
     </message>
+    <message>
+        <source>This device has no linearisation curve: the parameter list of %1 has no L block.</source>
+        <translation>Dieses Gerät hat keine Linearisierungskurve: die Parameterliste von %1 hat keinen L-Block.</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::LCurvePlot</name>
@@ -3628,6 +3674,10 @@ Senden?</translation>
         <source>Plot as PDF…</source>
         <translation>Diagramm als PDF…</translation>
     </message>
+    <message>
+        <source>Nothing to monitor: the parameter list of this module names no default channels. Choose the values to plot with Channels….</source>
+        <translation>Nichts zu beobachten: die Parameterliste dieses Moduls nennt keine Standardkanäle. Wählen Sie die Werte für die Darstellung mit Kanäle….</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::NewFileDialog</name>
@@ -3720,6 +3770,10 @@ Senden?</translation>
     <message>
         <source>Link</source>
         <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>(not read)</source>
+        <translation>(nicht gelesen)</translation>
     </message>
 </context>
 <context>
@@ -3892,36 +3946,12 @@ Senden?</translation>
         <translation>Modul %1</translation>
     </message>
     <message>
-        <source>No connected module has a bus set value (A1.01/A2.01); the step is not available.</source>
-        <translation>Kein verbundenes Modul hat einen Bus-Sollwert (A1.01/A2.01); der Sprung ist nicht verfügbar.</translation>
-    </message>
-    <message>
-        <source>Checking E17, then writing %1 …</source>
-        <translation>E17 wird geprüft, dann wird %1 geschrieben …</translation>
-    </message>
-    <message>
-        <source>Writing E17 = 2 …</source>
-        <translation>E17 = 2 wird geschrieben …</translation>
-    </message>
-    <message>
         <source>Step:</source>
         <translation>Sprung:</translation>
     </message>
     <message>
         <source>Write step</source>
         <translation>Sprung schreiben</translation>
-    </message>
-    <message>
-        <source>Writes the bus set value (range-checked, read back) and marks it on the time axis. E17 must be 2 (only the digital set values active), as the manuals require.</source>
-        <translation>Schreibt den Bus-Sollwert (bereichsgeprüft, zurückgelesen) und markiert ihn auf der Zeitachse. E17 muss 2 sein (nur die digitalen Sollwerte aktiv), wie es die Handbücher verlangen.</translation>
-    </message>
-    <message>
-        <source>Set E17 = 2</source>
-        <translation>E17 = 2 setzen</translation>
-    </message>
-    <message>
-        <source>Switches the analogue set value off (E17 = 2, stored in EEPROM).</source>
-        <translation>Schaltet den analogen Sollwert ab (E17 = 2, im EEPROM gespeichert).</translation>
     </message>
     <message>
         <source>Module %1: %2 (%3), every step until disconnect, without asking again</source>
@@ -3942,6 +3972,38 @@ Senden?</translation>
     <message>
         <source>Arm the step: after one confirmation, steps are written without asking again until disconnect.</source>
         <translation>Sprung scharf schalten: nach einer Bestätigung werden Sprünge bis zum Trennen ohne erneute Nachfrage geschrieben.</translation>
+    </message>
+    <message>
+        <source>Module %1: %2</source>
+        <translation>Modul %1: %2</translation>
+    </message>
+    <message>
+        <source>No connected module has a bus set value; the step is not available.</source>
+        <translation>Kein verbundenes Modul hat einen Bus-Sollwert; der Sprung ist nicht verfügbar.</translation>
+    </message>
+    <message>
+        <source>Writing %1 …</source>
+        <translation>%1 wird geschrieben …</translation>
+    </message>
+    <message>
+        <source>Checking %1, then writing %2 …</source>
+        <translation>%1 wird geprüft, dann wird %2 geschrieben …</translation>
+    </message>
+    <message>
+        <source>Writing %1 = %2 …</source>
+        <translation>%1 = %2 wird geschrieben …</translation>
+    </message>
+    <message>
+        <source>Writes the bus set value (range-checked, read back) and marks it on the time axis, after checking that the module takes its set value from the bus.</source>
+        <translation>Schreibt den Bus-Sollwert (Bereich geprüft, zurückgelesen) und markiert ihn auf der Zeitachse, nachdem geprüft wurde, dass das Modul seinen Sollwert vom Bus nimmt.</translation>
+    </message>
+    <message>
+        <source>Set %1 = %2</source>
+        <translation>%1 = %2 setzen</translation>
+    </message>
+    <message>
+        <source>Makes the bus set value the one that drives the valve (%1 = %2).</source>
+        <translation>Macht den Bus-Sollwert zu dem, der das Ventil steuert (%1 = %2).</translation>
     </message>
 </context>
 <context>

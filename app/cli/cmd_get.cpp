@@ -35,6 +35,7 @@ int runGet(const QStringList &argsIn, Context &ctx)
     if (!result->failures.empty())
         return run.failExchange(address, "reading " + result->failures.front().rows.front()->name,
                                 result->failures.front().outcome);
+    printWarnings(ctx.err, address, result->values, run.lang());
     if (ctx.json) {
         Json values = Json::array();
         for (const model::RowValue &v : result->values)

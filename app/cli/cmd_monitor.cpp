@@ -79,7 +79,7 @@ int runMonitor(const QStringList &argsIn, Context &ctx)
         return code;
     std::vector<const dev::ParamMeta *> rows = std::move(*named);
     if (rows.empty())
-        rows = model::defaultMonitorRows(*module->dictionary);
+        rows = model::defaultMonitorRows(*module->dictionary, module->identification.mode);
     if (rows.empty())
         return ctx.fail(kExitUsage, module->identification.family +
                                         " has no display values to monitor; name some");

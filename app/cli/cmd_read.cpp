@@ -127,8 +127,10 @@ int runRead(const QStringList &argsIn, Context &ctx)
         if (!result)
             return run.failDeadline("module " + std::to_string(address) + ": read");
         reportFailures(ctx, address, *result, run.lang());
+        printWarnings(ctx.err, address, result->values, run.lang());
         for (const model::RowFailure &f : result->failures) {
-            // Rows this protocol cannot carry (text rows over HART) are reported, not an error.
+            // Rows this protocol cannot carry (the field device status over HART) are reported,
+            // not an error.
             if (f.outcome.status != model::OutcomeStatus::NotEncodable || f.outcome.sent)
                 code =
                     std::max(code, run.linkLost() ? int(kExitConnection) : exitCodeOf(f.outcome));

@@ -163,4 +163,13 @@ int exitCodeOf(const std::vector<model::WriteItem> &items, bool linkLost)
     return kExitOk;
 }
 
+void printWarnings(std::ostream &err, int module, const std::vector<model::RowValue> &values,
+                   dev::Language lang)
+{
+    for (const model::RowValue &v : values)
+        if (v.warningCode != 0 && v.row)
+            err << "valvetune-cli: warning: module " << module << ": " << v.row->name << ": "
+                << v.warning.in(lang) << " (" << v.warningCode << ")\n";
+}
+
 } // namespace vt::cli

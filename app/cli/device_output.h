@@ -20,6 +20,10 @@ namespace vt::cli {
 using Json = nlohmann::ordered_json;
 
 std::string str(const QString &text);
+// "valvetune-cli: warning: module 0: hart_DeviceSpecificStatus: status bytes mismatch … (14)" on
+// `err` for each value that arrived with a device warning (HART-7 manual §4.4.1 "Status").
+void printWarnings(std::ostream &err, int module, const std::vector<model::RowValue> &values,
+                   dev::Language lang);
 
 // A raw value as JSON: integers as integers, other numbers as numbers, text as a string.
 Json rawJson(const dev::RawValue &value);

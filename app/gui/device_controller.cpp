@@ -150,19 +150,25 @@ void DeviceController::scan()
 
 void DeviceController::readAll()
 {
-    readRows(tr("Reading all parameters…"), {}, [this](bool complete, const QStringList &problems) {
-        emit statusMessage(complete ? tr("All parameters read.")
-                                    : tr("Read incomplete: %1")
-                                          .arg(problems.isEmpty()
-                                                   ? tr("cancelled")
-                                                   : problems.join(QStringLiteral("; "))));
-        emit readFinished(complete);
-    });
+    readRows(tr("Reading all parameters…"), {},
+             [this](bool complete, const QStringList &problems, const QStringList &warnings) {
+                 QString text =
+                     complete ? tr("All parameters read.")
+                              : tr("Read incomplete: %1")
+                                    .arg(problems.isEmpty() ? tr("cancelled")
+                                                            : problems.join(QStringLiteral("; ")));
+                 // A warning came with a value that was read: said, not a failure.
+                 if (!warnings.isEmpty())
+                     text += QLatin1Char(' ') +
+                             tr("The device warned: %1").arg(warnings.join(QStringLiteral("; ")));
+                 emit statusMessage(text);
+                 emit readFinished(complete);
+             });
 }
 
-void DeviceController::readRows(const QString &label,
-                                std::function<std::vector<const dev::ParamMeta *>(int)> rows,
-                                std::function<void(bool, const QStringList &)> then)
+void DeviceController::readRows(
+    const QString &label, std::function<std::vector<const dev::ParamMeta *>(int)> rows,
+    std::function<void(bool, const QStringList &, const QStringList &)> then)
 {
     if (!m_workspace.isConnected() || m_read)
         return;
@@ -186,9 +192,10 @@ void DeviceController::readRows(const QString &label,
         if (m_progress)
             m_progress->close();
         const QStringList problems = m_read->problems();
+        const QStringList warnings = m_read->warnings();
         m_read->deleteLater();
         m_read = nullptr;
-        then(complete, problems);
+        then(complete, problems, warnings);
     });
     m_read->start();
 }
@@ -206,7 +213,7 @@ ui::WriteDialog *DeviceController::writeChanges()
     readRows(
         tr("Reading what the device holds before writing…"),
         [this](int module) { return m_workspace.document().rowsToRead(module); },
-        [this](bool complete, const QStringList &problems) {
+        [this](bool complete, const QStringList &problems, const QStringList &) {
             if (!complete) {
                 emit statusMessage(
                     tr("Nothing written: the device values could not all be read (%1).")
@@ -263,7 +270,7 @@ void DeviceController::compareWithDevice()
         return rows;
     };
     readRows(tr("Reading the device to compare…"), compared,
-             [this](bool complete, const QStringList &problems) {
+             [this](bool complete, const QStringList &problems, const QStringList &) {
                  if (!complete) {
                      emit statusMessage(tr("Not compared: the device could not be read (%1).")
                                             .arg(problems.isEmpty()

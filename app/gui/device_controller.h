@@ -73,10 +73,11 @@ signals:
 private:
     void showConnectFailure(const QString &reason);
     // Reads rows of the document's online modules (all readable rows without `rows`) with a
-    // progress dialog; `then(complete, problems)` after.
+    // progress dialog; `then(complete, problems, warnings)` after (warnings: values that arrived
+    // with a device warning).
     void readRows(const QString &label,
                   std::function<std::vector<const dev::ParamMeta *>(int)> rows,
-                  std::function<void(bool, const QStringList &)> then);
+                  std::function<void(bool, const QStringList &, const QStringList &)> then);
     ui::WriteDialog *openWriteDialog();
 
     Workspace &m_workspace;

@@ -340,6 +340,7 @@ void MainWindow::connectWorkspace()
 
 ui::FoldWizard *MainWindow::openFoldWizard(const QString &planPath)
 {
+    const bool fresh = !m_wizard;
     if (!m_wizard) {
         m_wizard = new ui::FoldWizard(
             m_workspace->dictionaries(),
@@ -362,6 +363,20 @@ ui::FoldWizard *MainWindow::openFoldWizard(const QString &planPath)
         QString error;
         if (!m_wizard->openPlan(planPath, &error))
             showStatus(error);
+    }
+    if (fresh && m_wizard->online()) {
+        // The wizard's checks compare the plan with the node: read the node (version and mode
+        // of every module) before the first page is shown.
+        showStatus(tr("Reading the connected node for the fold wizard …"));
+        m_wizard->readNode([wizard = QPointer<ui::FoldWizard>(m_wizard), this] {
+            if (!wizard)
+                return;
+            showStatus(tr("The fold wizard read %n module(s) of the connected node.", "",
+                          static_cast<int>(wizard->nodeModules().size())));
+            wizard->show();
+            wizard->raise();
+        });
+        return m_wizard;
     }
     m_wizard->show();
     m_wizard->raise();

@@ -1,5 +1,6 @@
 #include "hart_adapter.h"
 
+#include "access/hart_universal_rows.h"
 #include "access/wire_value.h"
 #include "hart/texts.h"
 #include "hart/universal.h"
@@ -15,6 +16,8 @@ constexpr std::uint8_t kReadUniqueIdentifier = 0; // HART-7 manual §5.1.1
 // HART-7 manual §5.1.1: the HART 7 command 0 answer has 22 data bytes.
 constexpr std::size_t kCommand0Bytes = 22;
 constexpr std::size_t kParamRefBytes = 3; // §4.4.1: IND, PNU, instance
+// HART 7 command 48 (manual §5.1.22 names the request's status bytes): a warning, not an error.
+constexpr std::uint8_t kStatusBytesMismatch = 14;
 
 Reply mismatch()
 {
@@ -94,9 +97,20 @@ std::vector<Transaction> HartAdapter::planRead(int module,
                                                std::span<const ParamMeta *const> rows) const
 {
     std::vector<Transaction> plan;
+    std::map<std::uint8_t, std::size_t> universal; // read command -> its transaction in plan
     for (const ParamMeta *row : rows) {
-        if (row && row->readable() && paramRefOf(*row) && hartValueType(*row))
+        if (!row || !row->readable())
+            continue;
+        if (const auto field = universalField(*row)) {
+            // One exchange answers every field of the same universal command.
+            const auto [it, added] = universal.emplace(field->readCommand, plan.size());
+            if (added)
+                plan.push_back(Transaction::read(module, {row}));
+            else
+                plan[it->second].rows.push_back(row);
+        } else if (paramRefOf(*row) && hartValueType(*row)) {
             plan.push_back(Transaction::read(module, {row}));
+        }
     }
     return plan;
 }
@@ -119,7 +133,7 @@ void HartAdapter::setLongAddress(int module, hart::Address address, std::size_t 
     address.isLong = true;
     address.primaryMaster = m_options.primaryMaster;
     address.burst = false;
-    m_devices[module] = Device{address, requestPreambles};
+    m_devices[module] = Device{address, requestPreambles, {}, {}};
 }
 
 Bytes HartAdapter::encode(const Transaction &t)
@@ -137,8 +151,12 @@ Bytes HartAdapter::encode(const Transaction &t)
             kReadUniqueIdentifier);
     } else {
         const auto device = m_devices.find(t.module);
-        if (device == m_devices.end() || t.rows.size() != 1 || !t.rows.front())
+        if (device == m_devices.end() || t.rows.empty() || !t.rows.front())
             return {}; // not identified yet: no address to send to
+        if (universalField(*t.rows.front()))
+            return encodeUniversal(t, device->second);
+        if (t.rows.size() != 1)
+            return {};
         const ParamMeta &row = *t.rows.front();
         const auto ref = paramRefOf(row);
         const auto type = hartValueType(row);
@@ -173,6 +191,8 @@ std::size_t HartAdapter::expectedReplyBytes(const Transaction &t) const
         return m_options.maxResponsePreambles + kFixed + 1 + kCommand0Bytes;
     case TransactionKind::Read:
     case TransactionKind::Write: {
+        if (!t.rows.empty() && t.rows.front() && universalField(*t.rows.front()))
+            return m_options.maxResponsePreambles + hart::kMaxFrameSize;
         const auto type =
             t.rows.size() == 1 && t.rows.front() ? hartValueType(*t.rows.front()) : std::nullopt;
         const std::size_t width = type ? hart::valueWidth(*type) : 4;
@@ -226,7 +246,86 @@ std::optional<Reply> HartAdapter::frameReply(const hart::Frame &frame, const Tra
         frame.address.expandedDeviceType != device->second.address.expandedDeviceType ||
         frame.address.deviceId != device->second.address.deviceId)
         return mismatch();
+    if (!t.rows.empty() && t.rows.front() && universalField(*t.rows.front()))
+        return universalReply(frame, t);
     return parameterReply(frame, t);
+}
+
+Bytes HartAdapter::encodeUniversal(const Transaction &t, const Device &device)
+{
+    const auto field = universalField(*t.rows.front());
+    Bytes data;
+    std::uint8_t command = field->readCommand;
+    if (t.kind == TransactionKind::Write) {
+        if (t.rows.size() != 1 || t.values.size() != 1 || !field->writeCommand)
+            return {};
+        command = *field->writeCommand;
+        data.assign(universalRecordSize(command), 0);
+        if (command == 18) {
+            // Tag, descriptor and date travel together: without the device's present record
+            // the other two would be overwritten with blanks.
+            if (device.tagDescriptorDate.size() != data.size())
+                return {};
+            data = device.tagDescriptorDate;
+        }
+        if (!encodeUniversalField(*field, t.values.front(), data))
+            return {};
+    } else {
+        for (const ParamMeta *row : t.rows) {
+            const auto other = row ? universalField(*row) : std::nullopt;
+            if (!other || other->readCommand != command)
+                return {};
+        }
+        if (command == 48)
+            data = device.additionalStatus;
+    }
+    hart::Frame frame = hart::makeRequest(device.address, command, std::move(data));
+    frame.preambles = std::clamp<std::size_t>(
+        std::max(m_options.requestPreambles, device.requestPreambles), 2, hart::kMaxPreambles);
+    auto bytes = hart::encodeFrame(frame);
+    return bytes ? std::move(*bytes) : Bytes{};
+}
+
+Reply HartAdapter::universalReply(const hart::Frame &frame, const Transaction &t)
+{
+    const auto field = universalField(*t.rows.front());
+    const std::uint8_t command = t.kind == TransactionKind::Write && field->writeCommand
+                                     ? *field->writeCommand
+                                     : field->readCommand;
+    if (frame.command != command)
+        return mismatch();
+    if (hart::isErrorResponse(frame.responseCode))
+        return exceptionReply(frame.responseCode);
+    Reply reply;
+    for (const ParamMeta *row : t.rows) {
+        const auto f = universalField(*row);
+        // A write's answer echoes the whole record, so the field sits where the read finds it.
+        auto value = f ? decodeUniversalField(*f, frame.data) : std::nullopt;
+        if (!value)
+            return frame.responseCode == 0 ? mismatch() : exceptionReply(frame.responseCode);
+        reply.values.push_back(std::move(*value));
+    }
+    // A warning (HART common codes such as 14 "status bytes mismatch"): the data arrived and is
+    // the device's present value; the code and its text travel with it.
+    if (frame.responseCode != 0) {
+        reply.exceptionCode = frame.responseCode;
+        reply.exceptionText =
+            command == 48 && frame.responseCode == kStatusBytesMismatch
+                ? LocalText{"status bytes mismatch: the device status changed since the last "
+                            "read",
+                            "Statusbytes abweichend: der Gerätestatus hat sich seit dem letzten "
+                            "Lesen geändert"}
+                : statusText(frame.responseCode);
+    }
+    Device &device = m_devices[t.module];
+    if (command == 13 || command == 18)
+        device.tagDescriptorDate.assign(
+            frame.data.begin(),
+            frame.data.begin() +
+                std::ptrdiff_t(std::min<std::size_t>(frame.data.size(), universalRecordSize(18))));
+    if (command == 48)
+        device.additionalStatus = Bytes(frame.data.begin(), frame.data.end());
+    return reply;
 }
 
 Reply HartAdapter::identityReply(const hart::Frame &frame, const Transaction &t)
@@ -250,7 +349,8 @@ Reply HartAdapter::identityReply(const hart::Frame &frame, const Transaction &t)
                           std::to_string(id->expandedDeviceType) + ", device id " +
                           hexText(id->deviceId, 6);
     // From now on the device is addressed by its unique id (§2.3 long frame).
-    m_devices[t.module] = Device{id->address(m_options.primaryMaster), id->minRequestPreambles};
+    m_devices[t.module] =
+        Device{id->address(m_options.primaryMaster), id->minRequestPreambles, {}, {}};
     return reply;
 }
 

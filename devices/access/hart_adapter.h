@@ -39,7 +39,8 @@ public:
     LinkProtocol protocol() const override { return LinkProtocol::Hart; }
 
     // One command 128/130/132 per readable row with IND, PNU and instance of one byte each and a
-    // numeric type (HART-7 manual §4.4.1); other rows are left out.
+    // numeric type (HART-7 manual §4.4.1); one universal command for the `hart` rows it carries
+    // (hart_universal_rows.h); other rows are left out.
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
     // Command 129/131/133 by the row's type.
@@ -72,11 +73,18 @@ private:
     {
         hart::Address address;
         std::size_t requestPreambles = 5;
+        // The last data of command 13 (tag, descriptor, date): command 18 writes all three, so
+        // writing one of them sends the others as the device last reported them (§5.1.16).
+        Bytes tagDescriptorDate;
+        // The last data of command 48, sent back with the next command 48 (§5.1.22).
+        Bytes additionalStatus;
     };
 
     std::optional<Reply> frameReply(const hart::Frame &frame, const Transaction &t);
     Reply identityReply(const hart::Frame &frame, const Transaction &t);
     Reply parameterReply(const hart::Frame &frame, const Transaction &t) const;
+    Bytes encodeUniversal(const Transaction &t, const Device &device);
+    Reply universalReply(const hart::Frame &frame, const Transaction &t);
 
     HartAdapterOptions m_options;
     std::map<int, Device> m_devices; // by module (poll address)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "dict/device_protocol.h"
+#include "dict/monitor_defaults.h"
 #include "param_meta.h"
 
 #include <map>
@@ -29,6 +30,8 @@ struct Dictionary
     int writePacingMs = 0;
     bool writePacingAssumed =
         false; // carried over from a sister manual, not stated for this family
+    // The monitor's default channels and set-value rows (the "monitor" key).
+    MonitorPlan monitor;
 
     const ParamMeta *find(const std::string &name) const;
     const ParamMeta *findId(int id) const;

@@ -1,6 +1,7 @@
 #include "dictionary_loader.h"
 
 #include "dictionary_validate.h"
+#include "monitor_defaults_load.h"
 
 #include <cmath>
 #include <functional>
@@ -120,8 +121,8 @@ private:
                 return nullptr;
             out = *b;
         }
-        for (const char *key :
-             {"title", "vendor", "protocol", "source", "versions", "modes", "write_pacing"})
+        for (const char *key : {"title", "vendor", "protocol", "source", "versions", "modes",
+                                "write_pacing", "monitor"})
             if (raw.doc.contains(key))
                 out.header[key] = raw.doc[key];
         out.header["abstract"] = raw.doc.value("abstract", false);
@@ -223,6 +224,13 @@ private:
         dict->buildIndex();
         for (DictionaryError &e : validateDictionary(*dict))
             m_errors.push_back({file, e.row, e.message});
+        // An abstract base may name rows its families remove; only concrete families are checked.
+        if (r.header.contains("monitor") && !dict->abstract) {
+            std::vector<DictionaryError> monitorErrors;
+            dict->monitor = loadMonitorDefaults(r.header["monitor"], *dict, monitorErrors);
+            for (DictionaryError &e : monitorErrors)
+                m_errors.push_back({file, e.row, e.message});
+        }
         if (m_errors.size() != errorsBefore)
             return nullptr;
         return dict;

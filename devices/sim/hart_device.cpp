@@ -5,6 +5,7 @@
 #include "dict/identify.h"
 #include "dsp408/pzd.h"
 #include "hart/device_specific.h"
+#include "hart/texts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,8 +130,8 @@ std::optional<hart::Frame> HartDevice::handle(const hart::Frame &request)
     hart::Address to = request.address.isLong ? address() : hart::shortAddress(m_pollAddress);
     to.primaryMaster = primary;
     to.burst = false; // never in burst mode (no burst commands in §5.1)
-    if (reply.code != hart_rc::kOk)
-        reply.data.clear(); // error responses carry the status bytes only
+    if (hart::isErrorResponse(reply.code))
+        reply.data.clear(); // error responses carry the status bytes only; warnings their data
     hart::Frame response = hart::makeResponse(to, request.command, reply.code,
                                               deviceStatus(primary), std::move(reply.data));
     response.preambles = m_options.minResponsePreambles;

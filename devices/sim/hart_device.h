@@ -28,11 +28,12 @@ inline constexpr std::uint8_t kOk = 0;
 inline constexpr std::uint8_t kInvalidSelection = 2; // e.g. cmd 6 poll address > 15, cmd 9 code
 inline constexpr std::uint8_t kTooLarge = 3;
 inline constexpr std::uint8_t kTooSmall = 4;
-inline constexpr std::uint8_t kTooFewDataBytes = 5; // manual: "wrong byte count"
-inline constexpr std::uint8_t kDeviceSpecific = 6;  // manual: "device specific error"
-inline constexpr std::uint8_t kInvalidDate = 9;     // cmd 18
-inline constexpr std::uint8_t kCounterMismatch = 9; // cmd 38 (HART 7)
-inline constexpr std::uint8_t kInvalidMode = 12;    // cmd 6 loop current mode
+inline constexpr std::uint8_t kTooFewDataBytes = 5;      // manual: "wrong byte count"
+inline constexpr std::uint8_t kDeviceSpecific = 6;       // manual: "device specific error"
+inline constexpr std::uint8_t kInvalidDate = 9;          // cmd 18
+inline constexpr std::uint8_t kCounterMismatch = 9;      // cmd 38 (HART 7)
+inline constexpr std::uint8_t kInvalidMode = 12;         // cmd 6 loop current mode
+inline constexpr std::uint8_t kStatusBytesMismatch = 14; // cmd 48, a warning (HART 7)
 inline constexpr std::uint8_t kAccessRestricted = 16;
 inline constexpr std::uint8_t kNotImplemented = 64;
 } // namespace hart_rc

@@ -4,6 +4,7 @@
 #include "dict/identify.h"
 #include "sim/hart_device.h"
 
+#include <algorithm>
 #include <variant>
 
 namespace vt::dev::sim {
@@ -181,7 +182,20 @@ HartDevice::Reply HartDevice::universal(std::uint8_t command, const hart::Payloa
         m_configChanged[masterIndex(primaryMaster)] = false;
         return {hart_rc::kOk, encoded(hart::ConfigChangeCounter{m_configCounter}), false};
     }
-    case 48: return {hart_rc::kOk, encoded(additionalStatus()), false};
+    case 48: {
+        // §5.1.22: the master may send the status bytes it last read ("Data bytes write 0 - 5:
+        // Device Specific Status 6: Extended Device Status …"); HART 7 answers with the present
+        // bytes and the warning 14 when they differ, so the master learns the status changed.
+        const hart::AdditionalStatus now = additionalStatus();
+        const auto *asked = std::get_if<hart::AdditionalStatus>(&payload);
+        const Bytes sent = asked ? asked->bytes : Bytes{};
+        const bool differs =
+            !sent.empty() &&
+            !std::equal(sent.begin(), sent.end(), now.bytes.begin(),
+                        now.bytes.begin() +
+                            std::ptrdiff_t(std::min(sent.size(), now.bytes.size())));
+        return {differs ? hart_rc::kStatusBytesMismatch : hart_rc::kOk, encoded(now), false};
+    }
     default: return {hart_rc::kNotImplemented, {}, false};
     }
 }

@@ -39,13 +39,20 @@ void LCurveTableModel::retranslate()
 void LCurveTableModel::setDictionary(const dev::Dictionary &dictionary, const std::string &version,
                                      const std::string &mode)
 {
-    setCurves(findLCurves(dictionary, version, mode));
+    beginResetModel();
+    m_curves = findLCurves(dictionary, version, mode);
+    m_dictionary = &dictionary;
+    m_values.assign(m_curves.size(), {});
+    for (std::size_t c = 0; c < m_curves.size(); ++c)
+        m_values[c].resize(m_curves[c].points.size());
+    endResetModel();
 }
 
 void LCurveTableModel::setCurves(std::vector<LCurve> curves)
 {
     beginResetModel();
     m_curves = std::move(curves);
+    m_dictionary = nullptr;
     m_values.assign(m_curves.size(), {});
     for (std::size_t c = 0; c < m_curves.size(); ++c)
         m_values[c].resize(m_curves[c].points.size());

@@ -43,8 +43,12 @@ public:
     // must outlive the model (the curves point at its rows).
     void setDictionary(const dev::Dictionary &dictionary, const std::string &version,
                        const std::string &mode);
+    // Curves from elsewhere (a test, no module: empty); dictionary() becomes null.
     void setCurves(std::vector<LCurve> curves);
     const std::vector<LCurve> &curves() const { return m_curves; }
+    // The dictionary of the last setDictionary(); null after setCurves(). With no curves it
+    // tells "this module has no curve" from "no module".
+    const dev::Dictionary *dictionary() const { return m_dictionary; }
     const std::vector<LPointValue> &values(int curve) const;
     std::optional<double> value(int curve, int index, LAxis axis) const;
 
@@ -89,6 +93,7 @@ private:
     void emitPointChanged(int curve, int index);
 
     std::vector<LCurve> m_curves;
+    const dev::Dictionary *m_dictionary = nullptr;
     std::vector<std::vector<LPointValue>> m_values; // per curve, per point
 };
 

@@ -37,6 +37,7 @@ enum class FoldCheckCode {
     OptionNotApplicable, // option set on a module it does not apply to
     OptionConsequence, // a valid option value with a consequence worth saying (E24 = 126, E28 = 2…)
     ProductNumber,     // DMA Profibus: GSD file cannot be decided from the product number
+    NodeMismatch,      // the plan differs from what the connected node reported
 };
 
 // One sentence of a finding; its %1, %2 … are filled with FoldSentence::args in order.
@@ -80,6 +81,9 @@ enum class FoldText {
     E26Off,      // module, address
     CanBaudDiffers,
     CanBaudReboot,
+    NodeDiffers, // module, address, planned version, planned mode, node's version, node's mode
+    NodeMissing, // module, address
+    NodeExtra,   // address, version, mode
 };
 
 // A value in a sentence: a number or name (the same in both languages, or a dictionary's

@@ -138,6 +138,16 @@ QString FoldCheckText::source(FoldText text)
     case FoldText::CanBaudReboot:
         return tr("A CAN baud rate (E26) changed through PROFIBUS becomes active only after a "
                   "reboot (OPAT manual §7).");
+    case FoldText::NodeDiffers:
+        return tr("Module %1 (address %2) is planned as V%3 in mode %4, but the connected node's "
+                  "module at that address runs V%5 in mode %6. The plan's options and the PLC "
+                  "image would not fit it; scan the node or change the plan.");
+    case FoldText::NodeMissing:
+        return tr("Module %1 (address %2) is planned, but no module of the connected node "
+                  "answers at that address.");
+    case FoldText::NodeExtra:
+        return tr("The connected node has a module at address %1 (V%2, mode %3) that the plan "
+                  "does not contain.");
     }
     return {};
 }

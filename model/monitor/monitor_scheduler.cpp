@@ -1,5 +1,7 @@
 #include "monitor_scheduler.h"
 
+#include "dict/monitor_defaults.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -11,19 +13,14 @@ constexpr qint64 kSecondNs = 1'000'000'000;
 
 } // namespace
 
-std::vector<const dev::ParamMeta *> defaultMonitorRows(const dev::Dictionary &dictionary)
+std::vector<const dev::ParamMeta *> defaultMonitorRows(const dev::Dictionary &dictionary,
+                                                       const std::string &mode)
 {
     std::vector<const dev::ParamMeta *> rows;
-    for (int id = 7; id <= 13; ++id) {
-        const dev::ParamMeta *row = dictionary.findId(id);
-        if (row && row->block == "d" && row->readable())
+    for (const std::string &name : dictionary.monitor.forMode(mode).channels) {
+        const dev::ParamMeta *row = dictionary.find(name);
+        if (row && row->readable() && !row->isString())
             rows.push_back(row);
-    }
-    if (!rows.empty())
-        return rows;
-    for (const dev::ParamMeta &row : dictionary.params) {
-        if (row.block == "d" && row.readable() && rows.size() < 8)
-            rows.push_back(&row);
     }
     return rows;
 }

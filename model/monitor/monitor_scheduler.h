@@ -18,9 +18,10 @@
 
 namespace vt::model {
 
-// d1.07..d1.13 (solenoid currents, desired/actual value, deviation, output) where the dictionary
-// has them; otherwise every readable row of block d, up to 8.
-std::vector<const dev::ParamMeta *> defaultMonitorRows(const dev::Dictionary &dictionary);
+// The channels the family's dictionary names for `mode` ("monitor"."channels", docs/DICTIONARY.md
+// "Monitor defaults"), in that order; empty when it names none.
+std::vector<const dev::ParamMeta *> defaultMonitorRows(const dev::Dictionary &dictionary,
+                                                       const std::string &mode);
 
 struct MonitorSample
 {

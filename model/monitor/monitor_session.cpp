@@ -9,17 +9,6 @@
 
 namespace vt::model {
 
-std::vector<const dev::ParamMeta *> defaultPlotRows(const dev::Dictionary &dictionary)
-{
-    std::vector<const dev::ParamMeta *> rows;
-    for (const char *name : {"d1.10", "d1.11", "d1.07", "d1.08", "d1.09"}) {
-        const dev::ParamMeta *row = dictionary.find(name);
-        if (row && row->readable())
-            rows.push_back(row);
-    }
-    return rows.empty() ? defaultMonitorRows(dictionary) : rows;
-}
-
 std::vector<const dev::ParamMeta *> monitorableRows(const ModuleInfo &module)
 {
     std::vector<const dev::ParamMeta *> rows;
@@ -66,7 +55,8 @@ void MonitorSession::setConnection(Connection *connection, std::vector<ModuleInf
     connect(m_scheduler.get(), &MonitorScheduler::pollFailed, this, &MonitorSession::pollFailed);
     for (const ModuleInfo &info : m_modules) {
         if (info.dictionary) {
-            setChannels(info.address, defaultPlotRows(*info.dictionary));
+            setChannels(info.address,
+                        defaultMonitorRows(*info.dictionary, info.identification.mode));
             break;
         }
     }

@@ -19,9 +19,6 @@ namespace vt::model {
 
 class Connection;
 
-// The default plot: desired and actual value, solenoid currents A, B and total —
-// d1.10, d1.11, d1.07, d1.08, d1.09 where the dictionary has them, else defaultMonitorRows().
-std::vector<const dev::ParamMeta *> defaultPlotRows(const dev::Dictionary &dictionary);
 // Every readable d-value of the module's version and mode (the channel chooser's list).
 std::vector<const dev::ParamMeta *> monitorableRows(const ModuleInfo &module);
 

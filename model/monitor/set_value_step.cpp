@@ -3,13 +3,15 @@
 #include "dict/cooking.h"
 
 #include <QPointer>
+#include <QStringList>
 
 namespace vt::model {
 
-std::vector<const dev::ParamMeta *> SetValueStep::setValueRows(const dev::Dictionary &dictionary)
+std::vector<const dev::ParamMeta *> SetValueStep::setValueRows(const dev::Dictionary &dictionary,
+                                                               const std::string &mode)
 {
     std::vector<const dev::ParamMeta *> rows;
-    for (const char *name : {"A1.01", "A2.01"}) {
+    for (const std::string &name : dictionary.monitor.forMode(mode).setValues) {
         const dev::ParamMeta *row = dictionary.find(name);
         if (row && row->writable() && !row->isString())
             rows.push_back(row);
@@ -17,10 +19,28 @@ std::vector<const dev::ParamMeta *> SetValueStep::setValueRows(const dev::Dictio
     return rows;
 }
 
-const dev::ParamMeta *SetValueStep::activationRow(const dev::Dictionary &dictionary)
+std::vector<const dev::SetValueActivation *>
+SetValueStep::activationRules(const dev::Dictionary &dictionary, const std::string &mode)
 {
-    const dev::ParamMeta *row = dictionary.find("E17");
-    return row && row->readable() && row->writable() ? row : nullptr;
+    std::vector<const dev::SetValueActivation *> rules;
+    for (const dev::SetValueActivation &rule : dictionary.monitor.forMode(mode).activation) {
+        const dev::ParamMeta *row = ruleRow(dictionary, rule);
+        if (row && row->readable() && row->writable())
+            rules.push_back(&rule);
+    }
+    return rules;
+}
+
+const dev::ParamMeta *SetValueStep::ruleRow(const dev::Dictionary &dictionary,
+                                            const dev::SetValueActivation &rule)
+{
+    return dictionary.find(rule.row);
+}
+
+dev::LocalText SetValueStep::noStepReason(const dev::Dictionary &dictionary,
+                                          const std::string &mode)
+{
+    return dictionary.monitor.forMode(mode).noSetValue;
 }
 
 SetValueStep::SetValueStep(DeviceAccess &access, ModuleInfo module, QObject *parent)
@@ -43,70 +63,88 @@ SetValueStep::~SetValueStep()
     }
 }
 
-QString SetValueStep::refusalText(const dev::ParamMeta &setValueRow, const dev::ParamMeta &e17Row,
-                                  double e17, dev::Language lang)
+QString SetValueStep::refusalText(const dev::ParamMeta &setValueRow,
+                                  const dev::ParamMeta &activationRow,
+                                  const dev::SetValueActivation &rule, double value,
+                                  dev::Language lang)
 {
-    return tr("E17 (set value activation mode) is %1: the analogue set value is added to the bus "
-              "set value %2, so the controller would not see the step alone. The manuals: \"For "
-              "switching off of the analogue set-value, set E17 = 2\" (DMA manual, ID 0x1F) and "
-              "\"If only the set value by the PLC is used … E17 = 2 is required\" (OPAT manual "
-              "§5.3). "
-              "Set E17 to 2 (only the digital set values active) first.")
-        .arg(QString::fromStdString(dev::formatValue(e17Row, e17, lang)),
-             QString::fromStdString(setValueRow.name));
+    const QString now = QString::fromStdString(dev::formatValue(activationRow, value, lang));
+    const QString wanted =
+        QString::fromStdString(dev::formatValue(activationRow, rule.value, lang));
+    return tr("%1 is %2, so the bus set value %3 alone does not drive the valve. The manual: %4 "
+              "Set %1 to %5 first.")
+        .arg(QString::fromStdString(activationRow.name), now,
+             QString::fromStdString(setValueRow.name), QString::fromStdString(rule.reason.in(lang)),
+             wanted);
 }
 
 void SetValueStep::step(const dev::ParamMeta &row, double raw)
 {
-    if (m_busy)
+    if (m_busy || !m_module.dictionary)
         return;
-    const dev::ParamMeta *e17 = m_module.dictionary ? activationRow(*m_module.dictionary) : nullptr;
-    if (!e17) {
-        emit refused(tr("This module has no set value activation mode E17; a bus set value step is "
-                        "not offered for it."),
-                     false);
-        return;
-    }
+    const auto rules = activationRules(*m_module.dictionary, m_module.identification.mode);
     m_busy = true;
     const dev::ParamMeta *target = &row;
+    std::vector<const dev::ParamMeta *> rows;
+    for (const dev::SetValueActivation *rule : rules)
+        rows.push_back(ruleRow(*m_module.dictionary, *rule));
+    rows.push_back(target);
     // The answer may come after this object is gone (the handle only cancels what is queued).
     QPointer<SetValueStep> self(this);
-    m_read =
-        m_access.read(m_module.address, {e17, target}, Priority::User,
-                      [self, this, e17, target, raw](const ReadResult &result) {
-                          if (!self)
-                              return;
-                          if (!result.complete() || result.values.size() != 2) {
-                              m_busy = false;
-                              const QString why = result.failures.empty()
-                                                      ? tr("cancelled")
-                                                      : result.failures.front().outcome.reason;
-                              emit refused(tr("Reading E17 failed: %1").arg(why), false);
-                              return;
-                          }
-                          m_activation = dev::rawNumber(result.values[0].value);
-                          if (*m_activation != kBusSetValueOnly) {
-                              m_busy = false;
-                              emit refused(refusalText(*target, *e17, *m_activation, m_lang), true);
-                              return;
-                          }
-                          WriteItem item;
-                          item.row = target;
-                          item.value = raw;
-                          item.before = result.values[1].value;
-                          runJob({item});
-                      });
+    m_read = m_access.read(
+        m_module.address, rows, Priority::User,
+        [self, this, rules, rows, target, raw](const ReadResult &result) {
+            if (!self)
+                return;
+            if (!result.complete() || result.values.size() != rows.size()) {
+                m_busy = false;
+                const QString why = result.failures.empty()
+                                        ? tr("cancelled")
+                                        : result.failures.front().outcome.reason;
+                QStringList names;
+                for (const dev::ParamMeta *r : rows)
+                    names << QString::fromStdString(r->name);
+                emit refused(tr("Reading %1 failed: %2").arg(names.join(QStringLiteral(", ")), why),
+                             false);
+                return;
+            }
+            m_pending = nullptr;
+            m_activation.reset();
+            for (std::size_t i = 0; i < rules.size(); ++i) {
+                const double held = dev::rawNumber(result.values[i].value);
+                if (held != rules[i]->value) {
+                    m_busy = false;
+                    m_pending = rules[i];
+                    m_activation = held;
+                    emit refused(refusalText(*target, *rows[i], *rules[i], held, m_lang), true);
+                    return;
+                }
+            }
+            WriteItem item;
+            item.row = target;
+            item.value = raw;
+            item.before = result.values.back().value;
+            runJob({item});
+        });
 }
 
 void SetValueStep::enableBusSetValue()
 {
-    const dev::ParamMeta *e17 = m_module.dictionary ? activationRow(*m_module.dictionary) : nullptr;
-    if (m_busy || !e17)
+    if (m_busy || !m_module.dictionary)
+        return;
+    if (!m_pending) { // before any refusal: the first rule (E17 = 2 on the HCS modules)
+        const auto rules = activationRules(*m_module.dictionary, m_module.identification.mode);
+        if (rules.empty())
+            return;
+        m_pending = rules.front();
+    }
+    const dev::ParamMeta *row = ruleRow(*m_module.dictionary, *m_pending);
+    if (!row)
         return;
     m_busy = true;
     WriteItem item;
-    item.row = e17;
-    item.value = static_cast<double>(kBusSetValueOnly);
+    item.row = row;
+    item.value = m_pending->value;
     if (m_activation)
         item.before = *m_activation;
     runJob({item});
@@ -120,8 +158,12 @@ void SetValueStep::runJob(std::vector<WriteItem> items)
         m_busy = false;
         const std::vector<WriteItem> done = m_job->items();
         for (const WriteItem &item : done) {
-            if (item.row && item.row->name == "E17" && isOnDevice(item.status))
-                m_activation = dev::rawNumber(item.value);
+            // The refused rule now holds its value: the next step checks the next rule.
+            if (m_pending && item.row && item.row == ruleRow(*m_module.dictionary, *m_pending) &&
+                isOnDevice(item.status)) {
+                m_pending = nullptr;
+                m_activation.reset();
+            }
         }
         // The job is not deleted inside its own signal.
         m_job->setParent(this);

@@ -13,7 +13,9 @@ CurveBinding::CurveBinding(ParameterDocument &document, LCurveTableModel &curves
     : QObject(parent), m_document(document), m_curves(curves)
 {
     connect(&m_document, &ParameterDocument::modulesReset, this, [this] {
-        if (m_module >= m_document.moduleCount())
+        // Until a module is chosen the page shows the first, as the monitor does: its curve, or
+        // that it has none.
+        if (m_module < 0 || m_module >= m_document.moduleCount())
             m_module = m_document.moduleCount() > 0 ? 0 : -1;
         reload();
     });

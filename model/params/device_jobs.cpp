@@ -1,5 +1,7 @@
 #include "device_jobs.h"
 
+#include "model/text_language.h"
+
 #include <QTimer>
 
 namespace vt::model {
@@ -19,6 +21,7 @@ void ReadAllJob::start()
 {
     m_queue.clear();
     m_problems.clear();
+    m_warnings.clear();
     for (int i = 0; i < m_document.moduleCount(); ++i)
         if (m_document.module(i).online && (!m_rowsOf || !m_rowsOf(i).empty()))
             m_queue.push_back(i);
@@ -60,8 +63,8 @@ void ReadAllJob::next()
             QString reason;
             for (const RowFailure &f : result.failures) {
                 if (f.outcome.status == OutcomeStatus::NotEncodable)
-                    continue; // rows this protocol cannot address (e.g. SD7 texts): not a failure
-                              // of the read
+                    continue; // rows this protocol cannot address (e.g. the HART field device
+                              // status): not a failure of the read
                 failedRows += f.rows.size();
                 reason = f.outcome.reason;
             }
@@ -70,6 +73,13 @@ void ReadAllJob::next()
                                  static_cast<int>(failedRows))
                                   .arg(address)
                                   .arg(reason);
+            for (const RowValue &v : result.values)
+                if (v.warningCode != 0 && v.row)
+                    m_warnings << tr("Module %1: %2: %3 (%4)")
+                                      .arg(address)
+                                      .arg(QString::fromStdString(v.row->name),
+                                           QString::fromStdString(v.warning.in(textLanguage())))
+                                      .arg(v.warningCode);
             if (result.cancelled)
                 m_cancelled = true;
             next();

@@ -34,6 +34,10 @@ public:
     bool isRunning() const { return m_running; }
     // One line per module that did not read completely ("Module 2: 3 rows failed: no answer").
     const QStringList &problems() const { return m_problems; }
+    // One line per value that arrived with a device warning (HART-7 manual §4.4.1 "Status"):
+    // "Module 0: hart_DeviceSpecificStatus: status bytes mismatch … (14)". Not a problem: the
+    // value was read.
+    const QStringList &warnings() const { return m_warnings; }
 
 signals:
     void progress(int done, int total); // exchanges over all modules
@@ -48,6 +52,7 @@ private:
     std::vector<int> m_queue; // document module indexes still to read
     std::shared_ptr<DeviceAccess::ReadHandle> m_handle;
     QStringList m_problems;
+    QStringList m_warnings;
     int m_doneBefore = 0; // exchanges of finished modules
     bool m_running = false;
     bool m_cancelled = false;

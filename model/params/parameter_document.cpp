@@ -1,5 +1,6 @@
 #include "parameter_document.h"
 
+#include "access/hart_universal_rows.h"
 #include "dict/cooking.h"
 #include "value_commands.h"
 
@@ -390,8 +391,9 @@ std::optional<QString> ParameterDocument::edit(int module, const dev::ParamMeta 
         return row->isString() ? tr("%1 takes a text.").arg(name)
                                : tr("%1 takes a number.").arg(name);
     if (const auto *text = std::get_if<std::string>(&value)) {
-        if (row->length > 0 && text->size() > static_cast<std::size_t>(row->length))
-            return tr("%1 takes at most %n character(s).", nullptr, row->length).arg(name);
+        const int characters = dev::access::textCapacity(*row);
+        if (characters > 0 && text->size() > static_cast<std::size_t>(characters))
+            return tr("%1 takes at most %n character(s).", nullptr, characters).arg(name);
     } else if (auto error = dev::checkRange(*row, dev::rawNumber(value))) {
         return QString::fromStdString(error->message.in(m_language));
     }

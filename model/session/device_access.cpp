@@ -5,6 +5,7 @@
 #include <QTimer>
 #include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace vt::model {
 
@@ -22,6 +23,7 @@ struct ReadState
 {
     std::vector<const dev::ParamMeta *> asked;
     std::map<const dev::ParamMeta *, dev::RawValue> got;
+    std::map<const dev::ParamMeta *, std::pair<int, dev::LocalText>> warnings;
     std::vector<RowFailure> failures;
     int done = 0;
     int total = 0;
@@ -160,8 +162,12 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
         result.cancelled = handle->m_cancelled;
         for (const dev::ParamMeta *row : state->asked) {
             auto it = state->got.find(row);
-            if (it != state->got.end())
-                result.values.push_back(RowValue{row, it->second});
+            if (it == state->got.end())
+                continue;
+            RowValue value{row, it->second, 0, {}};
+            if (auto w = state->warnings.find(row); w != state->warnings.end())
+                std::tie(value.warningCode, value.warning) = w->second;
+            result.values.push_back(std::move(value));
         }
         result.failures = std::move(state->failures);
         if (state->finished)
@@ -182,6 +188,9 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
                     std::vector<std::pair<const dev::ParamMeta *, dev::RawValue>> answered;
                     for (std::size_t i = 0; i < rowsOfT.size(); ++i) {
                         state->got[rowsOfT[i]] = outcome.reply.values[i];
+                        if (outcome.reply.exceptionCode != 0)
+                            state->warnings[rowsOfT[i]] = {outcome.reply.exceptionCode,
+                                                           outcome.reply.exceptionText};
                         answered.emplace_back(rowsOfT[i], outcome.reply.values[i]);
                     }
                     if (image)

@@ -47,6 +47,10 @@ struct RowValue
 {
     const dev::ParamMeta *row = nullptr;
     dev::RawValue value;
+    // The device answered with a warning (HART common codes such as 14 "status bytes
+    // mismatch"): the value arrived and counts; this is what the device said with it.
+    int warningCode = 0;
+    dev::LocalText warning;
 };
 
 struct RowFailure

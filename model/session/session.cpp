@@ -197,9 +197,16 @@ void Session::onReceived(const QByteArray &bytes)
     }
     m_timeout.stop();
     const bool refused = reply->status == dev::access::ReplyStatus::DeviceException;
-    emit frameReceived(link::toByteArray(reply->frame), p.transaction.module, elapsedNs(),
-                       refused ? ReceivedKind::Exception : ReceivedKind::Answer,
-                       refused ? localText(reply->exceptionText) : QString());
+    // An answer with a code is a warning (HART common codes such as 14): the value arrived, and
+    // the log says what the device added to it.
+    const bool warned = !refused && reply->exceptionCode != 0;
+    emit frameReceived(
+        link::toByteArray(reply->frame), p.transaction.module, elapsedNs(),
+        refused ? ReceivedKind::Exception : ReceivedKind::Answer,
+        refused ? localText(reply->exceptionText)
+        : warned
+            ? tr("warning %1: %2").arg(reply->exceptionCode).arg(localText(reply->exceptionText))
+            : QString());
     if (p.cancelled) {
         finish(std::move(m_current), Outcome{OutcomeStatus::Cancelled, std::move(*reply),
                                              p.attempts, true, tr("Cancelled")});

@@ -238,7 +238,9 @@ TEST_F(CliDevice, MonitorPrintsSamplesAndReportsTheAchievedRate)
     ASSERT_EQ(json.code, kExitOk) << what(json);
     const auto doc = json.json();
     EXPECT_EQ(doc["requested_hz"], 50.0);
-    EXPECT_EQ(doc["rows"].size(), 7u); // d1.07..d1.13 in one request
+    // The family's default channels (dictionary "monitor"): d1.10, d1.11, d1.07, d1.08, d1.09.
+    ASSERT_EQ(doc["rows"].size(), 5u);
+    EXPECT_EQ(doc["rows"][0]["name"], "d1.10");
     EXPECT_GE(doc["samples"].get<int>(), 5);
     EXPECT_EQ(doc["data"].size(), doc["samples"].get<std::size_t>());
     EXPECT_GT(doc["achieved_hz"].get<double>(), 10.0);
@@ -319,6 +321,34 @@ TEST_F(CliDevice, OverTcpToTheSimulatorProcess)
     ASSERT_EQ(info.code, kExitOk) << what(info);
     EXPECT_TRUE(info.says(", modbus-tcp, module 3\nmodule 3: dma-pn-v51 V51.00, mode 3"))
         << info.out;
+}
+
+// The SD7's own texts (HART-7 manual §5.1.10, §5.1.11, §5.1.18; delivery state §6.4) in info.
+TEST_F(CliDevice, InfoShowsTheSd7Texts)
+{
+    const CliRun text = cli({"info", "--sim", "wandfluh-sd7"});
+    ASSERT_EQ(text.code, kExitOk) << what(text);
+    EXPECT_TRUE(text.says("  Tag: WAGSD733\n")) << text.out;
+    EXPECT_TRUE(text.says("  Long tag: Wandfluh AG - SD733\n")) << text.out;
+    EXPECT_TRUE(text.says("  Descriptor: WAG ELECTRONIC\n")) << text.out;
+    EXPECT_TRUE(text.says("  Date: 2024-03-15\n")) << text.out;
+    EXPECT_TRUE(text.says("  Message: ")) << text.out;
+
+    // Commands 18 and 17 write them, each read back (HART-7 manual §5.1.15, §5.1.16).
+    const CliRun set =
+        cli({"set", "--sim", "wandfluh-sd7", "--yes", "hart_Tag=PUMP 7", "hart_Message=CHECKED"});
+    ASSERT_EQ(set.code, kExitOk) << what(set);
+    EXPECT_TRUE(set.says("hart_Tag       \"WAGSD733\" -> \"PUMP 7\"  verified\n")) << set.out;
+    EXPECT_TRUE(set.says("hart_Message   \"\" -> \"CHECKED\"  verified\n")) << set.out;
+
+    const CliRun json = cli({"--json", "info", "--sim", "wandfluh-sd7"});
+    ASSERT_EQ(json.code, kExitOk) << what(json);
+    const auto doc = json.json();
+    const auto &texts = doc["modules"][0]["texts"];
+    EXPECT_EQ(texts["tag"], "WAGSD733");
+    EXPECT_EQ(texts["descriptor"], "WAG ELECTRONIC");
+    EXPECT_EQ(texts["date"], "2024-03-15");
+    EXPECT_EQ(texts["long_tag"], "Wandfluh AG - SD733");
 }
 
 } // namespace

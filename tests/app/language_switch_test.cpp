@@ -75,7 +75,9 @@ TEST(LanguageSwitch, EveryOpenWindowFollowsAtOnce)
     ASSERT_TRUE(read.wait(vt::test::kWaitMs));
     const dev::ParamMeta *c107 = w.workspace().document().module(0).dictionary->find("C1.07");
     w.workspace().document().edit(0, c107, 1000.0);
-    w.openFoldWizard();
+    ui::FoldWizard *wizard = w.openFoldWizard();
+    // The wizard reads the node before it shows its first page.
+    ASSERT_TRUE(vt::test::waitUntil([&] { return wizard->isVisible(); }, vt::test::kWaitMs));
     QCoreApplication::processEvents();
 
     const Texts english = visible(w);

@@ -332,6 +332,7 @@ TEST(NoEnglishLeft, EveryWindowIsGermanAfterARunTimeSwitch)
     // The fold wizard on its Apply page, which names the connection.
     ui::FoldWizard *wizard = w.openFoldWizard();
     ASSERT_NE(wizard, nullptr);
+    ASSERT_TRUE(test::waitUntil([&] { return wizard->isVisible(); }, kWaitMs)); // node read first
     wizard->restart();
     if (auto *dma = wizard->currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn")))
         dma->click();

@@ -206,7 +206,9 @@ protected:
         spec.sim.family = "dma-pn-v51";
         window->device().connectTo(spec);
         ASSERT_TRUE(read.wait(kWaitMs));
-        window->openFoldWizard();
+        ui::FoldWizard *wizard = window->openFoldWizard();
+        // The wizard reads the node before it shows its first page.
+        ASSERT_TRUE(test::waitUntil([&] { return wizard->isVisible(); }, kWaitMs));
         connectDialog =
             new ui::ConnectDialog(window->workspace().dictionaries(), nullptr, window.get());
         connectDialog->setWindowFlag(Qt::Window);

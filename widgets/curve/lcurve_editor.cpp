@@ -3,6 +3,7 @@
 #include "lcurve_delegate.h"
 #include "lcurve_plot.h"
 #include "model/curve/lcurve_table_model.h"
+#include "model/text_language.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -52,8 +53,16 @@ LCurveEditor::LCurveEditor(QWidget *parent) : QWidget(parent)
     warn.setColor(QPalette::WindowText, QColor(180, 0, 0));
     m_message->setPalette(warn);
 
+    m_noCurve = new QLabel(this);
+    m_noCurve->setObjectName(QStringLiteral("noCurve"));
+    m_noCurve->setWordWrap(true);
+    m_noCurve->setAlignment(Qt::AlignCenter);
+    m_noCurve->setVisible(false);
+    m_views = splitter;
+
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(splitter, 1);
+    layout->addWidget(m_noCurve, 1);
     layout->addWidget(m_hint);
     layout->addWidget(m_message);
     retranslate();
@@ -70,8 +79,33 @@ void LCurveEditor::setModel(model::LCurveTableModel *model)
     if (model) {
         connect(model, &model::LCurveTableModel::editRefused, this, &LCurveEditor::showRefusal);
         connect(model, &model::LCurveTableModel::rowsEdited, m_message, &QLabel::clear);
-        connect(model, &QObject::destroyed, this, [this] { m_model = nullptr; });
+        connect(model, &QAbstractItemModel::modelReset, this, &LCurveEditor::showWhetherCurves);
+        connect(model, &QObject::destroyed, this, [this] {
+            m_model = nullptr;
+            showWhetherCurves();
+        });
     }
+    showWhetherCurves();
+}
+
+QString LCurveEditor::noCurveText() const
+{
+    return m_noCurve->isVisibleTo(this) ? m_noCurve->text() : QString();
+}
+
+void LCurveEditor::showWhetherCurves()
+{
+    // The DMA-2 PROFIBUS lists and the Wandfluh profiles have no L block: an empty plot with
+    // the DMA help under it would suggest a curve that is not there.
+    const dev::Dictionary *dictionary = m_model ? m_model->dictionary() : nullptr;
+    const bool none = dictionary && m_model->curves().empty();
+    if (none)
+        m_noCurve->setText(
+            tr("This device has no linearisation curve: the parameter list of %1 has no L block.")
+                .arg(QString::fromStdString(dictionary->title.in(model::textLanguage()))));
+    m_noCurve->setVisible(none);
+    m_views->setVisible(!none);
+    m_hint->setVisible(!none);
 }
 
 QString LCurveEditor::message() const
@@ -95,6 +129,8 @@ void LCurveEditor::retranslate()
 {
     if (m_model)
         m_model->retranslate();
+    if (m_noCurve)
+        showWhetherCurves();
     m_hint->setText(
         tr("Drag a point or type its coordinates. Input x must rise from point to "
            "point; grey coordinates are fixed by the device. Whether the module applies "

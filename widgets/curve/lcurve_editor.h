@@ -1,6 +1,7 @@
 // LCurveEditor: the linearisation (L block) page — the curves as a plot with draggable points
 // beside the same points as a table, both views of one LCurveTableModel, and a line saying why
-// the last edit was refused. Undo belongs to the document that owns the model.
+// the last edit was refused; for a module whose family has no L block, the sentence that says so
+// instead. Undo belongs to the document that owns the model.
 #pragma once
 
 #include <QWidget>
@@ -29,6 +30,8 @@ public:
     QTableView *table() const { return m_table; }
     // The refusal shown under the views ("L1.x3 must be below L1.x4 (5.000 V)"), empty if none.
     QString message() const;
+    // The "no linearisation curve" sentence, empty while the module has curves or none is chosen.
+    QString noCurveText() const;
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -36,11 +39,14 @@ protected:
 private:
     void retranslate();
     void showRefusal(int curve, int index, const QString &reason);
+    void showWhetherCurves();
 
     LCurvePlot *m_plot = nullptr;
     QTableView *m_table = nullptr;
     QLabel *m_hint = nullptr;
     QLabel *m_message = nullptr;
+    QLabel *m_noCurve = nullptr;
+    QWidget *m_views = nullptr;
     model::LCurveTableModel *m_model = nullptr;
 };
 

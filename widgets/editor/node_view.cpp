@@ -2,9 +2,11 @@
 
 #include "model/params/parameter_document.h"
 #include "model/params/parameter_tree_model.h"
+#include "model/session/identity_texts.h"
 
 #include <QEvent>
 #include <QHeaderView>
+#include <algorithm>
 
 namespace vt::ui {
 
@@ -20,12 +22,20 @@ NodeView::NodeView(model::ParameterDocument &document, QWidget *parent)
     connect(&m_document, &model::ParameterDocument::moduleValuesChanged, this, &NodeView::rebuild);
     connect(&m_document, &model::ParameterDocument::languageChanged, this, &NodeView::rebuild);
     // Live values: only the state word column changes.
-    connect(&m_document, &model::ParameterDocument::valueChanged, this,
-            [this](int module, const dev::ParamMeta *) {
-                QTreeWidgetItem *node = topLevelItem(0);
-                if (node && module < node->childCount())
-                    node->child(module)->setText(4, model::stateWordText(m_document, module));
-            });
+    connect(
+        &m_document, &model::ParameterDocument::valueChanged, this,
+        [this](int module, const dev::ParamMeta *row) {
+            if (row && module < m_document.moduleCount() && m_document.module(module).dictionary) {
+                const auto texts = model::identityTextRows(*m_document.module(module).dictionary);
+                if (std::find(texts.begin(), texts.end(), row) != texts.end()) {
+                    rebuild();
+                    return;
+                }
+            }
+            QTreeWidgetItem *node = topLevelItem(0);
+            if (node && module < node->childCount())
+                node->child(module)->setText(4, model::stateWordText(m_document, module));
+        });
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         const QVariant module = item->data(0, Qt::UserRole);
         if (module.isValid())
@@ -63,6 +73,22 @@ void NodeView::rebuild()
         item->setText(4, model::stateWordText(m_document, i));
         item->setText(5, m.online ? tr("online") : tr("offline"));
         item->setToolTip(1, m.identity);
+        // The device's own texts (HART tag, long tag, descriptor, date, message) under it.
+        if (m.dictionary) {
+            const auto texts = model::identityTexts(
+                *m.dictionary,
+                [this, i](const dev::ParamMeta *row) {
+                    return m_document.value(i, row, model::Layer::Device);
+                },
+                m_document.language());
+            for (const model::IdentityText &text : texts) {
+                auto *line = new QTreeWidgetItem(item);
+                line->setData(0, Qt::UserRole, i);
+                line->setText(0, text.label);
+                line->setText(1, text.known ? text.value : tr("(not read)"));
+                line->setFirstColumnSpanned(false);
+            }
+        }
     }
     expandAll();
 }

@@ -1,5 +1,6 @@
-// NodeView: the node and its modules — address, identity, version, mode, state word, online —
-// from a scan of the connected node or from the open file. Selecting a module tells the editor.
+// NodeView: the node and its modules — address, identity, version, mode, state word, online, and
+// the device's own texts (HART tag, long tag, descriptor, date, message) — from a scan of the
+// connected node or from the open file. Selecting a module tells the editor.
 #pragma once
 
 #include <QTreeWidget>

@@ -71,6 +71,11 @@ void FoldCheckPage::recheck()
     if (!fold())
         return;
     m_findings = model::checkFoldPlan(fold()->plan(), &fold()->dictionaries());
+    if (fold()->nodeRead()) {
+        // What the connected node reported when the wizard opened (FoldWizard::readNode).
+        auto node = model::checkPlanAgainstNode(fold()->plan(), fold()->nodeModules());
+        m_findings.insert(m_findings.end(), node.begin(), node.end());
+    }
     m_list->clear();
     int errors = 0, warnings = 0;
     for (const model::FoldFinding &finding : m_findings) {

@@ -1,5 +1,6 @@
 #include "widgets/fold/fold_wizard.h"
 
+#include "core/version.h"
 #include "model/fold/fold_plan_file.h"
 #include "model/session/connection.h"
 #include "widgets/fold/fold_address_page.h"
@@ -12,6 +13,7 @@
 #include "widgets/fold/fold_plc_page.h"
 
 #include <QEvent>
+#include <memory>
 
 namespace vt::ui {
 
@@ -64,6 +66,42 @@ void FoldWizard::setConnection(model::Connection *connection)
 bool FoldWizard::online() const
 {
     return m_connection && m_connection->isOpen();
+}
+
+void FoldWizard::readNode(std::function<void()> done)
+{
+    const int generation = ++m_readGeneration;
+    m_node.clear();
+    m_nodeRead = false;
+    if (!online()) {
+        done();
+        return;
+    }
+    // One address after the other, as the node answers one request at a time.
+    auto addresses = std::make_shared<std::vector<int>>(m_connection->scanAddresses());
+    auto next = std::make_shared<std::function<void(std::size_t)>>();
+    *next = [this, self = QPointer<FoldWizard>(this), generation, addresses, next,
+             done](std::size_t i) {
+        if (!self || generation != m_readGeneration)
+            return;
+        if (i >= addresses->size() || !online()) {
+            m_nodeRead = online();
+            done();
+            *next = nullptr; // ends the cycle the lambda holds on itself
+            return;
+        }
+        const int address = (*addresses)[i];
+        m_connection->access().identify(address, [self, generation, next, address, i,
+                                                  this](const model::IdentifyResult &r) {
+            if (!self || generation != m_readGeneration || !*next)
+                return;
+            if (r.ok)
+                m_node.push_back({address, dev::majorVersionNumber(r.module.identification.version),
+                                  r.module.mode});
+            (*next)(i + 1);
+        });
+    };
+    (*next)(0);
 }
 
 void FoldWizard::setPlan(const model::FoldPlan &plan)

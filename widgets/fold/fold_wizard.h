@@ -6,11 +6,13 @@
 // outlive the wizard (or call setConnection(nullptr) before the connection goes).
 #pragma once
 
+#include "model/fold/fold_node_check.h"
 #include "model/fold/fold_plan.h"
 #include "model/session/connection.h"
 
 #include <QPointer>
 #include <QWizard>
+#include <functional>
 #include <vector>
 
 namespace vt::dev {
@@ -61,6 +63,14 @@ public:
     const std::vector<int> &foundAddresses() const { return m_found; }
     void setFoundAddresses(std::vector<int> addresses) { m_found = std::move(addresses); }
 
+    // Identifies every address of the connection (version and mode of each module, as a scan
+    // does) and calls `done` when all have answered or not; the main window shows the wizard
+    // only then, so its first page already knows the node. Offline: `done` at once.
+    void readNode(std::function<void()> done);
+    // What the node reported at the last readNode(); nodeRead() false before one finished.
+    const std::vector<model::FoldNodeModule> &nodeModules() const { return m_node; }
+    bool nodeRead() const { return m_nodeRead; }
+
 signals:
     void connectionChanged();
 
@@ -75,6 +85,9 @@ private:
     model::FoldPlan m_plan;
     QString m_planPath;
     std::vector<int> m_found;
+    std::vector<model::FoldNodeModule> m_node;
+    bool m_nodeRead = false;
+    int m_readGeneration = 0;
 };
 
 } // namespace vt::ui

@@ -361,6 +361,15 @@ void MonitorView::updateControls()
     }
     m_run->setText(m_session->isRunning() ? tr("Pause") : tr("Start"));
     m_run->setEnabled(connected && hasChannels);
+    // Start is never disabled without a word: say why there is nothing to poll.
+    const QString why =
+        connected && !hasChannels
+            ? tr("Nothing to monitor: the parameter list of this module names no default "
+                 "channels. Choose the values to plot with Channels….")
+            : QString();
+    m_run->setToolTip(why);
+    if (!why.isEmpty())
+        m_readout->setText(why);
     m_channels->setEnabled(connected);
     m_export->setEnabled(hasChannels);
 }

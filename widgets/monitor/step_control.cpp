@@ -67,15 +67,33 @@ void StepControl::setConnection(model::DeviceAccess *access,
     clearConnection();
     m_access = access;
     const QSignalBlocker block(m_module);
+    std::vector<model::ModuleInfo> without;
     for (const model::ModuleInfo &module : modules) {
-        if (module.dictionary && !model::SetValueStep::setValueRows(*module.dictionary).empty()) {
+        if (!module.dictionary)
+            continue;
+        if (!model::SetValueStep::setValueRows(*module.dictionary, module.identification.mode)
+                 .empty()) {
             m_modules.push_back(module);
             m_module->addItem(tr("module %1").arg(module.address), module.address);
+        } else {
+            without.push_back(module);
         }
     }
-    if (m_access && m_modules.empty())
-        m_status->setText(tr(
-            "No connected module has a bus set value (A1.01/A2.01); the step is not available."));
+    if (m_access && m_modules.empty()) {
+        // The dictionary says why (e.g. the SD7 in local device mode has no bus set value).
+        showStatus([without] {
+            QStringList reasons;
+            for (const model::ModuleInfo &module : without) {
+                const dev::LocalText why = model::SetValueStep::noStepReason(
+                    *module.dictionary, module.identification.mode);
+                reasons.append(tr("Module %1: %2")
+                                   .arg(module.address)
+                                   .arg(QString::fromStdString(why.in(model::textLanguage()))));
+            }
+            return tr("No connected module has a bus set value; the step is not available.") +
+                   (reasons.isEmpty() ? QString() : QStringLiteral("\n") + reasons.join('\n'));
+        });
+    }
     moduleChosen();
 }
 
@@ -103,6 +121,21 @@ const model::ModuleInfo *StepControl::currentModule() const
                : nullptr;
 }
 
+std::pair<const dev::ParamMeta *, const dev::SetValueActivation *>
+StepControl::activationTarget() const
+{
+    const model::ModuleInfo *module = currentModule();
+    if (!module)
+        return {nullptr, nullptr};
+    const dev::SetValueActivation *rule = m_step ? m_step->pendingRule() : nullptr;
+    if (!rule) {
+        const auto rules =
+            model::SetValueStep::activationRules(*module->dictionary, module->identification.mode);
+        rule = rules.empty() ? nullptr : rules.front();
+    }
+    return {rule ? model::SetValueStep::ruleRow(*module->dictionary, *rule) : nullptr, rule};
+}
+
 const dev::ParamMeta *StepControl::currentRow() const
 {
     const model::ModuleInfo *module = currentModule();
@@ -113,12 +146,14 @@ const dev::ParamMeta *StepControl::currentRow() const
 
 void StepControl::moduleChosen()
 {
+    retranslate(); // the activation button names this module's row
     m_step.reset();
     m_activate->setVisible(false);
     const QSignalBlocker block(m_row);
     m_row->clear();
     if (const model::ModuleInfo *module = currentModule()) {
-        for (const dev::ParamMeta *row : model::SetValueStep::setValueRows(*module->dictionary)) {
+        for (const dev::ParamMeta *row :
+             model::SetValueStep::setValueRows(*module->dictionary, module->identification.mode)) {
             const QString name = QString::fromStdString(row->name);
             m_row->addItem(name, name);
             m_row->setItemData(m_row->count() - 1,
@@ -130,16 +165,18 @@ void StepControl::moduleChosen()
         connect(m_step.get(), &model::SetValueStep::refused, this,
                 [this](const QString &reason, bool needsActivation) {
                     const dev::ParamMeta *row = currentRow();
-                    const dev::ParamMeta *e17 =
-                        model::SetValueStep::activationRow(*currentModule()->dictionary);
+                    const auto target = activationTarget();
+                    const dev::ParamMeta *e17 = target.first;
+                    const dev::SetValueActivation *rule = target.second;
                     const std::optional<double> activation = m_step->activation();
-                    if (needsActivation && row && e17 && activation)
-                        showStatus([row, e17, activation] {
-                            return model::SetValueStep::refusalText(*row, *e17, *activation,
+                    if (needsActivation && row && e17 && rule && activation)
+                        showStatus([row, e17, rule, activation] {
+                            return model::SetValueStep::refusalText(*row, *e17, *rule, *activation,
                                                                     model::textLanguage());
                         });
                     else
                         m_status->setText(reason);
+                    retranslate(); // the button names the rule that was refused
                     m_activate->setVisible(needsActivation);
                     updateEnabled();
                 });
@@ -220,7 +257,15 @@ void StepControl::startStep(const dev::ParamMeta &rowRef, double raw)
     if (!m_step || m_step->isBusy())
         return;
     m_activate->setVisible(false);
-    m_status->setText(tr("Checking E17, then writing %1 …").arg(QString::fromStdString(row->name)));
+    const model::ModuleInfo *module = currentModule();
+    QStringList checked;
+    for (const dev::SetValueActivation *rule :
+         model::SetValueStep::activationRules(*module->dictionary, module->identification.mode))
+        checked << QString::fromStdString(rule->row);
+    m_status->setText(checked.isEmpty() ? tr("Writing %1 …").arg(QString::fromStdString(row->name))
+                                        : tr("Checking %1, then writing %2 …")
+                                              .arg(checked.join(QStringLiteral(", ")),
+                                                   QString::fromStdString(row->name)));
     m_step->setLanguage(model::textLanguage());
     m_step->step(*row, raw);
     updateEnabled();
@@ -231,17 +276,23 @@ void StepControl::enableBusSetValue()
     if (!m_step || m_step->isBusy())
         return;
     const model::ModuleInfo *module = currentModule();
-    const dev::ParamMeta *e17 = model::SetValueStep::activationRow(*module->dictionary);
-    if (!e17)
+    const auto target = activationTarget();
+    const dev::ParamMeta *e17 = target.first;
+    const dev::SetValueActivation *rule = target.second;
+    if (!e17 || !rule)
         return;
-    const QString line = actuatorWriteLine(
-        module->address, *e17, m_access->image().value(module->address, e17),
-        dev::RawValue{double(model::SetValueStep::kBusSetValueOnly)}, model::textLanguage());
-    confirmActuatorWrites(this, {line}, [this, guard = QPointer<StepControl>(this)] {
+    const QString line =
+        actuatorWriteLine(module->address, *e17, m_access->image().value(module->address, e17),
+                          dev::RawValue{rule->value}, model::textLanguage());
+    const QString writing =
+        tr("Writing %1 = %2 …")
+            .arg(QString::fromStdString(e17->name), QString::fromStdString(dev::formatValue(
+                                                        *e17, rule->value, model::textLanguage())));
+    confirmActuatorWrites(this, {line}, [this, guard = QPointer<StepControl>(this), writing] {
         if (!guard || !m_step || m_step->isBusy())
             return;
         m_activate->setVisible(false);
-        m_status->setText(tr("Writing E17 = 2 …"));
+        m_status->setText(writing);
         m_step->enableBusSetValue();
         updateEnabled();
     });
@@ -343,11 +394,20 @@ void StepControl::retranslate()
     m_title->setText(tr("Step:"));
     m_write->setText(tr("Write step"));
     m_write->setToolTip(
-        tr("Writes the bus set value (range-checked, read back) and marks it on the time axis. "
-           "E17 must be 2 (only the digital set values active), as the manuals require."));
+        tr("Writes the bus set value (range-checked, read back) and marks it on the time axis, "
+           "after checking that the module takes its set value from the bus."));
     showArmed();
-    m_activate->setText(tr("Set E17 = 2"));
-    m_activate->setToolTip(tr("Switches the analogue set value off (E17 = 2, stored in EEPROM)."));
+    const auto target = activationTarget();
+    const dev::ParamMeta *row = target.first;
+    const dev::SetValueActivation *rule = target.second;
+    const QString name = row ? QString::fromStdString(row->name) : QStringLiteral("E17");
+    const QString value =
+        row && rule
+            ? QString::fromStdString(dev::formatValue(*row, rule->value, model::textLanguage()))
+            : QStringLiteral("2");
+    m_activate->setText(tr("Set %1 = %2").arg(name, value));
+    m_activate->setToolTip(
+        tr("Makes the bus set value the one that drives the valve (%1 = %2).").arg(name, value));
     for (int i = 0; i < m_module->count(); ++i)
         m_module->setItemText(i, tr("module %1").arg(m_module->itemData(i).toInt()));
     if (m_statusRender && m_status->text() == m_statusShown)

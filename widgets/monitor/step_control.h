@@ -10,6 +10,7 @@
 #include <QWidget>
 #include <functional>
 #include <memory>
+#include <utility>
 
 class QComboBox;
 class QLabel;
@@ -55,6 +56,9 @@ protected:
 
 private:
     void retranslate();
+    // The activation row and rule the "Set … = …" button writes: the one the last step was
+    // refused for, else the module's first.
+    std::pair<const dev::ParamMeta *, const dev::SetValueActivation *> activationTarget() const;
     void moduleChosen();
     void rowChosen();
     void updateEnabled();

@@ -3,6 +3,7 @@
 // row's type (§4.4.1 table and examples), response codes and the communication-error byte
 // (§4.4.1 "Status"), preambles, checksum, chunking.
 #include "access/hart_adapter.h"
+#include "access/hart_universal_rows.h"
 #include "adapter_rig.h"
 #include "dict/dictionary_loader.h"
 #include "dict/identify.h"
@@ -14,6 +15,7 @@
 #include "sim/hart_server.h"
 
 #include <gtest/gtest.h>
+#include <set>
 
 using namespace vt::dev;
 using namespace vt::dev::access;
@@ -130,17 +132,40 @@ TEST(HartAdapter, ReadsEveryParameterTheCommandsCanAddress)
     for (const ParamMeta &p : sd7().params)
         rows.push_back(&p);
     const auto plan = r.adapter.planRead(0, rows);
-    EXPECT_GT(plan.size(), 150u);
+    std::vector<Transaction> byIndPnu;
+    std::set<std::uint8_t> universalCommands;
     for (const Transaction &t : plan) {
+        if (t.rows.front()->block == "hart") {
+            // One universal command for all the fields it carries (HART-7 manual §5.1).
+            const auto field = universalField(*t.rows.front());
+            ASSERT_TRUE(field) << t.rows.front()->name;
+            EXPECT_TRUE(universalCommands.insert(field->readCommand).second);
+            for (const ParamMeta *row : t.rows)
+                EXPECT_EQ(universalField(*row)->readCommand, field->readCommand) << row->name;
+            continue;
+        }
         ASSERT_EQ(t.rows.size(), 1u);
         EXPECT_TRUE(t.rows.front()->readable());
         EXPECT_FALSE(t.rows.front()->isString());
         EXPECT_LE(*t.rows.front()->pnu, 255);
+        byIndPnu.push_back(t);
     }
-    const auto values = r.rig.readAll(plan);
-    ASSERT_EQ(values.size(), plan.size());
+    EXPECT_GT(byIndPnu.size(), 150u);
+    // Commands 0, 2, 3, 7, 12, 13, 14, 15, 16, 20, 48.
+    EXPECT_EQ(universalCommands, (std::set<std::uint8_t>{0, 2, 3, 7, 12, 13, 14, 15, 16, 20, 48}));
+    const auto values = r.rig.readAll(byIndPnu);
+    ASSERT_EQ(values.size(), byIndPnu.size());
     for (const auto &[row, value] : values)
         EXPECT_EQ(rawNumber(value), r.expected(*row)) << row->name;
+    // Every universal field arrives too, the texts as texts.
+    std::vector<Transaction> universal;
+    for (const Transaction &t : plan)
+        if (t.rows.front()->block == "hart")
+            universal.push_back(t);
+    for (const auto &[row, value] : r.rig.readAll(universal))
+        EXPECT_EQ(isText(value), row->isString()) << row->name;
+    EXPECT_EQ(std::get<std::string>(r.rig.readAll({r.readOf(r.row("hart_Tag"))}).front().second),
+              "WAGSD733");
 }
 
 TEST(HartAdapter, WritesAsTheManualsExampleAndReadsBack)

@@ -16,6 +16,16 @@ namespace {
 using model::OutcomeStatus;
 using model::Priority;
 
+// d1.07 .. d1.13 (currents, desired/actual value, deviation, output): seven consecutive IDs, so
+// one request per sample.
+std::vector<const dev::ParamMeta *> displayBlockRows(const dev::Dictionary &dictionary)
+{
+    std::vector<const dev::ParamMeta *> rows;
+    for (int id = 7; id <= 13; ++id)
+        rows.push_back(dictionary.findId(id));
+    return rows;
+}
+
 TEST(Session, IdentifiesEachHcsFamily)
 {
     for (const char *family :
@@ -198,7 +208,7 @@ TEST(Session, MonitorPollsTheDisplayBlockAtTheRequestedRate)
 {
     auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    const auto rows = model::defaultMonitorRows(c->dictionary());
+    const auto rows = displayBlockRows(c->dictionary());
     ASSERT_EQ(rows.size(), 7u); // d1.07 .. d1.13 in one request
     EXPECT_EQ(rows.front()->name, "d1.07");
     EXPECT_EQ(rows.back()->name, "d1.13");
@@ -221,7 +231,7 @@ TEST(Session, MonitorSamplesGoToABoundedStoreInDisplayUnits)
 {
     auto c = openSim("dma-pn-v51");
     ASSERT_TRUE(c);
-    const auto rows = model::defaultMonitorRows(c->dictionary());
+    const auto rows = displayBlockRows(c->dictionary());
     model::SampleStore store(model::monitorChannels(rows, dev::Language::English), 10);
     ASSERT_EQ(store.channelCount(), 7);
     EXPECT_EQ(store.channels().front().id, QStringLiteral("d1.07"));

@@ -9,6 +9,7 @@
 #include "sim_rig.h"
 #include "widgets/fold/fold_apply_page.h"
 #include "widgets/fold/fold_bench_page.h"
+#include "widgets/fold/fold_check_page.h"
 #include "widgets/fold/fold_modules_page.h"
 #include "widgets/fold/fold_wizard.h"
 
@@ -181,6 +182,50 @@ TEST(FoldWizardSim, PointToPointGuidesModuleByModule)
     EXPECT_EQ(m.storage().raw(*m.dictionary().find("E22")->id), 2);
     wizard.next();
     EXPECT_EQ(wizard.currentId(), FoldWizard::PlcPageId);
+}
+
+// The wizard reads the node (version and mode of every module) before its first page, and the
+// check page flags a plan that does not match it: here a plan of three V13 modules in mode 1 on
+// a node whose three modules run V51 in mode 3, and one planned address nobody answers at.
+TEST(FoldWizardSim, TheCheckPageFlagsAPlanThatDoesNotMatchTheNode)
+{
+    auto c = openSim({"dma-pn-v51", 2, "modbus-tcp", {}, {}});
+    ASSERT_TRUE(c);
+    FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());
+    bool read = false;
+    wizard.readNode([&] { read = true; });
+    ASSERT_TRUE(waitUntil([&] { return read; }, kWaitMs));
+    ASSERT_TRUE(wizard.nodeRead());
+    ASSERT_EQ(wizard.nodeModules().size(), 2u);
+    EXPECT_EQ(wizard.nodeModules()[0], (model::FoldNodeModule{1, 51, 3}));
+
+    wizard.setPlan(model::defaultFoldPlan(model::FoldNode::DmaProfinet, 3)); // V13, mode 1
+    wizard.show();
+    wizard.restart();
+    wizard.currentPage()->findChild<QRadioButton *>(QStringLiteral("dma-pn"))->click();
+    nextTo(wizard, FoldWizard::CheckPageId);
+    auto *check = static_cast<FoldCheckPage *>(wizard.currentPage());
+    std::vector<model::FoldFinding> mismatches;
+    for (const model::FoldFinding &f : check->findings())
+        if (f.code == model::FoldCheckCode::NodeMismatch)
+            mismatches.push_back(f);
+    ASSERT_EQ(mismatches.size(), 3u);
+    EXPECT_EQ(model::foldFindingText(mismatches[0]),
+              "Module 1 (address 1) is planned as V13 in mode 1, but the connected node's module "
+              "at that address runs V51 in mode 3. The plan's options and the PLC image would "
+              "not fit it; scan the node or change the plan.");
+    EXPECT_EQ(model::foldFindingText(mismatches[2]),
+              "Module 3 (address 3) is planned, but no module of the connected node answers at "
+              "that address.");
+    EXPECT_TRUE(check->isComplete()); // warnings: the plan may be for the node to come
+
+    // A plan that matches the node has no such finding.
+    model::FoldPlan matching = model::defaultFoldPlan(model::FoldNode::DmaProfinet, 2);
+    for (model::FoldModule &m : matching.modules) {
+        m.version = 51;
+        m.mode = 3;
+    }
+    EXPECT_TRUE(model::checkPlanAgainstNode(matching, wizard.nodeModules()).empty());
 }
 
 } // namespace

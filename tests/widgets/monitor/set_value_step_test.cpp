@@ -13,18 +13,33 @@ namespace {
 
 using model::SetValueStep;
 
-TEST(SetValueStep, OffersTheBusSetValuesOfHcsModulesOnly)
+// The set values and their activation row are the dictionary's ("monitor"."set_values").
+TEST(SetValueStep, OffersTheSetValuesTheFamilysDictionaryNames)
 {
-    auto names = [](const char *family) {
+    auto names = [](const char *family, const char *mode) {
         QStringList out;
-        for (const dev::ParamMeta *row : SetValueStep::setValueRows(*dictionaries().find(family)))
+        for (const dev::ParamMeta *row :
+             SetValueStep::setValueRows(*dictionaries().find(family), mode))
             out.append(QString::fromStdString(row->name));
         return out;
     };
-    EXPECT_EQ(names("dma-pn-v51"), (QStringList{"A1.01", "A2.01"}));
-    EXPECT_EQ(names("opat"), (QStringList{"A1.01", "A2.01"}));
-    EXPECT_TRUE(names("wandfluh-sd7").isEmpty());
-    EXPECT_TRUE(SetValueStep::activationRow(*dictionaries().find("dma-pb-v32")));
+    EXPECT_EQ(names("dma-pn-v51", "3"), (QStringList{"A1.01", "A2.01"}));
+    EXPECT_EQ(names("opat", "3"), (QStringList{"A1.01", "A2.01"}));
+    EXPECT_EQ(names("dma-pn-v13", "1"), (QStringList{"A1.01"})); // §4.5.2: A1.01 only
+    // HART-7 manual §5.2.8: each control mode's command value.
+    EXPECT_EQ(names("wandfluh-sd7", ""),
+              (QStringList{"vpoc_CommandValue", "vprc_CommandValue", "dcol_CommandValue",
+                           "dsc_CommandValue", "dpc_CommandValue", "npc_CommandValue"}));
+    auto rules = [](const char *family, const char *mode) {
+        QStringList out;
+        for (const dev::SetValueActivation *rule :
+             SetValueStep::activationRules(*dictionaries().find(family), mode))
+            out.append(QString::fromStdString(rule->row) + "=" + QString::number(rule->value));
+        return out;
+    };
+    EXPECT_EQ(rules("dma-pb-v32", "3"), (QStringList{"E17=2"}));
+    // HART-7 manual §4.2.1 bus mode, §5.2.3 "1: Command value from fieldbus".
+    EXPECT_EQ(rules("wandfluh-sd7", ""), (QStringList{"db_Local=0", "db_DeviceMode=1"}));
 }
 
 TEST(SetValueStep, RefusedWhileE17IsNotTwoThenWrittenAfterE17IsSet)

@@ -1,0 +1,43 @@
+// MonitorDefaults: what the live monitor plots when it starts and which rows its set-value step
+// may write, per family and mode, as data in the dictionary ("monitor" key, docs/DICTIONARY.md
+// "Monitor defaults"). The manual quotation that justifies each choice sits beside it in the file.
+// Owner: the Dictionary that holds it; immutable after loading, any thread may read.
+#pragma once
+
+#include "core/local_text.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vt::dev {
+
+// A row whose value must be `value` before a bus set value drives the valve alone (HCS E17 = 2;
+// SD7 db_Local = 0 and db_DeviceMode = 1 "Command value from fieldbus"), and the manual's reason.
+struct SetValueActivation
+{
+    std::string row;
+    double value = 0;
+    LocalText reason; // the manual's words, shown when the step is refused
+};
+
+struct MonitorDefaults
+{
+    std::vector<std::string> channels;          // plotted when monitoring starts, in this order
+    std::vector<std::string> setValues;         // rows the step writes; empty: no step
+    std::vector<SetValueActivation> activation; // checked in this order
+    LocalText noSetValue;                       // why there is no step, when setValues is empty
+};
+
+// The dictionary-level defaults and their per-mode overrides (a mode entry replaces the keys it
+// gives).
+struct MonitorPlan
+{
+    MonitorDefaults all;
+    std::map<std::string, MonitorDefaults> byMode;
+
+    // The defaults for `mode` (a family mode string, "" when unknown).
+    const MonitorDefaults &forMode(const std::string &mode) const;
+};
+
+} // namespace vt::dev
