@@ -108,6 +108,16 @@ TEST_P(Ed1Gui, TheNodeViewShowsTheStateAndAChosenStateIsAskedWrittenAndJournalle
     const auto &changes = window->workspace().actuatorLedger().changes();
     ASSERT_TRUE(waitUntil([&] { return changes.size() == 1u; }));
     EXPECT_EQ(changes.front().row->name, "db_ControlWord");
+    // The actual value (a live value of block dpc) follows in the editor as the axis moves.
+    const dev::ParamMeta *setpoint = doc().module(0).dictionary->find("dpc_SetpointVal");
+    std::optional<model::Outcome> written;
+    window->workspace().connection()->access().write(doc().module(0).address, *setpoint, 512.0,
+                                                     model::Priority::User,
+                                                     [&](const model::Outcome &o) { written = o; });
+    ASSERT_TRUE(waitFor(written));
+    ASSERT_EQ(written->status, model::OutcomeStatus::Ok);
+    ASSERT_TRUE(waitUntil([&] { return shown("dpc_ActualVal") != QStringLiteral("0.000 mm"); }))
+        << shown("dpc_ActualVal").toStdString();
     // Back to INIT, as the put-back on disconnect would offer.
     emit window->nodeView()->controlWordRequested(0, dev::dsp408::kControlInit);
     ASSERT_TRUE(waitUntil([&] { return device().state() == dev::dsp408::State::Init; }));
