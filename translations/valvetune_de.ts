@@ -108,6 +108,25 @@
     </message>
 </context>
 <context>
+    <name>vt::app::DeviceStateControl</name>
+    <message>
+        <source>Module %1 has no DSP-408 control word.</source>
+        <translation>Modul %1 hat kein DSP-408-Steuerwort.</translation>
+    </message>
+    <message>
+        <source>A control word is still being written.</source>
+        <translation>Ein Steuerwort wird noch geschrieben.</translation>
+    </message>
+    <message>
+        <source>Control word %1 written to module %2.</source>
+        <translation>Steuerwort %1 an Modul %2 geschrieben.</translation>
+    </message>
+    <message>
+        <source>Control word %1 not written to module %2: %3</source>
+        <translation>Steuerwort %1 nicht an Modul %2 geschrieben: %3</translation>
+    </message>
+</context>
+<context>
     <name>vt::app::FileController</name>
     <message>
         <source>ValveTune</source>
@@ -1812,6 +1831,10 @@
         <source>Read from the device %1.</source>
         <translation>Vom Gerät gelesen %1.</translation>
     </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::PlcConfig</name>
@@ -2069,6 +2092,10 @@
         <source>warning %1: %2</source>
         <translation>Warnung %1: %2</translation>
     </message>
+    <message>
+        <source>exchange in progress</source>
+        <translation>Austausch läuft</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::SetValueStep</name>
@@ -2112,8 +2139,8 @@
         <translation>der Simulator bedient %1 nicht über „%2“</translation>
     </message>
     <message>
-        <source>%1 cannot be simulated over a PC link yet (DSP-408 needs PROFIBUS or CANopen)</source>
-        <translation>%1 lässt sich über eine PC-Verbindung noch nicht simulieren (DSP-408 braucht PROFIBUS oder CANopen)</translation>
+        <source>%1 is simulated over its PROFIBUS image: dsp408-image or dsp408-gateway</source>
+        <translation>%1 wird über sein PROFIBUS-Abbild simuliert: dsp408-image oder dsp408-gateway</translation>
     </message>
 </context>
 <context>
@@ -2813,6 +2840,73 @@ Senden?</translation>
     <message>
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::Dsp408Fields</name>
+    <message>
+        <source>O&amp;utput image at register:</source>
+        <translation>A&amp;usgangsabbild ab Register:</translation>
+    </message>
+    <message>
+        <source>First register of the ED1&apos;s output image (PKW request and PZD, 7 registers) in the gateway&apos;s map; written with FC 16.</source>
+        <translation>Erstes Register des Ausgangsabbilds der ED1 (PKW-Auftrag und PZD, 7 Register) in der Zuordnung des Gateways; geschrieben mit FC 16.</translation>
+    </message>
+    <message>
+        <source>I&amp;nput image at register:</source>
+        <translation>E&amp;ingangsabbild ab Register:</translation>
+    </message>
+    <message>
+        <source>First register of the ED1&apos;s input image (PKW response and PZD, 7 registers) in the gateway&apos;s map.</source>
+        <translation>Erstes Register des Eingangsabbilds der ED1 (PKW-Antwort und PZD, 7 Register) in der Zuordnung des Gateways.</translation>
+    </message>
+    <message>
+        <source>Input image read &amp;with:</source>
+        <translation>Eingangsabbild lesen &amp;mit:</translation>
+    </message>
+    <message>
+        <source>FC 3 (holding registers)</source>
+        <translation>FC 3 (Holding-Register)</translation>
+    </message>
+    <message>
+        <source>FC 4 (input registers)</source>
+        <translation>FC 4 (Input-Register)</translation>
+    </message>
+    <message>
+        <source>Image &amp;bytes in a register:</source>
+        <translation>Abbild-&amp;Bytes in einem Register:</translation>
+    </message>
+    <message>
+        <source>First byte high (as Modbus)</source>
+        <translation>Erstes Byte oben (wie Modbus)</translation>
+    </message>
+    <message>
+        <source>First byte low (swapped)</source>
+        <translation>Erstes Byte unten (vertauscht)</translation>
+    </message>
+    <message>
+        <source>32-bit PZD &amp;values:</source>
+        <translation>32-Bit-PZD-&amp;Werte:</translation>
+    </message>
+    <message>
+        <source>High word first (the manual&apos;s examples)</source>
+        <translation>High-Wort zuerst (Beispiele des Handbuchs)</translation>
+    </message>
+    <message>
+        <source>Low word first</source>
+        <translation>Low-Wort zuerst</translation>
+    </message>
+    <message>
+        <source>PKW &amp;IND in:</source>
+        <translation>PKW-&amp;IND in:</translation>
+    </message>
+    <message>
+        <source>Byte 2 (the manual&apos;s example)</source>
+        <translation>Byte 2 (Beispiel des Handbuchs)</translation>
+    </message>
+    <message>
+        <source>Byte 3</source>
+        <translation>Byte 3</translation>
     </message>
 </context>
 <context>
@@ -3775,6 +3869,22 @@ Senden?</translation>
         <source>(not read)</source>
         <translation>(nicht gelesen)</translation>
     </message>
+    <message>
+        <source>Device state</source>
+        <translation>Gerätezustand</translation>
+    </message>
+    <message>
+        <source>Device state (db_ControlWord)</source>
+        <translation>Gerätezustand (db_ControlWord)</translation>
+    </message>
+    <message>
+        <source>%1 (control word 0x%2)</source>
+        <translation>%1 (Steuerwort 0x%2)</translation>
+    </message>
+    <message>
+        <source>Reset fault</source>
+        <translation>Fehler quittieren</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::ParameterEditor</name>
@@ -3938,6 +4048,14 @@ Senden?</translation>
         <source>HART</source>
         <translation>HART</translation>
     </message>
+    <message>
+        <source>PROFIBUS image (PKW + PZD, cyclic)</source>
+        <translation>PROFIBUS-Abbild (PKW + PZD, zyklisch)</translation>
+    </message>
+    <message>
+        <source>PROFIBUS gateway (Modbus TCP registers)</source>
+        <translation>PROFIBUS-Gateway (Modbus-TCP-Register)</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::StepControl</name>
@@ -4053,12 +4171,20 @@ Senden?</translation>
         <translation>Modul&amp;adresse:</translation>
     </message>
     <message>
-        <source>Modbus unit / SADR of the module; 0 is the OPAT master</source>
-        <translation>Modbus-Unit / SADR des Moduls; 0 ist der OPAT-Master</translation>
-    </message>
-    <message>
         <source>Pro&amp;duct:</source>
         <translation>Pro&amp;dukt:</translation>
+    </message>
+    <message>
+        <source>Wandfluh ED1: PROFIBUS gateway (Modbus TCP registers)</source>
+        <translation>Wandfluh ED1: PROFIBUS-Gateway (Modbus-TCP-Register)</translation>
+    </message>
+    <message>
+        <source>Wandfluh ED1: PROFIBUS image (PKW + PZD, cyclic)</source>
+        <translation>Wandfluh ED1: PROFIBUS-Abbild (PKW + PZD, zyklisch)</translation>
+    </message>
+    <message>
+        <source>Modbus unit / SADR of the module; 0 is the OPAT master; for the ED1&apos;s gateway its Modbus unit</source>
+        <translation>Modbus-Unit / SADR des Moduls; 0 ist der OPAT-Master; beim Gateway der ED1 dessen Modbus-Unit</translation>
     </message>
 </context>
 <context>

@@ -1,19 +1,27 @@
 #include "connection_options.h"
 
 #include "arg_parse.h"
+#include "dsp408_options.h"
 #include "transports/fault_spec.h"
 #include "transports/tcp_link.h"
+
+#include <utility>
+#include <vector>
 
 namespace vt::cmdline {
 
 const char kConnectionSynopsis[] =
     "connection (one of):\n"
-    "  --sim FAMILY[:MODULES] [--protocol modbus-rtu|modbus-tcp|node-image]\n"
+    "  --sim FAMILY[:MODULES] [--protocol modbus-rtu|modbus-tcp|node-image|dsp408-image|"
+    "dsp408-gateway]\n"
     "  --port PATH [--baud B] [--parity none|even|odd] [--stop 1|2]\n"
-    "  --tcp HOST:PORT [--protocol modbus-tcp|node-image]\n"
+    "  --tcp HOST:PORT [--protocol modbus-tcp|node-image|dsp408-image|dsp408-gateway]\n"
     "  --can IFACE --node N\n"
     "  --hart PATH\n"
-    "and: [--unit ADDRESS] [--fault SPEC] [--product opat|dma-pn|dma-pb|ed1] [--turnaround MS]";
+    "and: [--unit ADDRESS] [--fault SPEC] [--product opat|dma-pn|dma-pb|ed1] [--turnaround MS]\n"
+    "ED1 image (dsp408-image, dsp408-gateway; --unit = the gateway's unit, default 1):\n"
+    "  [--out-register N] [--in-register N] [--in-function 3|4]\n"
+    "  [--register-bytes high-first|low-first] [--pzd-words high-first|low-first] [--ind-byte 2|3]";
 
 namespace {
 
@@ -36,6 +44,9 @@ bool hasConnectionOption(const QStringList &args)
     for (const char *option : kOptions)
         if (args.contains(QLatin1String(option)))
             return true;
+    for (const char *option : kDsp408Options)
+        if (args.contains(QLatin1String(option)))
+            return true;
     return false;
 }
 
@@ -56,6 +67,10 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
     const auto fault = takeOption(args, "--fault", &missing);
     const auto product = takeOption(args, "--product", &missing);
     const auto turnaround = takeOption(args, "--turnaround", &missing);
+    std::vector<std::pair<QString, QString>> dsp408;
+    for (const char *option : kDsp408Options)
+        if (const auto value = takeOption(args, option, &missing))
+            dsp408.emplace_back(QLatin1String(option), *value);
     if (missing)
         return Error("an option is missing its value");
 
@@ -81,9 +96,9 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
         spec.sim = *parsed;
         if (protocol) {
             const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
-            if (p != dev::LinkProtocol::ModbusRtu && p != dev::LinkProtocol::ModbusTcp &&
-                p != dev::LinkProtocol::NodeImage)
-                return Error("--protocol with --sim takes modbus-rtu, modbus-tcp or node-image");
+            if (!p || *p == dev::LinkProtocol::Hart || *p == dev::LinkProtocol::Canopen)
+                return Error("--protocol with --sim takes modbus-rtu, modbus-tcp, node-image, "
+                             "dsp408-image or dsp408-gateway");
             spec.sim.protocol = p;
         }
     } else if (port) {
@@ -119,8 +134,10 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
         spec.port = endpoint->port;
         if (protocol) {
             const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
-            if (p != dev::LinkProtocol::ModbusTcp && p != dev::LinkProtocol::NodeImage)
-                return Error("--protocol with --tcp takes modbus-tcp or node-image");
+            if (p != dev::LinkProtocol::ModbusTcp && p != dev::LinkProtocol::NodeImage &&
+                p != dev::LinkProtocol::Dsp408Image && p != dev::LinkProtocol::Dsp408Gateway)
+                return Error("--protocol with --tcp takes modbus-tcp, node-image, dsp408-image or "
+                             "dsp408-gateway");
             spec.tcpProtocol = *p;
         }
     } else if (can) {
@@ -137,6 +154,14 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
         spec.serial = link::SerialSettings::hart(*hart);
     }
 
+    const bool ed1Image = (tcp && dev::isDsp408Link(spec.tcpProtocol)) ||
+                          (sim && spec.sim.protocol && dev::isDsp408Link(*spec.sim.protocol));
+    if (!dsp408.empty() && !ed1Image)
+        return Error(dsp408.front().first.toStdString() +
+                     " goes with --protocol dsp408-image or dsp408-gateway");
+    for (const auto &[name, value] : dsp408)
+        if (auto why = applyDsp408Option(name, value, spec.dsp408))
+            return Error(*why);
     if (unit) {
         const auto u = parseInteger(*unit, 0, 255);
         if (!u)
@@ -158,8 +183,9 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
             spec.product = dev::HcsProduct::DmaProfibus;
         else if (*product == "ed1" && can)
             spec.canDsp408 = true;
-        else if (*product == "ed1")
-            return Error("--product ed1 goes with --can (the ED1 is reached over CANopen)");
+        else if (*product == "ed1" && !ed1Image)
+            return Error("--product ed1 goes with --can or --protocol dsp408-image / "
+                         "dsp408-gateway");
         else
             return Error("--product takes opat, dma-pn, dma-pb or ed1");
     }

@@ -2,6 +2,7 @@
 
 #include "app_settings.h"
 #include "device_controller.h"
+#include "device_state_control.h"
 #include "dict/dictionary_loader.h"
 #include "file_controller.h"
 #include "language.h"
@@ -220,6 +221,12 @@ void MainWindow::createDocks()
     m_monitorDock = dock("dockMonitor", m_monitor, Qt::BottomDockWidgetArea);
     connect(m_monitor, &ui::MonitorView::statusMessage, this, &MainWindow::showStatus);
     connect(m_device, &DeviceController::written, m_monitor, &ui::MonitorView::journalWrites);
+    // The ED1/SD1's device state machine, from the node view's context menu.
+    auto *state = new DeviceStateControl(*m_workspace, this);
+    connect(m_nodeView, &ui::NodeView::controlWordRequested, state, &DeviceStateControl::request);
+    connect(m_nodeView, &ui::NodeView::resetFaultRequested, state, &DeviceStateControl::resetFault);
+    connect(state, &DeviceStateControl::written, m_monitor, &ui::MonitorView::journalWrites);
+    connect(state, &DeviceStateControl::statusMessage, this, &MainWindow::showStatus);
     // Every frame in and out of the connection (Workspace's TelegramRecorder fills the log).
     m_inspector = new ui::InspectorView(this);
     m_inspector->setLog(&m_workspace->telegramLog());

@@ -61,6 +61,7 @@ public:
     ui::LCurveEditor *curveEditor() const { return m_curveEditor; }
     ui::InspectorView *inspector() const { return m_inspector; }
     ui::MonitorView *monitor() const { return m_monitor; }
+    ui::NodeView *nodeView() const { return m_nodeView; }
     ui::LinkStatusWidget *linkStatus() const { return m_linkStatus; }
 
     // Device ▸ Fold Wizard; with a path, the wizard opens on that saved fold plan (.vtfold).

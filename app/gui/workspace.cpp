@@ -158,8 +158,12 @@ void Workspace::updateLivePoll()
         if (index < 0)
             continue;
         const model::ParamModule &m = m_document.module(index);
+        // The ED1/SD1's live values sit in its function blocks too (dpc_ActualVal,
+        // dpc_CtrlDeviationVal, ED1/SD1 manual §4.8.30, §4.8.31), not only in "db".
+        const bool dsp408 = info.dictionary->protocol == dev::DeviceProtocol::Dsp408;
         for (const dev::ParamMeta *row : model::readableRows(*info.dictionary, m.version, m.mode))
-            if (!row->writable() && (row->block == "d" || row->block == "db"))
+            if (!row->writable() && (row->block == "d" || row->block == "db" ||
+                                     (dsp408 && row->kind == dev::RowKind::Live)))
                 rows.push_back(row);
         if (!rows.empty())
             m_live->setModule(info.address, std::move(rows), m_liveHz);

@@ -346,8 +346,11 @@ void SimHost::onNewConnection()
         const std::string peer = hostPort(socket->peerAddress(), socket->peerPort());
         std::unique_ptr<dev::ByteServer> own = m_device->connectionServer();
         if (!own && !m_clients.empty()) {
-            refuse(socket, peer);
-            continue;
+            if (m_options.protocol != dev::LinkProtocol::Dsp408Image) {
+                refuse(socket, peer);
+                continue;
+            }
+            takeOver(peer);
         }
         if (!own)
             m_device->reset(); // the node image's new master: fresh images, the next answered
@@ -382,6 +385,18 @@ void SimHost::refuse(QTcpSocket *socket, const std::string &peer)
          std::to_string(m_clients.front()->number) + ", its one master");
     connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
     socket->disconnectFromHost();
+}
+
+void SimHost::takeOver(const std::string &peer)
+{
+    for (const auto &client : m_clients) {
+        note("dsp408-image: " + peer + " is the image's master now; client " +
+             std::to_string(client->number) + " closed");
+        client->socket->disconnect(this);
+        connect(client->socket, &QTcpSocket::disconnected, client->socket, &QObject::deleteLater);
+        client->socket->disconnectFromHost();
+    }
+    m_clients.clear();
 }
 
 SimHost::TcpClient *SimHost::clientOf(const QTcpSocket *socket)

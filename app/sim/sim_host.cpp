@@ -49,6 +49,8 @@ dev::Result<QString, HostError> SimHost::start()
     spec.mode = m_options.mode;
     spec.protocol = m_options.protocol;
     spec.canNode = m_options.node;
+    spec.dsp408 = m_options.dsp408;
+    spec.gatewayUnit = m_options.gatewayUnit;
     auto device = dev::sim::SimDevice::build(m_clock, *dictionaries, spec);
     if (!device.ok())
         return HostError{device.error().code == dev::sim::SimBuildErrc::UnknownFamily

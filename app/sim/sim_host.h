@@ -4,6 +4,8 @@
 // --fault schedule and logs frames with -v. Over Modbus TCP any number of clients at once, as a
 // gateway serves them: one node, and per connection its own de-framer, answers and fault
 // schedule. The node image has one master; a second client is refused while it is connected.
+// The ED1's raw PROFIBUS image has one master too, the newest connection (a tool reconnecting
+// must not be locked out by its own half-closed connection).
 // The endpoints and their I/O are in sim_endpoints.cpp.
 // Owner: main(); lives on the main thread with the event loop.
 #pragma once
@@ -78,6 +80,8 @@ private:
     };
     void onNewConnection();
     void refuse(QTcpSocket *socket, const std::string &peer);
+    // The ED1's raw image: the newest connection becomes its master, the older ones are closed.
+    void takeOver(const std::string &peer);
     void onClientReadyRead(QTcpSocket *socket);
     void onClientGone(QTcpSocket *socket);
     TcpClient *clientOf(const QTcpSocket *socket);

@@ -3,6 +3,7 @@
 #include "sim_options.h"
 
 #include "app/cli/exit_codes.h"
+#include "app/cmdline/dsp408_options.h"
 #include "dict/dictionary_loader.h"
 #include "sim/hcs_module.h"
 #include "sim/node_config.h"
@@ -77,13 +78,18 @@ std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOpti
     const std::string oneDevice =
         "--mode and --modules apply to HCS families; " + o.family + " is one device";
     if (dict.protocol == dev::DeviceProtocol::Dsp408) {
-        // The ED1's CiA 408 objects (ARCHITECTURE.md "CAN") are its only PC-reachable face.
-        if (!can)
-            return o.family + " talks PROFIBUS DP (DSP-408 profile), which a PC cannot serve; "
-                              "valvetune-sim serves its CiA 408 objects on --can IFACE";
-        if (protocolGiven && o.protocol != LinkProtocol::Canopen)
-            return o.family + " is served over CANopen only (--protocol canopen)";
-        o.protocol = LinkProtocol::Canopen;
+        // ARCHITECTURE.md "Wandfluh ED1/SD1 online": its PROFIBUS image over TCP (raw or behind
+        // a gateway's Modbus TCP registers), or its CiA 408 objects on CAN.
+        if (!can && !tcp)
+            return o.family + " talks PROFIBUS DP (DSP-408 profile): serve its image on --tcp "
+                              "(--protocol dsp408-image or dsp408-gateway) or its CiA 408 "
+                              "objects on --can IFACE";
+        if (!protocolGiven)
+            o.protocol = can ? LinkProtocol::Canopen : LinkProtocol::Dsp408Image;
+        if (can && o.protocol != LinkProtocol::Canopen)
+            return o.family + " on a CAN bus is served over CANopen only (--protocol canopen)";
+        if (tcp && !dev::isDsp408Link(o.protocol))
+            return o.family + " over TCP is served as dsp408-image or dsp408-gateway";
         if (modeGiven || modulesGiven)
             return oneDevice;
         return std::nullopt;
@@ -127,6 +133,12 @@ std::optional<std::string> checkCombination(const dev::Dictionary &dict, SimOpti
         if (!tcp)
             return std::string(dev::key(o.protocol)) + " needs --tcp HOST:PORT";
         break;
+    case LinkProtocol::Dsp408Image:
+    case LinkProtocol::Dsp408Gateway:
+        return std::string(dev::key(o.protocol)) +
+               " carries the Wandfluh ED1 (--device "
+               "wandfluh-ed1), not " +
+               o.family;
     }
     if (o.protocol == LinkProtocol::NodeImage &&
         dev::sim::hcsFamilyOf(dict) == dev::hcs::Family::Dma && o.modules > kDmaImageModules)
@@ -183,8 +195,19 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
                                   QStringLiteral("N"));
     const QCommandLineOption protocol(
         QStringLiteral("protocol"),
-        QStringLiteral("modbus-rtu | modbus-tcp | node-image | hart | canopen."),
+        QStringLiteral("modbus-rtu | modbus-tcp | node-image | hart | canopen | dsp408-image | "
+                       "dsp408-gateway."),
         QStringLiteral("P"));
+    const QCommandLineOption unit(
+        QStringLiteral("unit"),
+        QStringLiteral("dsp408-gateway: the gateway's Modbus unit id (default 1)."),
+        QStringLiteral("N"));
+    QList<QCommandLineOption> dsp408;
+    for (const char *name : cmdline::kDsp408Options)
+        dsp408.append(
+            QCommandLineOption(QString::fromLatin1(name).mid(2),
+                               QStringLiteral("ED1 image over TCP (docs/SIMULATOR-WANDFLUH.md)."),
+                               QStringLiteral("V")));
     const QCommandLineOption fault(
         QStringLiteral("fault"),
         QStringLiteral("Faults on the answers: drop=P,corrupt=P,delay=MS,cut=N,seed=S."),
@@ -200,8 +223,9 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
                                     QStringLiteral("P"));
     const QCommandLineOption verbose(QStringList{QStringLiteral("v"), QStringLiteral("verbose")},
                                      QStringLiteral("Log every frame in and out on stderr."));
-    p.addOptions({device, mode, modules, pty, serial, tcp, can, canFd, node, protocol, fault, seed,
-                  baud, parity, verbose});
+    p.addOptions({device, mode, modules, pty, serial, tcp, can, canFd, node, protocol, unit, fault,
+                  seed, baud, parity, verbose});
+    p.addOptions(dsp408);
     const QCommandLineOption help = p.addHelpOption();
     // Not addVersionOption(): its -v would clash with --verbose.
     const QCommandLineOption version(QStringLiteral("version"), QStringLiteral("Program version."));
@@ -266,7 +290,8 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
         const auto parsed = dev::fromKey<dev::LinkProtocol>(name.toStdString());
         if (!parsed)
             return usage("unknown protocol '" + name.toStdString() +
-                         "' (modbus-rtu, modbus-tcp, node-image, hart, canopen)");
+                         "' (modbus-rtu, modbus-tcp, node-image, hart, canopen, dsp408-image, "
+                         "dsp408-gateway)");
         o.protocol = *parsed;
     }
     if (p.isSet(mode)) {
@@ -294,6 +319,25 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
     }
     if (auto why = checkCombination(*dict, o, protocolGiven, p.isSet(mode), p.isSet(modules)))
         return usage(*why);
+    const bool ed1Image = dev::isDsp408Link(o.protocol);
+    for (const QCommandLineOption &option : dsp408) {
+        if (!p.isSet(option))
+            continue;
+        const QString name = QStringLiteral("--") + option.names().first();
+        if (!ed1Image)
+            return usage(name.toStdString() + " goes with --protocol dsp408-image or "
+                                              "dsp408-gateway");
+        if (auto why = cmdline::applyDsp408Option(name, p.value(option), o.dsp408))
+            return usage(*why);
+    }
+    if (p.isSet(unit)) {
+        if (o.protocol != LinkProtocol::Dsp408Gateway)
+            return usage("--unit is the Modbus unit of --protocol dsp408-gateway");
+        const uint n = p.value(unit).toUInt(&ok);
+        if (!ok || n > 255)
+            return usage("--unit '" + p.value(unit).toStdString() + "': expected 0..255");
+        o.gatewayUnit = static_cast<std::uint8_t>(n);
+    }
 
     if (o.isHart()) {
         o.baud = 1200; // ARCHITECTURE.md "HART": 1200 baud 8O1 through a HART modem

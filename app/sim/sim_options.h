@@ -4,6 +4,7 @@
 // A plain value; the parser needs a QCoreApplication for QCommandLineParser's help text only.
 #pragma once
 
+#include "access/dsp408_adapter.h"
 #include "core/link_protocol.h"
 #include "core/result.h"
 #include "transports/fault_spec.h"
@@ -37,6 +38,10 @@ struct SimOptions
     link::FaultSpec fault;                    // applied to the device's answers (FaultSpec::rx)
     std::uint32_t seed = link::FaultSpec::kDefaultSeed; // --seed, else the spec's seed
     bool verbose = false;
+    // The ED1's image over TCP: layout, gateway registers (app/cmdline/dsp408_options.h) and the
+    // gateway's Modbus unit (--unit, default 1).
+    dev::access::Dsp408LinkOptions dsp408;
+    std::uint8_t gatewayUnit = 1;
 
     bool isHart() const { return protocol == dev::LinkProtocol::Hart; }
     bool isCan() const { return endpoint == Endpoint::Can || endpoint == Endpoint::CanFd; }

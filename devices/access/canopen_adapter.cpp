@@ -64,7 +64,7 @@ std::vector<Transaction> CanopenAdapter::planRead(int module,
 std::vector<Transaction> CanopenAdapter::planIdentify(int module) const
 {
     if (m_profile == CanopenProfile::Dsp408)
-        return {Transaction::identify(module)};
+        return {Transaction::identify(module, 0), Transaction::identify(module, 1)};
     return planHcsIdentify(module);
 }
 
@@ -72,7 +72,7 @@ std::optional<CanopenAdapter::Access> CanopenAdapter::accessOf(const Transaction
 {
     if (t.kind == TransactionKind::Identify) {
         if (m_profile == CanopenProfile::Dsp408)
-            return Access{CanObject{kDeviceTypeObject, 0}, 4};
+            return Access{CanObject{t.step == 0 ? kDeviceTypeObject : kCapabilityObject, 0}, 4};
         return Access{
             CanObject{static_cast<std::uint16_t>(kHcsBase + (t.step == 0 ? kVersId : kModeId)), 0},
             kHcsWordBytes};
@@ -147,6 +147,13 @@ Reply CanopenAdapter::sdoReply(const canopen::Sdo &sdo, const Transaction &t) co
     if (!access || sdo.index != access->object.index || sdo.subindex != access->object.sub)
         return mismatch();
     Reply reply;
+    if (sdo.command == canopen::SdoCommand::Abort && t.kind == TransactionKind::Identify &&
+        m_profile == CanopenProfile::Dsp408 && t.step == 1) {
+        // No capability object: the device type alone identifies (identifyDsp408 says so).
+        reply.identity.text =
+            "no capability object 0x605F (abort " + std::to_string(sdo.abortCode) + ")";
+        return reply;
+    }
     if (sdo.command == canopen::SdoCommand::Abort) {
         reply.status = ReplyStatus::DeviceException;
         reply.exceptionCode = static_cast<int>(sdo.abortCode);
@@ -186,9 +193,12 @@ Reply CanopenAdapter::sdoReply(const canopen::Sdo &sdo, const Transaction &t) co
     const double value = valueFromBits(t, bits);
     reply.values.emplace_back(value);
     if (t.kind == TransactionKind::Identify) {
-        if (m_profile == CanopenProfile::Dsp408) {
+        if (m_profile == CanopenProfile::Dsp408 && t.step == 0) {
+            reply.identity.deviceProfile = static_cast<std::uint16_t>(bits & 0xFFFFu);
             reply.identity.text = "CiA 301 device type " + std::to_string(bits) + ", profile " +
                                   std::to_string(bits & 0xFFFFu);
+        } else if (m_profile == CanopenProfile::Dsp408) {
+            reply.identity.capability = bits;
         } else {
             (t.step == 0 ? reply.identity.versRaw : reply.identity.mode) = static_cast<int>(bits);
         }

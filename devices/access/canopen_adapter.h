@@ -32,6 +32,9 @@ class CanopenAdapter : public ProtocolAdapter
 public:
     static constexpr std::uint16_t kHcsBase = 0x2000;
     static constexpr std::uint16_t kDeviceTypeObject = 0x1000; // CiA 301 §7.5.2.1
+    // CiA 408's device capability object, where DSP-408's db_Capability lives on CANopen
+    // (an assumption the dictionary does not make: docs/protocol-notes/ed1-online.md).
+    static constexpr std::uint16_t kCapabilityObject = 0x605F;
 
     explicit CanopenAdapter(CanopenProfile profile) : m_profile(profile) {}
 
@@ -40,9 +43,11 @@ public:
     // One upload per readable row with an object; rows without one are left out.
     std::vector<Transaction> planRead(int module,
                                       std::span<const ParamMeta *const> rows) const override;
-    // HCS: step 0 uploads 0x2000 (Vers, ID 0), step 1 0x2000 + 95 (E00). DSP-408: one upload of
-    // 0x1000 "device type" (CiA 301: profile number in bits 15..0, 408); its value is in
-    // Reply::values and Identity::text (the ED1's db_Capability has no object to upload).
+    // HCS: step 0 uploads 0x2000 (Vers, ID 0), step 1 0x2000 + 95 (E00). DSP-408: step 0 uploads
+    // 0x1000 "device type" (CiA 301: profile number in bits 15..0, 408 → Identity::deviceProfile);
+    // step 1 the capability object (kCapabilityObject, → Identity::capability). The ED1/SD1
+    // manual names db_Capability (§4.8.7) but no CANopen object for it: a device without the
+    // object aborts, and that step then answers Ok without a capability.
     std::vector<Transaction> planIdentify(int module) const override;
 
     // One 16-byte image. Empty for a node outside 1..127, a row without object, a text value or

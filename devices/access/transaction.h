@@ -57,6 +57,10 @@ enum class ReplyStatus {
     Ok, // values hold one entry per row (Read), the echoed value (Write), identity (Identify)
     DeviceException, // the device refused: code + text
     Mismatch, // a well-formed frame that does not answer this request (other unit, other ID…)
+    // A frame that belongs to this exchange but does not end it: a cyclic link's image that does
+    // not show the answer yet, a gateway's write confirmation. The session sends Reply::next —
+    // at once, or after one bus cycle when Reply::nextAfterCycle — within the same attempt.
+    Progress,
 };
 
 struct Identity
@@ -66,7 +70,8 @@ struct Identity
     std::uint16_t manufacturer = 0;       // HART command 0
     std::uint16_t expandedDeviceType = 0; // HART command 0
     std::uint32_t deviceId = 0;           // HART command 0
-    std::uint32_t capability = 0;         // DSP-408
+    std::uint32_t capability = 0;         // DSP-408 db_Capability (ED1/SD1 manual §4.8.7)
+    std::uint16_t deviceProfile = 0;      // CANopen 0x1000 bits 15..0 (CiA 301): 408 = DSP-408
     std::string text;                     // free text for people ("HART rev 7, device id 0x000123")
 };
 
@@ -78,6 +83,9 @@ struct Reply
     int exceptionCode = 0;
     LocalText exceptionText;
     Bytes frame; // the reply as it came off the wire
+    // Progress: the bytes to send next, and whether to wait a bus cycle before sending them.
+    Bytes next;
+    bool nextAfterCycle = false;
 };
 
 // For feed(): several frames may arrive in one chunk. Keeps the first reply that answers the

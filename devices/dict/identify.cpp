@@ -80,6 +80,18 @@ Result<Identification, LocalText> identifyDsp408(const DictionarySet &set, std::
     if (!set.find("wandfluh-ed1"))
         return LocalText{"the ED1/SD1 dictionary is missing", "das ED1/SD1-Wörterbuch fehlt"};
     Identification id{"wandfluh-ed1", {}, {}, true, {}};
+    if (capability == 0) {
+        // CANopen without a capability object: device type 408 (CiA 301 0x1000) alone.
+        id.version = "capability 0x00130000 (manual; not reported)";
+        id.exact = false;
+        id.warning = {"the device reports profile 408 but no capability; using wandfluh-ed1, "
+                      "whose manual gives 0x00130000 (hydraulic drive, open loop movement and "
+                      "position control)",
+                      "das Gerät meldet Profil 408, aber keine Fähigkeiten; verwendet wird "
+                      "wandfluh-ed1, dessen Handbuch 0x00130000 nennt (hydraulischer Antrieb, "
+                      "gesteuerter Betrieb und Lageregelung)"};
+        return id;
+    }
     char hex[16];
     std::snprintf(hex, sizeof hex, "0x%08X", capability);
     id.version = std::string("capability ") + hex;

@@ -30,6 +30,8 @@ Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int vers
                                               HcsProduct product);
 
 // ED1/SD1 manual §4.8.7: 0x00130000 = hydraulic drive, open loop movement and position control.
+// `capability` 0: not reported (CANopen device type 408 without a capability object) — the
+// manual's value is named, with a warning.
 Result<Identification, LocalText> identifyDsp408(const DictionarySet &set,
                                                  std::uint32_t capability);
 

@@ -113,4 +113,14 @@ std::uint16_t statusBits(State state)
     return 0;
 }
 
+std::optional<State> stateOfStatusWord(std::uint16_t statusWord)
+{
+    for (State state :
+         {State::NotReady, State::Init, State::Disabled, State::Hold, State::DeviceModeActive,
+          State::FaultReaction, State::FaultHold, State::Fault})
+        if (statusBits(state) == (statusWord & 0x0Fu))
+            return state;
+    return std::nullopt;
+}
+
 } // namespace vt::dev::dsp408

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace vt::dev::dsp408 {
@@ -86,6 +87,16 @@ Settled settle(State current, std::uint16_t controlWord, std::uint16_t previousC
 // DISABLED 1001, HOLD 1011, DEVICE_MODE_ACTIVE 1111, FAULT_HOLD 0011, FAULTREACTION 0111,
 // FAULT 0001, NOT_READY 0000.
 std::uint16_t statusBits(State state);
+// The state a status word reports (its bits R M H D, as statusBits() gives them); nullopt for a
+// pattern no state has. Bits 4.. (local, warning, target window) do not matter.
+std::optional<State> stateOfStatusWord(std::uint16_t statusWord);
+
+// ED1/SD1 manual §4.2.2 transition table / §4.8.2: the control word that leads to a state from
+// its neighbour (D, H, M; "reset fault" is the separate edge kResetFault).
+inline constexpr std::uint16_t kControlInit = 0x0000;
+inline constexpr std::uint16_t kControlDisabled = 0x0001;
+inline constexpr std::uint16_t kControlHold = 0x0003;
+inline constexpr std::uint16_t kControlActive = 0x0007;
 
 // Texts (texts.cpp).
 const char *stateName(State state); // "DEVICE_MODE_ACTIVE"

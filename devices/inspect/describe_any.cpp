@@ -3,6 +3,7 @@
 #include "canopen/sdo.h"
 #include "core/key_lookup.h"
 #include "dict/cooking.h"
+#include "dsp408/gateway.h"
 #include "dsp408/pkw.h"
 #include "dsp408/pzd.h"
 #include "hart/describe.h"
@@ -25,6 +26,7 @@ const char *key(FrameFormat format)
     case FrameFormat::Pzd: return "pzd";
     case FrameFormat::Hart: return "hart";
     case FrameFormat::Canopen: return "canopen";
+    case FrameFormat::Dsp408Gateway: return "dsp408-gateway";
     }
     return "?";
 }
@@ -42,6 +44,8 @@ FrameFormat frameFormatOf(LinkProtocol protocol)
     case LinkProtocol::NodeImage: return FrameFormat::Gateway;
     case LinkProtocol::Hart: return FrameFormat::Hart;
     case LinkProtocol::Canopen: return FrameFormat::Canopen;
+    case LinkProtocol::Dsp408Image: return FrameFormat::Pzd; // telegram type 1: PKW + PZD
+    case LinkProtocol::Dsp408Gateway: return FrameFormat::Dsp408Gateway;
     }
     return FrameFormat::Gateway;
 }
@@ -85,6 +89,11 @@ Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes
         o.cobId = options.cobId;
         o.direction = options.direction;
         return canopen::describeSdo(bytes, o);
+    }
+    case FrameFormat::Dsp408Gateway: {
+        dsp408::Options o;
+        o.direction = options.direction;
+        return dsp408::describeGatewayAdu(bytes, o);
     }
     }
     return std::string("unknown protocol");

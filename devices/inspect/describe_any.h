@@ -23,13 +23,26 @@ namespace vt::dev {
 
 // The frame layouts describeAny explains: finer than LinkProtocol (a PKW or PZD telegram, a
 // PROFIdrive telegram, a bare gateway telegram travel over links ValveTune does not drive).
-enum class FrameFormat { Gateway, ModbusRtu, ModbusTcp, Profidrive, Pkw, Pzd, Hart, Canopen };
+// Dsp408Gateway: a Modbus TCP ADU of a PROFIBUS-master gateway carrying the ED1's image.
+enum class FrameFormat {
+    Gateway,
+    ModbusRtu,
+    ModbusTcp,
+    Profidrive,
+    Pkw,
+    Pzd,
+    Hart,
+    Canopen,
+    Dsp408Gateway
+};
 
 inline constexpr std::array kFrameFormats{
-    FrameFormat::Gateway, FrameFormat::ModbusRtu, FrameFormat::ModbusTcp, FrameFormat::Profidrive,
-    FrameFormat::Pkw,     FrameFormat::Pzd,       FrameFormat::Hart,      FrameFormat::Canopen};
+    FrameFormat::Gateway,    FrameFormat::ModbusRtu, FrameFormat::ModbusTcp,
+    FrameFormat::Profidrive, FrameFormat::Pkw,       FrameFormat::Pzd,
+    FrameFormat::Hart,       FrameFormat::Canopen,   FrameFormat::Dsp408Gateway};
 
-// "gateway", "modbus-rtu", "modbus-tcp", "profidrive", "pkw", "pzd", "hart", "canopen".
+// "gateway", "modbus-rtu", "modbus-tcp", "profidrive", "pkw", "pzd", "hart", "canopen",
+// "dsp408-gateway".
 const char *key(FrameFormat format);
 template<> std::optional<FrameFormat> fromKey<FrameFormat>(std::string_view key);
 

@@ -3,9 +3,13 @@
 #include "access/canopen_adapter.h"
 #include "canopen/can_frame.h"
 #include "canopen/sdo.h"
+#include "dsp408/gateway.h"
+#include "dsp408/pkw.h"
+#include "dsp408/pzd.h"
 #include "hart/device_specific.h"
 #include "hart/frame.h"
 #include "hcs/telegram.h"
+#include "modbus/register_image.h"
 #include "modbus/rtu.h"
 #include "modbus/tcp.h"
 
@@ -27,6 +31,29 @@ void fromModbusPdu(CarriedParameters &out, const modbus::RequestPdu &pdu)
         addRange(out, r->start, r->count);
     else if (const auto *w = std::get_if<modbus::WriteRequest>(&pdu))
         out.ids.push_back(w->address);
+}
+
+void fromPkw(CarriedParameters &out, std::span<const std::uint8_t> pkwBytes)
+{
+    const auto pkw = dsp408::decodePkw(pkwBytes, dsp408::Options{});
+    if (pkw && pkw->ak != static_cast<std::uint8_t>(dsp408::RequestId::None))
+        out.indPnu = CarriedParameters::IndPnu{pkw->ind, pkw->pnu, 0};
+}
+
+// A gateway write of the PKW words (4 registers) or the whole output image (7).
+void fromGatewayAdu(CarriedParameters &out, std::span<const std::uint8_t> adu)
+{
+    const auto cut = modbus::cutAdu(adu);
+    if (!cut.ok() || !*cut)
+        return;
+    const auto request = modbus::decodeRegisterRequest((*cut)->pdu);
+    const auto *write = request ? std::get_if<modbus::RegisterWrite>(&*request) : nullptr;
+    if (!write || (write->values.size() != dsp408::kPkwRegisters &&
+                   write->values.size() != dsp408::kImageRegisters))
+        return;
+    const Bytes bytes =
+        dsp408::fromRegisters(write->values, dsp408::RegisterByteOrder::FirstByteHigh);
+    fromPkw(out, std::span<const std::uint8_t>(bytes).first(dsp408::kPkwSize));
 }
 
 void fromSdo(CarriedParameters &out, std::span<const std::uint8_t> data)
@@ -73,6 +100,11 @@ CarriedParameters carriedBy(LinkProtocol link, std::span<const std::uint8_t> byt
                 CarriedParameters::IndPnu{access->ref.ind, access->ref.pnu, access->ref.instance};
         break;
     }
+    case LinkProtocol::Dsp408Image:
+        if (bytes.size() == dsp408::kTelegram1Size)
+            fromPkw(out, bytes.first(dsp408::kPkwSize));
+        break;
+    case LinkProtocol::Dsp408Gateway: fromGatewayAdu(out, bytes); break;
     case LinkProtocol::Canopen:
         if (bytes.size() == canopen::kSocketCanFrameSize) {
             const auto frame = canopen::fromSocketCan(bytes);

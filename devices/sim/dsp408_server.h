@@ -28,6 +28,8 @@ public:
     std::vector<std::uint8_t> drain() override;
 
     std::size_t imageSize() const;
+    // A new master: a partial image of the previous one is dropped.
+    void reset() { m_in.clear(); }
     std::size_t exchanges() const { return m_exchanges; }
 
 private:

@@ -4,6 +4,8 @@
 #include "sim/canopen_dsp408_objects.h"
 #include "sim/canopen_sdo_server.h"
 #include "sim/dsp408_device.h"
+#include "sim/dsp408_gateway_server.h"
+#include "sim/dsp408_server.h"
 #include "sim/hart_device.h"
 #include "sim/hart_server.h"
 #include "sim/hcs_module_objects.h"
@@ -31,7 +33,7 @@ LinkProtocol defaultSimProtocol(const Dictionary &dictionary, std::size_t module
 {
     switch (dictionary.protocol) {
     case DeviceProtocol::Hart: return LinkProtocol::Hart;
-    case DeviceProtocol::Dsp408: return LinkProtocol::Canopen;
+    case DeviceProtocol::Dsp408: return LinkProtocol::Dsp408Image;
     case DeviceProtocol::Hcs: break;
     }
     return modules == 1 ? LinkProtocol::ModbusRtu : LinkProtocol::ModbusTcp;
@@ -45,6 +47,7 @@ SimDevice::~SimDevice()
 {
     m_server.reset(); // the front ends refer to the devices
     m_objects.reset();
+    m_gateway.reset();
     if (m_hart)
         m_clock.detach(*m_hart);
     if (m_ed1)
@@ -83,17 +86,32 @@ std::optional<SimBuildError> SimDevice::buildHart(const Dictionary &dict)
     return std::nullopt;
 }
 
-// ED1/SD1 over CAN: the CiA 408 objects of the dictionary's `canopen` fields, served through
-// the same Dsp408Device the PKW/PZD telegrams would reach.
+// ED1/SD1: its PROFIBUS image raw (Dsp408Server) or behind a gateway's Modbus TCP registers,
+// or over CAN the CiA 408 objects of the dictionary's `canopen` fields — one Dsp408Device
+// behind each.
 std::optional<SimBuildError> SimDevice::buildEd1(const Dictionary &dict)
 {
-    if (protocol() != LinkProtocol::Canopen)
+    const LinkProtocol p = protocol();
+    if (p != LinkProtocol::Canopen && !isDsp408Link(p))
         return SimBuildError{SimBuildErrc::NotServed,
-                             m_spec.family + " is served over CANopen only"};
+                             m_spec.family +
+                                 " is served over dsp408-image, dsp408-gateway or canopen"};
     m_ed1 = std::make_unique<Dsp408Device>(dict);
     m_clock.attach(*m_ed1);
-    m_objects = std::make_unique<Dsp408Objects>(*m_ed1);
-    m_server = std::make_unique<CanopenSdoServer>(*m_objects, m_spec.canNode);
+    if (p == LinkProtocol::Dsp408Image) {
+        auto server = std::make_unique<Dsp408Server>(*m_ed1, m_spec.dsp408.layout);
+        m_imageServer = server.get();
+        m_server = std::move(server);
+    } else if (p == LinkProtocol::Dsp408Gateway) {
+        m_gateway = std::make_unique<Dsp408GatewayImage>(*m_ed1, m_spec.dsp408.layout,
+                                                         m_spec.dsp408.gateway, m_spec.gatewayUnit);
+        auto server = std::make_unique<Dsp408GatewayServer>(*m_gateway);
+        m_gatewayServer = server.get();
+        m_server = std::move(server);
+    } else {
+        m_objects = std::make_unique<Dsp408Objects>(*m_ed1);
+        m_server = std::make_unique<CanopenSdoServer>(*m_objects, m_spec.canNode);
+    }
     return std::nullopt;
 }
 
@@ -136,6 +154,10 @@ std::optional<SimBuildError> SimDevice::buildHcs(const DictionarySet &dictionari
         m_server = std::make_unique<CanopenSdoServer>(*m_objects, m_spec.canNode);
         break;
     case LinkProtocol::Hart: break; // refused above
+    case LinkProtocol::Dsp408Image:
+    case LinkProtocol::Dsp408Gateway:
+        return SimBuildError{SimBuildErrc::NotServed,
+                             std::string(key(protocol())) + " is the Wandfluh ED1's link"};
     }
     return std::nullopt;
 }
@@ -155,6 +177,10 @@ int SimDevice::moduleAddress(std::size_t index) const
         return 0; // HART poll address 0 (point-to-point)
     if (protocol() == LinkProtocol::Canopen)
         return m_spec.canNode;
+    if (protocol() == LinkProtocol::Dsp408Gateway)
+        return m_spec.gatewayUnit;
+    if (protocol() == LinkProtocol::Dsp408Image)
+        return 1; // one slave behind the image; the address is not on the wire
     if (const auto unit = pointToPointUnit(protocol(), moduleCount()))
         return *unit;
     return m_node->module(index).address();
@@ -170,6 +196,8 @@ void SimDevice::gap()
 
 std::unique_ptr<ByteServer> SimDevice::connectionServer()
 {
+    if (m_gateway)
+        return std::make_unique<Dsp408GatewayServer>(*m_gateway);
     if (protocol() != LinkProtocol::ModbusTcp || !m_node)
         return nullptr;
     return std::make_unique<ModbusTcpServer>(m_clock, *m_node);
@@ -181,6 +209,10 @@ void SimDevice::reset()
         m_mbtcp->reset();
     if (m_image)
         m_image->reset();
+    if (m_gatewayServer)
+        m_gatewayServer->reset();
+    if (m_imageServer)
+        m_imageServer->reset();
 }
 
 } // namespace vt::dev::sim

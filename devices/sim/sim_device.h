@@ -6,6 +6,7 @@
 // Owner: whoever builds it; single-threaded. The clock and the dictionaries must outlive it.
 #pragma once
 
+#include "access/dsp408_adapter.h"
 #include "core/byte_server.h"
 #include "core/link_protocol.h"
 #include "core/result.h"
@@ -24,6 +25,9 @@ class DictionarySet;
 namespace vt::dev::sim {
 
 class Dsp408Device;
+class Dsp408GatewayImage;
+class Dsp408GatewayServer;
+class Dsp408Server;
 class HartDevice;
 class HartServer;
 class HcsNode;
@@ -40,12 +44,17 @@ struct SimDeviceSpec
     int mode = 0;            // HCS: E00 of every module; 0: the family's first mode
     std::optional<LinkProtocol> protocol; // nullopt: defaultSimProtocol
     std::uint8_t canNode = 1;             // CANopen node id (SDO 0x600 + node / 0x580 + node)
+    // ED1 over its PROFIBUS image (Dsp408Image, Dsp408Gateway): image layout, gateway registers,
+    // the gateway's Modbus unit.
+    access::Dsp408LinkOptions dsp408;
+    std::uint8_t gatewayUnit = 1;
 };
 
 // The link protocol a family is served over when none is asked for: HART for a HART device,
-// CANopen for a DSP-408 one; one HCS module on a point-to-point Modbus RTU line, a node of
-// several behind Modbus TCP — its gateway, where every module is a unit; on an RTU line the
-// OPAT master (SADR 0) would be unit 0, the broadcast address no device answers.
+// the raw PROFIBUS image for a DSP-408 one (ARCHITECTURE.md "Wandfluh ED1/SD1 online"); one HCS
+// module on a point-to-point Modbus RTU line, a node of several behind Modbus TCP — its gateway,
+// where every module is a unit; on an RTU line the OPAT master (SADR 0) would be unit 0, the
+// broadcast address no device answers.
 LinkProtocol defaultSimProtocol(const Dictionary &dictionary, std::size_t modules);
 
 enum class SimBuildErrc {
@@ -75,6 +84,7 @@ public:
     ByteServer &server() { return *m_server; }
     HcsNode *node() const { return m_node.get(); } // HCS families
     HartDevice *hart() const { return m_hart.get(); }
+    Dsp408Device *ed1() const { return m_ed1.get(); }
 
     std::size_t moduleCount() const;
     // The address a master uses for module `index`: the Modbus unit (1 for the only module of a
@@ -90,8 +100,9 @@ public:
     // Modbus TCP: one more front end on the same node, for one more client connection. A gateway
     // serves several connections at once and answers each request on the connection it came in
     // on, with that request's transaction id (Modbus Messaging on TCP/IP Implementation Guide
-    // V1.0b §3.1.3, §4.2.1); each connection de-frames its own stream. nullptr for every other
-    // protocol: a line has one peer, the node image one master (docs/SIMULATOR.md).
+    // V1.0b §3.1.3, §4.2.1); each connection de-frames its own stream. The ED1's gateway
+    // likewise (every connection reaches the one image). nullptr for every other protocol: a
+    // line has one peer, the node image and the ED1's raw image one master (docs/SIMULATOR.md).
     std::unique_ptr<ByteServer> connectionServer();
 
 private:
@@ -105,13 +116,16 @@ private:
     std::unique_ptr<HcsNode> m_node;
     std::unique_ptr<HartDevice> m_hart;
     std::unique_ptr<Dsp408Device> m_ed1;
-    std::unique_ptr<ObjectDictionary> m_objects; // CANopen: the served objects
-    std::unique_ptr<ByteServer> m_server;        // declared last: destroyed first
+    std::unique_ptr<ObjectDictionary> m_objects;   // CANopen: the served objects
+    std::unique_ptr<Dsp408GatewayImage> m_gateway; // Dsp408Gateway: the gateway's registers
+    std::unique_ptr<ByteServer> m_server;          // declared last: destroyed first
     // The concrete front end behind m_server, for gap / reset (at most one is set).
     ModbusRtuServer *m_rtu = nullptr;
     ModbusTcpServer *m_mbtcp = nullptr;
     NodeImageServer *m_image = nullptr;
     HartServer *m_hartServer = nullptr;
+    Dsp408GatewayServer *m_gatewayServer = nullptr;
+    Dsp408Server *m_imageServer = nullptr;
 };
 
 } // namespace vt::dev::sim

@@ -2,6 +2,7 @@
 
 #include "block_titles.h"
 #include "dict/cooking.h"
+#include "dsp408/state_machine.h"
 #include "model/number_text.h"
 
 #include <QBrush>
@@ -56,9 +57,20 @@ QString stateWordText(const ParameterDocument &document, int moduleIndex)
     for (const dev::ParamMeta &row : module.dictionary->params) {
         if (!isBitField(row) || (row.block != "d" && row.block != "db") || !row.readable())
             continue;
-        if (const auto value = document.value(moduleIndex, &row, Layer::Device))
-            return qs(row.name) + QStringLiteral(" = ") + formatRaw(row, *value, lang);
-        return {};
+        const auto value = document.value(moduleIndex, &row, Layer::Device);
+        if (!value)
+            return {};
+        const QString word = qs(row.name) + QStringLiteral(" = ") + formatRaw(row, *value, lang);
+        // ED1/SD1 manual §4.2.2 / §4.8.3: the device state the bits R M H D report.
+        if (module.dictionary->protocol != dev::DeviceProtocol::Dsp408)
+            return word;
+        const auto state = dev::dsp408::stateOfStatusWord(
+            static_cast<std::uint16_t>(static_cast<std::int64_t>(dev::rawNumber(*value))));
+        if (!state)
+            return word;
+        return ParameterTreeModel::tr("%1: %2 (%3)")
+            .arg(QString::fromLatin1(dev::dsp408::stateName(*state)),
+                 qs(dev::dsp408::stateText(*state).in(lang)), word);
     }
     return {};
 }

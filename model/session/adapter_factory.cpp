@@ -9,7 +9,8 @@
 namespace vt::model {
 
 std::unique_ptr<dev::access::ProtocolAdapter>
-makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily, dev::DeviceProtocol device)
+makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily, dev::DeviceProtocol device,
+            const dev::access::Dsp408LinkOptions &dsp408)
 {
     using namespace dev::access;
     const auto family = hcsFamilyOf(hcsFamily);
@@ -20,6 +21,8 @@ makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily, dev::Devic
     case dev::LinkProtocol::Hart: return std::make_unique<HartAdapter>();
     case dev::LinkProtocol::Canopen:
         return std::make_unique<CanopenAdapter>(canopenProfileOf(device));
+    case dev::LinkProtocol::Dsp408Image:
+    case dev::LinkProtocol::Dsp408Gateway: return std::make_unique<Dsp408Adapter>(protocol, dsp408);
     }
     return nullptr;
 }

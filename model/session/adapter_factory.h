@@ -2,6 +2,7 @@
 // adapter (it goes to one Session).
 #pragma once
 
+#include "access/dsp408_adapter.h"
 #include "core/link_protocol.h"
 #include "dict/device_protocol.h"
 
@@ -17,8 +18,10 @@ namespace vt::model {
 // `hcsFamily`: a dictionary family or product prefix ("opat", "dma-pn-v51", "dma"); it picks the
 // HCS exception table (OPAT and DMA codes differ). Ignored by HART and CANopen DSP-408.
 // `device`: on CANopen, which objects the module has (HCS 0x2000 + ID or CiA 408).
+// `dsp408`: the ED1 image's layout and gateway registers (Dsp408Image, Dsp408Gateway).
 std::unique_ptr<dev::access::ProtocolAdapter>
 makeAdapter(dev::LinkProtocol protocol, const std::string &hcsFamily,
-            dev::DeviceProtocol device = dev::DeviceProtocol::Hcs);
+            dev::DeviceProtocol device = dev::DeviceProtocol::Hcs,
+            const dev::access::Dsp408LinkOptions &dsp408 = {});
 
 } // namespace vt::model

@@ -21,6 +21,9 @@ namespace {
 // HART-7: 1200 baud and a device that may take a few hundred ms to answer. The manuals name no
 // figure; ours, overridable through ConnectionSpec::turnaround.
 constexpr std::chrono::milliseconds kHartTurnaround{300};
+// The ED1's PKW handshake takes several PROFIBUS cycles of the gateway or the PLC (ED1/SD1
+// manual §4.6.1 names none); ours, overridable as above.
+constexpr std::chrono::milliseconds kDsp408Turnaround{300};
 constexpr int kModbusMaxUnit = 32; // HCS: E22 / DIP addresses of one RS485 line (DMA 1..32)
 constexpr int kHartMaxPollAddress = 15;
 constexpr int kCanMaxNode = 127;
@@ -79,6 +82,10 @@ SessionOptions sessionOptionsFor(const ConnectionSpec &spec)
     if (spec.kind == ConnectionKind::Hart ||
         (spec.kind == ConnectionKind::Sim && spec.sim.protocol == dev::LinkProtocol::Hart))
         options.turnaround = kHartTurnaround;
+    if ((spec.kind == ConnectionKind::Tcp && dev::isDsp408Link(spec.tcpProtocol)) ||
+        (spec.kind == ConnectionKind::Sim && spec.sim.protocol &&
+         dev::isDsp408Link(*spec.sim.protocol)))
+        options.turnaround = kDsp408Turnaround;
     if (spec.turnaround)
         options.turnaround = *spec.turnaround;
     if (spec.retries)
@@ -118,6 +125,7 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
             spec.sim.protocol = dev::sim::defaultSimProtocol(*dict, spec.sim.modules);
         if (dict)
             device = dict->protocol;
+        spec.sim.dsp408 = spec.dsp408;
         if (!link) {
             auto made = makeSimLink(spec.sim, &dictionaries);
             if (!made.ok())
@@ -153,6 +161,8 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
         if (!link)
             link = std::make_unique<link::TcpLink>(spec.host, spec.port);
         protocol = spec.tcpProtocol;
+        if (dev::isDsp408Link(protocol))
+            device = dev::DeviceProtocol::Dsp408;
         break;
     case ConnectionKind::Can:
         if (spec.canNode < 1 || spec.canNode > kCanMaxNode)
@@ -169,7 +179,7 @@ Connection::create(ConnectionSpec spec, const dev::DictionarySet &dictionaries,
     if (spec.unit && (*spec.unit < 0 || *spec.unit > 255))
         return tr("module address %1 is not 0..255").arg(*spec.unit);
 
-    auto made = makeAdapter(protocol, hcsFamilyHint(spec), device);
+    auto made = makeAdapter(protocol, hcsFamilyHint(spec), device, spec.dsp408);
     VT_ASSERT(made, return QStringLiteral("no protocol adapter for %1") // every protocol has one
                         .arg(QString::fromLatin1(dev::key(protocol))));
 
@@ -275,6 +285,10 @@ std::vector<int> Connection::scanAddresses() const
     case dev::LinkProtocol::ModbusRtu: return range(1, kModbusMaxUnit);
     case dev::LinkProtocol::ModbusTcp:
     case dev::LinkProtocol::NodeImage: break;
+    case dev::LinkProtocol::Dsp408Image:
+    case dev::LinkProtocol::Dsp408Gateway:
+        // One slave behind the image; the gateway's unit is configured, not searched for.
+        return moduleAddresses();
     }
     return range(0, kModbusMaxUnit);
 }

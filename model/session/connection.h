@@ -40,9 +40,13 @@ struct ConnectionSpec
     link::SerialSettings serial;
     QString host; // Tcp
     quint16 port = 502;
-    dev::LinkProtocol tcpProtocol = dev::LinkProtocol::ModbusTcp; // Tcp: Modbus TCP or node image
-    QString canInterface;                                         // Can: "can0", "vcan0"
-    int canNode = 1;                                              // Can: CANopen node id 1..127
+    // Tcp: Modbus TCP, the node image, or the ED1's image raw / behind a gateway.
+    dev::LinkProtocol tcpProtocol = dev::LinkProtocol::ModbusTcp;
+    // dsp408-image / dsp408-gateway (Tcp, or Sim: copied to the simulator): image layout and the
+    // gateway's registers. The gateway's Modbus unit is `unit` (default 1).
+    dev::access::Dsp408LinkOptions dsp408;
+    QString canInterface;   // Can: "can0", "vcan0"
+    int canNode = 1;        // Can: CANopen node id 1..127
     bool canDsp408 = false; // Can: a Wandfluh ED1 (CiA 408 objects) instead of an HCS module
     // The one module address to talk to (Modbus unit / node SADR, HART poll address, CAN node);
     // unset: 1 for Modbus point-to-point, 0 for HART, canNode for CAN, every module of a sim.

@@ -11,6 +11,8 @@ namespace vt::model {
 
 namespace {
 
+constexpr std::uint16_t kDsp408Profile = 408;
+
 struct IdentifyState
 {
     dev::access::Identity identity;
@@ -45,8 +47,10 @@ void merge(dev::access::Identity &into, const dev::access::Identity &from)
         into.deviceId = from.deviceId;
     if (from.capability)
         into.capability = from.capability;
+    if (from.deviceProfile)
+        into.deviceProfile = from.deviceProfile;
     if (!from.text.empty())
-        into.text = from.text;
+        into.text = into.text.empty() ? from.text : into.text + "; " + from.text;
 }
 
 } // namespace
@@ -79,7 +83,9 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
             return;
         }
         const dev::access::Identity &id = state->identity;
-        if (id.manufacturer == 0 && id.capability == 0 && id.versRaw < 0) {
+        // CiA 301 0x1000: profile 408 is the DSP-408 device profile (the ED1/SD1 over CANopen).
+        const bool dsp408 = id.capability != 0 || id.deviceProfile == kDsp408Profile;
+        if (id.manufacturer == 0 && !dsp408 && id.versRaw < 0) {
             result.message = tr("the module did not identify itself");
             done(result);
             return;
@@ -87,8 +93,8 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
         const dev::Result<dev::Identification, dev::LocalText> found =
             id.manufacturer != 0
                 ? dev::identifyHart(m_dictionaries, id.manufacturer, id.expandedDeviceType)
-            : id.capability != 0 ? dev::identifyDsp408(m_dictionaries, id.capability)
-                                 : dev::identifyHcs(m_dictionaries, id.versRaw, id.mode, m_product);
+            : dsp408 ? dev::identifyDsp408(m_dictionaries, id.capability)
+                     : dev::identifyHcs(m_dictionaries, id.versRaw, id.mode, m_product);
         if (!found) {
             result.deviceText = found.error();
             done(result);

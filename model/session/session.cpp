@@ -4,6 +4,8 @@
 #include "transports/byte_span.h"
 #include "transports/link.h"
 
+#include <utility>
+
 namespace vt::model {
 
 namespace {
@@ -30,7 +32,10 @@ Session::Session(link::Link *link, std::unique_ptr<dev::access::ProtocolAdapter>
     m_timeout.setTimerType(Qt::PreciseTimer);
     m_backoff.setSingleShot(true);
     m_backoff.setTimerType(Qt::PreciseTimer);
+    m_cycle.setSingleShot(true);
+    m_cycle.setTimerType(Qt::PreciseTimer);
     connect(&m_timeout, &QTimer::timeout, this, &Session::onTimeout);
+    connect(&m_cycle, &QTimer::timeout, this, &Session::sendFollowUp);
     connect(&m_backoff, &QTimer::timeout, this, [this] {
         if (m_current)
             sendAttempt();
@@ -143,6 +148,7 @@ void Session::sendAttempt()
                Outcome{OutcomeStatus::Cancelled, {}, p.attempts, p.sent, tr("Cancelled")});
         return;
     }
+    m_cycle.stop();
     m_adapter->resetFraming();
     m_unmatched.clear();
     const dev::Bytes bytes = m_adapter->encode(p.transaction);
@@ -195,7 +201,21 @@ void Session::onReceived(const QByteArray &bytes)
                            ReceivedKind::Unmatched, tr("does not answer the request"));
         return;
     }
+    if (reply->status == dev::access::ReplyStatus::Progress) {
+        // The attempt's timeout keeps running: a device that never answers ends it as usual.
+        emit frameReceived(link::toByteArray(reply->frame), p.transaction.module, elapsedNs(),
+                           ReceivedKind::Answer, tr("exchange in progress"));
+        m_followUp = std::move(reply->next);
+        if (m_followUp.empty())
+            return;
+        if (reply->nextAfterCycle)
+            m_cycle.start(m_options.busCycle);
+        else
+            sendFollowUp();
+        return;
+    }
     m_timeout.stop();
+    m_cycle.stop();
     const bool refused = reply->status == dev::access::ReplyStatus::DeviceException;
     // An answer with a code is a warning (HART common codes such as 14): the value arrived, and
     // the log says what the device added to it.
@@ -222,10 +242,20 @@ void Session::onReceived(const QByteArray &bytes)
     finish(std::move(m_current), std::move(outcome));
 }
 
+void Session::sendFollowUp()
+{
+    if (!m_current || !m_timeout.isActive() || m_followUp.empty())
+        return;
+    const QByteArray frame = link::toByteArray(std::exchange(m_followUp, {}));
+    emit frameSent(frame, m_current->transaction.module, elapsedNs());
+    m_link->send(frame);
+}
+
 void Session::onTimeout()
 {
     if (!m_current)
         return;
+    m_cycle.stop();
     Pending &p = *m_current;
     ++m_counters.timeouts;
     if (!m_unmatched.isEmpty()) {
@@ -273,6 +303,7 @@ void Session::failEverything(OutcomeStatus status, const QString &reason)
     const ApiGuard guard(m_apiDepth);
     m_timeout.stop();
     m_backoff.stop();
+    m_cycle.stop();
     if (m_current) {
         const int attempts = m_current->attempts;
         const bool sent = m_current->sent;

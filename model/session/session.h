@@ -113,6 +113,8 @@ private:
     void schedule();
     void startNext();
     void sendAttempt();
+    // A cyclic exchange goes on within the attempt (ReplyStatus::Progress).
+    void sendFollowUp();
     void onReceived(const QByteArray &bytes);
     void onTimeout();
     void onLinkState(link::LinkState state);
@@ -128,6 +130,8 @@ private:
     std::unique_ptr<Pending> m_current;
     QTimer m_timeout;
     QTimer m_backoff;
+    QTimer m_cycle;        // Progress: one bus cycle before the follow-up
+    dev::Bytes m_followUp; // bytes the adapter asked to send next
     QElapsedTimer m_clock;
     QByteArray m_unmatched; // bytes of the current attempt not yet part of a recognised frame
     RequestId m_nextId = 1;

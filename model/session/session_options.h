@@ -21,6 +21,9 @@ struct SessionOptions
     std::chrono::milliseconds backoff{20}; // before the first retry; doubles each retry
     std::chrono::milliseconds maxBackoff{500};
     std::size_t maxQueued = 100'000; // refuse more instead of growing without bound
+    // Cyclic links (the ED1's PROFIBUS image): how long to wait before asking again for an image
+    // that did not show the answer yet — about one bus cycle of the PLC or gateway. Ours.
+    std::chrono::milliseconds busCycle{5};
 
     // Time on the wire for `bytes` characters (zero without a serial wire).
     std::chrono::microseconds wireTime(std::size_t bytes) const

@@ -6,9 +6,9 @@
 
 namespace vt::model {
 
-bool servedOverSimLink(dev::DeviceProtocol device)
+bool servedOverSimLink(dev::DeviceProtocol)
 {
-    return device != dev::DeviceProtocol::Dsp408;
+    return true;
 }
 
 dev::Result<SimSpec, QString> parseSimSpec(const QString &text)
@@ -45,6 +45,11 @@ dev::sim::HcsNode *SimEndpoint::node() const
 dev::sim::HartDevice *SimEndpoint::hart() const
 {
     return m_device ? m_device->hart() : nullptr;
+}
+
+dev::sim::Dsp408Device *SimEndpoint::ed1() const
+{
+    return m_device ? m_device->ed1() : nullptr;
 }
 
 int SimEndpoint::moduleAddress(std::size_t index) const
@@ -90,15 +95,15 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
     const dev::Dictionary *dict = set->find(spec.family);
     if (!dict)
         return SimEndpoint::tr("unknown device family '%1'").arg(family);
-    if (!servedOverSimLink(dict->protocol))
-        return SimEndpoint::tr(
-                   "%1 cannot be simulated over a PC link yet (DSP-408 needs PROFIBUS or CANopen)")
-            .arg(family);
     const auto notServed = [&](dev::LinkProtocol protocol) {
-        return dict->protocol == dev::DeviceProtocol::Hart
-                   ? SimEndpoint::tr("%1 speaks HART only").arg(family)
-                   : SimEndpoint::tr("the simulator does not serve %1 over '%2'")
-                         .arg(family, QString::fromLatin1(dev::key(protocol)));
+        if (dict->protocol == dev::DeviceProtocol::Hart)
+            return SimEndpoint::tr("%1 speaks HART only").arg(family);
+        if (dict->protocol == dev::DeviceProtocol::Dsp408)
+            return SimEndpoint::tr("%1 is simulated over its PROFIBUS image: dsp408-image or "
+                                   "dsp408-gateway")
+                .arg(family);
+        return SimEndpoint::tr("the simulator does not serve %1 over '%2'")
+            .arg(family, QString::fromLatin1(dev::key(protocol)));
     };
     if (spec.protocol == dev::LinkProtocol::Canopen)
         return notServed(*spec.protocol);
@@ -109,6 +114,7 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
     deviceSpec.modules = spec.modules;
     deviceSpec.mode = spec.mode;
     deviceSpec.protocol = spec.protocol;
+    deviceSpec.dsp408 = spec.dsp408;
     auto device = dev::sim::SimDevice::build(endpoint->m_clock, *set, deviceSpec);
     if (!device.ok()) {
         const dev::sim::SimBuildError &error = device.error();

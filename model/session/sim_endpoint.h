@@ -7,6 +7,7 @@
 // device lives exactly as long as the link. GUI thread (the link's).
 #pragma once
 
+#include "access/dsp408_adapter.h"
 #include "core/link_protocol.h"
 #include "core/result.h"
 #include "dict/device_protocol.h"
@@ -25,6 +26,7 @@ class DictionarySet;
 namespace sim {
 class HcsNode;
 class HartDevice;
+class Dsp408Device;
 class SimDevice;
 } // namespace sim
 } // namespace vt::dev
@@ -40,15 +42,19 @@ struct SimSpec
     std::string family;      // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
     std::size_t modules = 1; // HCS node size
     int mode = 0;            // E00; 0: the family's first mode
-    // Modbus RTU, Modbus TCP, the node image or HART (the SD7's only one); nullopt: the family's
-    // default (dev::sim::defaultSimProtocol).
+    // Modbus RTU, Modbus TCP, the node image, HART (the SD7's only one), dsp408-image or
+    // dsp408-gateway (the ED1); nullopt: the family's default (dev::sim::defaultSimProtocol).
     std::optional<dev::LinkProtocol> protocol;
     int baudRate = 0; // simulated wire speed; 0: no wire delay
     int bitsPerCharacter = 11;
+    // The ED1's image layout and gateway registers (dsp408-image, dsp408-gateway); the master
+    // must use the same (ConnectionSpec::dsp408 is copied here for a simulator connection).
+    dev::access::Dsp408LinkOptions dsp408;
 };
 
-// Whether a SimLink can carry a device of this protocol: HCS and HART devices are served as byte
-// streams; a DSP-408 device needs PROFIBUS or CANopen frames, which a SimLink does not carry.
+// Whether a SimLink can carry a device of this protocol: every family is served as a byte
+// stream — HCS nodes, the SD7's HART, the ED1's PROFIBUS image (raw or behind a gateway's
+// Modbus TCP registers). Only CANopen frames need a CAN socket.
 bool servedOverSimLink(dev::DeviceProtocol device);
 
 // "dma-pn-v51:3" → family and module count; an error names what is wrong.
@@ -61,8 +67,9 @@ public:
     ~SimEndpoint() override;
 
     dev::sim::SimClock &clock() { return m_clock; }
-    dev::sim::HcsNode *node() const;    // HCS families
-    dev::sim::HartDevice *hart() const; // wandfluh-sd7
+    dev::sim::HcsNode *node() const;     // HCS families
+    dev::sim::HartDevice *hart() const;  // wandfluh-sd7
+    dev::sim::Dsp408Device *ed1() const; // wandfluh-ed1
     const SimSpec &spec() const { return m_spec; }
     // The module address a master uses for module `index` (Modbus unit / node SADR / poll address).
     int moduleAddress(std::size_t index) const;

@@ -133,7 +133,9 @@ TEST(GuiOptions, HelpNamesConnectAndItsOptions)
     QString help;
     parseGuiOptions({"valvetune", "--help"}, &help);
     EXPECT_TRUE(help.contains("--connect")) << help.toStdString();
-    EXPECT_TRUE(help.contains("--tcp HOST:PORT [--protocol modbus-tcp|node-image]"))
+    EXPECT_TRUE(help.contains(
+        "--tcp HOST:PORT [--protocol modbus-tcp|node-image|dsp408-image|dsp408-gateway]"))
         << help.toStdString();
     EXPECT_TRUE(help.contains("--port PATH [--baud B]")) << help.toStdString();
+    EXPECT_TRUE(help.contains("[--out-register N] [--in-register N]")) << help.toStdString();
 }

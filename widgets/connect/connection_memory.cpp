@@ -88,6 +88,18 @@ void ConnectionMemory::save(const model::ConnectionSpec &spec)
         s.setValue(QStringLiteral("host"), spec.host);
         s.setValue(QStringLiteral("port"), spec.port);
         s.setValue(QStringLiteral("protocol"), QLatin1String(dev::key(spec.tcpProtocol)));
+        if (dev::isDsp408Link(spec.tcpProtocol)) {
+            const auto &g = spec.dsp408.gateway;
+            s.setValue(QStringLiteral("outputRegister"), g.outputRegister);
+            s.setValue(QStringLiteral("inputRegister"), g.inputRegister);
+            s.setValue(QStringLiteral("inputFunction"), static_cast<int>(g.inputFunction));
+            s.setValue(QStringLiteral("firstByteLow"),
+                       g.byteOrder == dev::dsp408::RegisterByteOrder::FirstByteLow);
+            s.setValue(QStringLiteral("lowWordFirst"),
+                       spec.dsp408.layout.pzdWordOrder == dev::dsp408::WordOrder::LowWordFirst);
+            s.setValue(QStringLiteral("indByte3"),
+                       spec.dsp408.layout.indPosition == dev::dsp408::IndPosition::Byte3);
+        }
         break;
     case ConnectionKind::Can:
         s.setValue(QStringLiteral("interface"), spec.canInterface);
@@ -129,9 +141,26 @@ std::optional<model::ConnectionSpec> ConnectionMemory::load(ConnectionKind kind)
     case ConnectionKind::Tcp:
         spec.host = s.value(QStringLiteral("host")).toString();
         spec.port = static_cast<quint16>(s.value(QStringLiteral("port"), spec.port).toUInt());
-        spec.tcpProtocol = storedProtocol(s) == dev::LinkProtocol::NodeImage
-                               ? dev::LinkProtocol::NodeImage
-                               : dev::LinkProtocol::ModbusTcp;
+        spec.tcpProtocol = storedProtocol(s).value_or(dev::LinkProtocol::ModbusTcp);
+        if (spec.tcpProtocol != dev::LinkProtocol::NodeImage &&
+            !dev::isDsp408Link(spec.tcpProtocol))
+            spec.tcpProtocol = dev::LinkProtocol::ModbusTcp;
+        if (dev::isDsp408Link(spec.tcpProtocol)) {
+            auto &g = spec.dsp408.gateway;
+            g.outputRegister = static_cast<std::uint16_t>(
+                s.value(QStringLiteral("outputRegister"), g.outputRegister).toUInt());
+            g.inputRegister = static_cast<std::uint16_t>(
+                s.value(QStringLiteral("inputRegister"), g.inputRegister).toUInt());
+            g.inputFunction = s.value(QStringLiteral("inputFunction")).toInt() == 4
+                                  ? dev::dsp408::InputFunction::InputRegisters
+                                  : dev::dsp408::InputFunction::HoldingRegisters;
+            if (s.value(QStringLiteral("firstByteLow"), false).toBool())
+                g.byteOrder = dev::dsp408::RegisterByteOrder::FirstByteLow;
+            if (s.value(QStringLiteral("lowWordFirst"), false).toBool())
+                spec.dsp408.layout.pzdWordOrder = dev::dsp408::WordOrder::LowWordFirst;
+            if (s.value(QStringLiteral("indByte3"), false).toBool())
+                spec.dsp408.layout.indPosition = dev::dsp408::IndPosition::Byte3;
+        }
         break;
     case ConnectionKind::Can:
         spec.canInterface = s.value(QStringLiteral("interface")).toString();

@@ -106,6 +106,10 @@ void SimPage::fillForFamily()
             for (dev::LinkProtocol p : {dev::LinkProtocol::ModbusRtu, dev::LinkProtocol::ModbusTcp,
                                         dev::LinkProtocol::NodeImage})
                 m_protocol->addItem(QString(), dataOfProtocol(p));
+        } else if (dict && dict->protocol == dev::DeviceProtocol::Dsp408) {
+            for (dev::LinkProtocol p :
+                 {dev::LinkProtocol::Dsp408Image, dev::LinkProtocol::Dsp408Gateway})
+                m_protocol->addItem(QString(), dataOfProtocol(p));
         } else {
             m_protocol->addItem(QString(), dataOfProtocol(dev::LinkProtocol::Hart));
         }
@@ -202,6 +206,12 @@ void SimPage::retranslateChoices()
                 break;
             case dev::LinkProtocol::Hart: text = tr("HART"); break;
             case dev::LinkProtocol::Canopen: text = QString::fromLatin1(dev::key(*protocol)); break;
+            case dev::LinkProtocol::Dsp408Image:
+                text = tr("PROFIBUS image (PKW + PZD, cyclic)");
+                break;
+            case dev::LinkProtocol::Dsp408Gateway:
+                text = tr("PROFIBUS gateway (Modbus TCP registers)");
+                break;
             }
         }
         m_protocol->setItemText(i, text);

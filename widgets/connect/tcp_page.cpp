@@ -1,5 +1,6 @@
 #include "tcp_page.h"
 
+#include "widgets/connect/dsp408_fields.h"
 #include "widgets/connect/hcs_product_box.h"
 #include "widgets/number_box.h"
 
@@ -37,6 +38,8 @@ TcpPage::TcpPage(QWidget *parent) : ConnectPage(parent)
     m_protocol->setObjectName(QStringLiteral("tcpProtocol"));
     m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::ModbusTcp));
     m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::NodeImage));
+    m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::Dsp408Gateway));
+    m_protocol->addItem(QString(), static_cast<int>(dev::LinkProtocol::Dsp408Image));
     m_protocolLabel = new QLabel(this);
     form->addRow(m_protocolLabel, m_protocol);
     m_address = new WholeNumberBox(this);
@@ -49,13 +52,32 @@ TcpPage::TcpPage(QWidget *parent) : ConnectPage(parent)
     m_product->setObjectName(QStringLiteral("tcpProduct"));
     m_productLabel = new QLabel(this);
     form->addRow(m_productLabel, m_product);
+    m_dsp408 = new Dsp408Fields(this);
+    m_dsp408->setObjectName(QStringLiteral("tcpDsp408"));
+    form->addRow(m_dsp408);
 
     connect(m_host, &QLineEdit::textChanged, this, &ConnectPage::changed);
     connect(m_port, &QSpinBox::valueChanged, this, &ConnectPage::changed);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, &ConnectPage::changed);
     connect(m_address, &QSpinBox::valueChanged, this, &ConnectPage::changed);
     connect(m_product, &QComboBox::currentIndexChanged, this, &ConnectPage::changed);
+    connect(m_dsp408, &Dsp408Fields::changed, this, &ConnectPage::changed);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, &TcpPage::fitProtocol);
     retranslate();
+    fitProtocol();
+}
+
+void TcpPage::fitProtocol()
+{
+    const auto protocol = static_cast<dev::LinkProtocol>(m_protocol->currentData().toInt());
+    const bool ed1 = dev::isDsp408Link(protocol);
+    m_dsp408->setVisible(ed1);
+    m_dsp408->setGateway(protocol == dev::LinkProtocol::Dsp408Gateway);
+    m_product->setVisible(!ed1);
+    m_productLabel->setVisible(!ed1);
+    // The raw image has one slave and no address on the wire.
+    m_address->setVisible(protocol != dev::LinkProtocol::Dsp408Image);
+    m_addressLabel->setVisible(protocol != dev::LinkProtocol::Dsp408Image);
 }
 
 QString TcpPage::title() const
@@ -71,6 +93,7 @@ void TcpPage::load(const model::ConnectionSpec &spec)
         std::max(0, m_protocol->findData(static_cast<int>(spec.tcpProtocol))));
     m_address->setValue(spec.unit.value_or(1));
     m_product->setProduct(spec.product);
+    m_dsp408->load(spec.dsp408);
 }
 
 model::ConnectionSpec TcpPage::spec() const
@@ -82,6 +105,12 @@ model::ConnectionSpec TcpPage::spec() const
     spec.tcpProtocol = static_cast<dev::LinkProtocol>(m_protocol->currentData().toInt());
     spec.unit = m_address->value();
     spec.product = m_product->product();
+    if (dev::isDsp408Link(spec.tcpProtocol)) {
+        spec.product = dev::HcsProduct::Unknown;
+        spec.dsp408 = m_dsp408->options();
+        if (spec.tcpProtocol == dev::LinkProtocol::Dsp408Image)
+            spec.unit.reset();
+    }
     return spec;
 }
 
@@ -109,9 +138,12 @@ void TcpPage::retranslate()
     m_protocolLabel->setBuddy(m_protocol);
     m_protocol->setItemText(0, tr("Modbus TCP"));
     m_protocol->setItemText(1, tr("Node image (cyclic telegrams, CMD 3/6/15)"));
+    m_protocol->setItemText(2, tr("Wandfluh ED1: PROFIBUS gateway (Modbus TCP registers)"));
+    m_protocol->setItemText(3, tr("Wandfluh ED1: PROFIBUS image (PKW + PZD, cyclic)"));
     m_addressLabel->setText(tr("Module &address:"));
     m_addressLabel->setBuddy(m_address);
-    m_address->setToolTip(tr("Modbus unit / SADR of the module; 0 is the OPAT master"));
+    m_address->setToolTip(tr("Modbus unit / SADR of the module; 0 is the OPAT master; for the "
+                             "ED1's gateway its Modbus unit"));
     m_productLabel->setText(tr("Pro&duct:"));
     m_productLabel->setBuddy(m_product);
 }

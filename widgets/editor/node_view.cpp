@@ -1,11 +1,14 @@
 #include "node_view.h"
 
+#include "dsp408/state_machine.h"
 #include "model/params/parameter_document.h"
 #include "model/params/parameter_tree_model.h"
 #include "model/session/identity_texts.h"
 
+#include <QContextMenuEvent>
 #include <QEvent>
 #include <QHeaderView>
+#include <QMenu>
 #include <algorithm>
 
 namespace vt::ui {
@@ -91,6 +94,44 @@ void NodeView::rebuild()
         }
     }
     expandAll();
+}
+
+void NodeView::contextMenuEvent(QContextMenuEvent *event)
+{
+    QTreeWidgetItem *item = itemAt(event->pos());
+    const QVariant index = item ? item->data(0, Qt::UserRole) : QVariant();
+    if (!index.isValid() || index.toInt() >= m_document.moduleCount())
+        return;
+    const int module = index.toInt();
+    const model::ParamModule &m = m_document.module(module);
+    const dev::ParamMeta *control =
+        m.dictionary && m.dictionary->protocol == dev::DeviceProtocol::Dsp408
+            ? m.dictionary->find("db_ControlWord")
+            : nullptr;
+    if (!m.online || !control)
+        return;
+    // ED1/SD1 manual §4.2.2: the states a master commands with D, H, M (§4.8.2).
+    QMenu menu(this);
+    menu.setObjectName(QStringLiteral("deviceStateMenu"));
+    menu.setTitle(tr("Device state"));
+    menu.addSection(tr("Device state (db_ControlWord)"));
+    const std::pair<dev::dsp408::State, quint16> states[] = {
+        {dev::dsp408::State::Init, dev::dsp408::kControlInit},
+        {dev::dsp408::State::Disabled, dev::dsp408::kControlDisabled},
+        {dev::dsp408::State::Hold, dev::dsp408::kControlHold},
+        {dev::dsp408::State::DeviceModeActive, dev::dsp408::kControlActive}};
+    for (const auto &[state, word] : states) {
+        QAction *action =
+            menu.addAction(tr("%1 (control word 0x%2)")
+                               .arg(QString::fromLatin1(dev::dsp408::stateName(state)))
+                               .arg(word, 4, 16, QLatin1Char('0')));
+        connect(action, &QAction::triggered, this,
+                [this, module, w = word] { emit controlWordRequested(module, w); });
+    }
+    menu.addSeparator();
+    QAction *reset = menu.addAction(tr("Reset fault"));
+    connect(reset, &QAction::triggered, this, [this, module] { emit resetFaultRequested(module); });
+    menu.exec(event->globalPos());
 }
 
 void NodeView::changeEvent(QEvent *event)

@@ -22,9 +22,14 @@ public:
 
 signals:
     void moduleActivated(int module);
+    // The context menu of an online Wandfluh ED1/SD1 (DSP-408): the person chose a device state
+    // (ED1/SD1 manual §4.2.2) — `controlWord` is its db_ControlWord — or "reset fault".
+    void controlWordRequested(int module, quint16 controlWord);
+    void resetFaultRequested(int module);
 
 protected:
     void changeEvent(QEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
 
 private:
     void rebuild();

@@ -140,11 +140,18 @@ TEST(CanopenAdapter, Ed1IdentifiesByDeviceTypeAndReadsItsObjects)
 {
     Ed1CanRig r;
     const auto plan = r.adapter.planIdentify(kEd1Node);
-    ASSERT_EQ(plan.size(), 1u);
+    ASSERT_EQ(plan.size(), 2u);
     const auto id = access::test::okReply(r.rig.run(plan.front()));
     ASSERT_TRUE(id);
     EXPECT_EQ(id->values, std::vector<RawValue>{408.0}); // CiA 301 0x1000: profile 408
+    EXPECT_EQ(id->identity.deviceProfile, 408);
     EXPECT_NE(id->identity.text.find("profile 408"), std::string::npos);
+    // The simulated card has no capability object 0x605F (the manual names none): the abort is
+    // no failure, the step answers without a capability.
+    const auto capability = access::test::okReply(r.rig.run(plan.back()));
+    ASSERT_TRUE(capability);
+    EXPECT_EQ(capability->identity.capability, 0u);
+    EXPECT_NE(capability->identity.text.find("0x605F"), std::string::npos);
 
     std::vector<const ParamMeta *> rows;
     for (const ParamMeta &p : r.ed1.params)

@@ -43,6 +43,12 @@ TEST(Identify, Wandfluh)
     EXPECT_EQ(ed1->family, "wandfluh-ed1");
     EXPECT_TRUE(ed1->exact);
     EXPECT_FALSE(identifyDsp408(set, 0x00110000u)->exact);
+    // CANopen device type 408 without a capability object: the ED1, with the manual's value named.
+    const auto unreported = identifyDsp408(set, 0);
+    ASSERT_TRUE(unreported);
+    EXPECT_EQ(unreported->family, "wandfluh-ed1");
+    EXPECT_FALSE(unreported->exact);
+    EXPECT_NE(unreported->warning.en.find("0x00130000"), std::string::npos);
 
     auto sd7 = identifyHart(set, 24835, 58352);
     ASSERT_TRUE(sd7.ok());

@@ -2,10 +2,14 @@
 // session feeds them from the link, in the chunks the link delivers.
 // Input: byte 0 picks the adapter (bits 2..0: node image DMA / OPAT, HART, CANopen HCS / DSP-408,
 // Modbus RTU / TCP) and the transaction (bits 4..3: identify, read, write, raw; bit 5: a retry
-// with resetFraming() halfway); byte 1 is the chunk-size seed; the rest is the byte stream.
+// with resetFraming() halfway); byte 1: bit 7 replaces the adapter by the ED1's image adapter
+// (bit 6: gateway registers, else the raw image), bits 5..0 are the chunk-size seed; the rest is
+// the byte stream. Progress replies hand their next bytes nowhere, as a session whose link is
+// gone would.
 // Properties: no crash, no sanitizer report; an Ok reply carries one value per row (reads) or
 // one value (writes); the reply's frame is never longer than the bytes fed.
 #include "access/canopen_adapter.h"
+#include "access/dsp408_adapter.h"
 #include "access/hart_adapter.h"
 #include "access/modbus_adapter.h"
 #include "access/node_image_adapter.h"
@@ -114,10 +118,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if (size < 2)
         return 0;
     const std::uint8_t pick = data[0];
-    const std::size_t chunk = data[1] == 0 ? size : data[1] % 64u + 1u;
+    const std::size_t chunk = (data[1] & 0x3Fu) == 0 ? size : (data[1] & 0x3Fu) + 1u;
     const std::span<const std::uint8_t> stream(data + 2, size - 2);
 
     Setup setup = makeAdapter(pick & 0x07);
+    if ((data[1] & 0x80u) != 0)
+        setup = {std::make_unique<Dsp408Adapter>((data[1] & 0x40u) != 0
+                                                     ? LinkProtocol::Dsp408Gateway
+                                                     : LinkProtocol::Dsp408Image),
+                 1};
     ProtocolAdapter &adapter = *setup.adapter;
     const Transaction t =
         makeTransaction(adapter, setup.module, static_cast<std::uint8_t>(pick >> 3));

@@ -34,11 +34,12 @@ struct Endpoint
     std::unique_ptr<model::DeviceAccess> access;
 
     bool open(std::unique_ptr<link::Link> l, dev::LinkProtocol kind, const std::string &family,
-              model::SessionOptions options = {})
+              model::SessionOptions options = {},
+              dev::DeviceProtocol device = dev::DeviceProtocol::Hcs)
     {
         link = std::move(l);
-        session =
-            std::make_unique<model::Session>(link.get(), model::makeAdapter(kind, family), options);
+        session = std::make_unique<model::Session>(
+            link.get(), model::makeAdapter(kind, family, device), options);
         access = std::make_unique<model::DeviceAccess>(*session, dictionaries());
         link->open();
         return waitForState(*link, link::LinkState::Open);
@@ -165,6 +166,51 @@ TEST(SessionLinks, CanopenSdoThroughASocketpair)
     EXPECT_EQ(id.module.dictionary->family, "dma-pn-v51");
     expectDefaults(e.readAll(5, id.module), "dma-pn-v51", 1, 0);
     e.writeOne(5, *id.module.dictionary, "C1.07", 1234);
+}
+
+// The Wandfluh ED1 over CANopen (CiA 408 objects): device type 408 identifies it; the manual
+// gives no object for db_Capability, so its value is named from the manual, with a warning.
+TEST(SessionLinks, Ed1OverCanopenIdentifiesByDeviceTypeAndNamesTheCapability)
+{
+    int fds[2] = {-1, -1};
+    ASSERT_EQ(::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, fds), 0);
+    const int child = fds[1];
+    Sim sim({"--device", "wandfluh-ed1", "--can-fd", QString::number(child), "--node", "7"},
+            [child] { ::fcntl(child, F_SETFD, 0); });
+    ::close(child);
+    ASSERT_FALSE(sim.listening().isEmpty()) << sim.stderrText().toStdString();
+    Endpoint e;
+    ASSERT_TRUE(e.open(std::make_unique<link::CanLink>(link::CanLink::AdoptedFd{fds[0]},
+                                                       QStringLiteral("socketpair")),
+                       dev::LinkProtocol::Canopen, "", {}, dev::DeviceProtocol::Dsp408));
+    const auto id = e.identify(7);
+    ASSERT_TRUE(id.ok) << id.message.toStdString();
+    EXPECT_EQ(id.module.dictionary->family, "wandfluh-ed1");
+    EXPECT_NE(id.module.identification.version.find("0x00130000"), std::string::npos);
+    EXPECT_NE(id.deviceText.en.find("profile 408"), std::string::npos) << id.deviceText.en;
+    EXPECT_TRUE(id.module.identityText.contains(QStringLiteral("profile 408")));
+}
+
+// The ED1's PROFIBUS image over loopback TCP, both mappings: identify by db_Capability, read all
+// by IND/PNU, a write read back (ED1/SD1 manual §4.6, §4.8.7).
+TEST(SessionLinks, Ed1ImageAndGatewayOnLoopback)
+{
+    for (const char *protocol : {"dsp408-image", "dsp408-gateway"}) {
+        SCOPED_TRACE(protocol);
+        Sim sim({"--device", "wandfluh-ed1", "--tcp", "127.0.0.1:0", "--protocol", protocol});
+        const QString where = sim.listening();
+        ASSERT_FALSE(where.isEmpty()) << sim.stderrText().toStdString();
+        const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
+        Endpoint e;
+        ASSERT_TRUE(e.open(std::make_unique<link::TcpLink>(QStringLiteral("127.0.0.1"), port),
+                           *dev::fromKey<dev::LinkProtocol>(protocol), ""));
+        const auto id = e.identify(1);
+        ASSERT_TRUE(id.ok) << id.message.toStdString();
+        EXPECT_EQ(id.module.dictionary->family, "wandfluh-ed1");
+        EXPECT_EQ(id.module.identification.version, "capability 0x00130000");
+        EXPECT_TRUE(e.readAll(1, id.module).complete());
+        e.writeOne(1, *id.module.dictionary, "dpc_PropFact1", 25);
+    }
 }
 
 TEST(SessionLinks, HartOverAPseudoTerminal)

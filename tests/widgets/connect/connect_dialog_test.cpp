@@ -170,20 +170,27 @@ TEST(ConnectDialog, SimulatorOffersEveryFamilyItCanServe)
 {
     ConnectDialog dialog(dictionaries());
     auto *page = child<ui::SimPage>(dialog, "simPage");
+    // Every concrete family, the ED1 (its PROFIBUS image, raw or behind a gateway) included.
     std::vector<std::string> expected;
-    for (const std::string &family : dictionaries().families()) {
-        const dev::Dictionary *dict = dictionaries().find(family);
-        if (dict->protocol != dev::DeviceProtocol::Dsp408)
+    for (const std::string &family : dictionaries().families())
+        if (!dictionaries().find(family)->abstract)
             expected.push_back(family);
-    }
     EXPECT_EQ(page->families(), expected);
-    EXPECT_GE(expected.size(), 7u); // 5 DMA-2, OPAT, SD7
-    // Each one builds a simulator.
+    EXPECT_GE(expected.size(), 8u); // 5 DMA-2, OPAT, ED1, SD7
+    // Each one builds a simulator, over each protocol the page offers for it.
+    auto *protocol = child<QComboBox>(dialog, "simProtocol");
     for (const std::string &family : expected) {
         selectData(child<QComboBox>(dialog, "simFamily"), QString::fromStdString(family));
-        auto made = model::Connection::create(dialog.spec(), dictionaries());
-        EXPECT_TRUE(made.ok()) << family << ": " << (made.ok() ? "" : made.error().toStdString());
+        for (int i = 0; i < protocol->count(); ++i) {
+            protocol->setCurrentIndex(i);
+            auto made = model::Connection::create(page->spec(), dictionaries());
+            EXPECT_TRUE(made.ok()) << family << " " << protocol->currentText().toStdString() << ": "
+                                   << (made.ok() ? "" : made.error().toStdString());
+        }
     }
+    selectData(child<QComboBox>(dialog, "simFamily"), QStringLiteral("wandfluh-ed1"));
+    EXPECT_EQ(protocol->count(), 2);
+    EXPECT_EQ(page->spec().sim.protocol, dev::LinkProtocol::Dsp408Image);
 }
 
 TEST(ConnectDialog, InvalidInputDisablesOkWithTheReason)
