@@ -181,12 +181,17 @@ void DeviceController::readRows(
     m_progress->setAttribute(Qt::WA_DeleteOnClose);
     m_progress->setWindowModality(Qt::WindowModal);
     m_progress->setMinimumDuration(300);
-    connect(m_read, &model::ReadAllJob::progress, m_progress.data(), [this](int done, int total) {
-        if (!m_progress)
-            return;
-        m_progress->setMaximum(qMax(total, 1));
-        m_progress->setValue(done);
-    });
+    // Queued: once shown, a window-modal QProgressDialog runs the event loop in setValue(), which
+    // must not happen inside the session's completion that reports the progress.
+    connect(
+        m_read, &model::ReadAllJob::progress, m_progress.data(),
+        [this](int done, int total) {
+            if (!m_progress)
+                return;
+            m_progress->setMaximum(qMax(total, 1));
+            m_progress->setValue(done);
+        },
+        Qt::QueuedConnection);
     connect(m_progress.data(), &QProgressDialog::canceled, m_read, &model::ReadAllJob::cancel);
     connect(m_read, &model::ReadAllJob::finished, this, [this, then](bool complete) {
         if (m_progress)

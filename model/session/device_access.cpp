@@ -204,10 +204,13 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
                 } else if (outcome.status != OutcomeStatus::Cancelled) {
                     state->failures.push_back(RowFailure{rowsOfT, outcome});
                 }
-                ++state->done;
+                // Which completion is the last is decided before the progress report: a
+                // progress callback may run the event loop (a modal QProgressDialog's setValue()
+                // does), and the completions still queued then arrive inside it.
+                const bool last = ++state->done == state->total;
                 if (state->progress)
                     state->progress(state->done, state->total);
-                if (state->done == state->total)
+                if (last)
                     conclude();
             }));
     }

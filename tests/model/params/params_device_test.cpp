@@ -8,8 +8,10 @@
 #include "model/session/connection.h"
 #include "sim_rig.h"
 
+#include <QCoreApplication>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <algorithm>
 
 namespace vt::test {
 namespace {
@@ -72,6 +74,40 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
     doc.undoStack()->undo();
     EXPECT_TRUE(doc.differsFromDevice(0, c107));
     EXPECT_TRUE(tree.indexOf(0, c107).data(model::DiffersFromDeviceRole).toBool());
+}
+
+// A shown window-modal QProgressDialog runs the event loop in setValue() after posting its
+// repaint: the Read All job's progress handler may do so inside the completion that reports it,
+// and the exchanges still queued (here: all of them, cancelled at once) then complete inside it.
+// The job still finishes once.
+TEST(ParamsDevice, ReadAllFinishesOnceWhenItsProgressHandlerRunsTheEventLoop)
+{
+    auto c = connectSim("dma-pn-v51");
+    ASSERT_TRUE(c);
+    model::ParameterDocument doc;
+    doc.setDeviceImage(&c->access().image());
+    doc.attachDevice(c->modules);
+    model::ReadAllJob job(c->access(), doc);
+    int depth = 0;
+    int nested = 0;
+    QObject::connect(&job, &model::ReadAllJob::progress, &job, [&] {
+        nested = std::max(nested, depth);
+        ++depth;
+        // Something posted, as the dialog's repaint: only then does the nested loop dispatch the
+        // events posted before it.
+        QMetaObject::invokeMethod(
+            &job, [] {}, Qt::QueuedConnection);
+        QCoreApplication::processEvents();
+        --depth;
+    });
+    QSignalSpy finished(&job, &model::ReadAllJob::finished);
+    job.start();
+    job.cancel();
+    ASSERT_TRUE(finished.wait(kWaitMs));
+    spinFor(50);          // the window of a second finished()
+    EXPECT_GT(nested, 0); // the test ran completions inside a progress report
+    EXPECT_EQ(finished.count(), 1);
+    EXPECT_FALSE(finished.at(0).at(0).toBool());
 }
 
 TEST(ParamsDevice, ReadFileRefusesOversizeAndGarbage)
