@@ -16,7 +16,8 @@ _valvetune_cli()
     local prev=${COMP_WORDS[COMP_CWORD - 1]}
     local commands="decode encode dictionary info scan read get set write diff monitor fold"
     local connection="--sim --port --baud --parity --stop --tcp --protocol --can --node --hart
-        --unit --module --fault --product --turnaround --lang --json --help"
+        --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
+        --module --fault --product --turnaround --lang --json --help"
 
     # The values of options that take one of a known set; a path for those that take a file.
     case $prev in
@@ -32,6 +33,12 @@ _valvetune_cli()
         --stop) mapfile -t COMPREPLY < <(compgen -W "1 2" -- "$cur") && return ;;
         --lang) mapfile -t COMPREPLY < <(compgen -W "en de" -- "$cur") && return ;;
         --direction) mapfile -t COMPREPLY < <(compgen -W "request response" -- "$cur") && return ;;
+        --in-function) mapfile -t COMPREPLY < <(compgen -W "3 4" -- "$cur") && return ;;
+        --ind-byte) mapfile -t COMPREPLY < <(compgen -W "2 3" -- "$cur") && return ;;
+        --register-bytes | --pzd-words)
+            mapfile -t COMPREPLY < <(compgen -W "high-first low-first" -- "$cur")
+            return
+            ;;
         --node)
             # fold plan takes a node type; the device commands a CANopen node id (a number).
             [[ " ${COMP_WORDS[*]} " == *" fold "* ]] &&
@@ -45,7 +52,7 @@ _valvetune_cli()
             ;;
         --baud | --tcp | --can | --unit | --module | --fault | --turnaround | --timeout | \
             --rate | --duration | --tadr | --sadr | --id | --count | --value | --cob-id | \
-            --profile | --modules)
+            --profile | --modules | --out-register | --in-register)
             return
             ;;
     esac
@@ -104,7 +111,8 @@ _valvetune_cli()
         *) return ;;
     esac
     if [[ $prev == --protocol && $command != decode ]]; then
-        mapfile -t COMPREPLY < <(compgen -W "modbus-rtu modbus-tcp node-image" -- "$cur")
+        local links="modbus-rtu modbus-tcp node-image dsp408-image dsp408-gateway"
+        mapfile -t COMPREPLY < <(compgen -W "$links" -- "$cur")
     elif [[ $cur == -* ]]; then
         mapfile -t COMPREPLY < <(compgen -W "$options" -- "$cur")
     elif [[ -n $files ]]; then

@@ -66,7 +66,7 @@ TEST(HartUniversal, WritesEachTextWithReadBackAndKeepsItsNeighbours)
     ASSERT_TRUE(readRows(*rig, {"hart_Tag", "hart_Descriptor", "hart_DateDay"}));
     auto items = write(*rig, "hart_Tag", std::string("PUMP 7"));
     EXPECT_EQ(items.front().status, model::WriteStatus::Verified)
-        << items.front().reason.toStdString();
+        << items.front().reason.text().toStdString();
     items = write(*rig, "hart_LongTag", std::string("Presse 3 Ventil links Ölseite"));
     EXPECT_EQ(items.front().status, model::WriteStatus::Verified);
     items = write(*rig, "hart_Message", std::string("CHECKED 2026-11-27"));
