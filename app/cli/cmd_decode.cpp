@@ -1,20 +1,25 @@
-// valvetune-cli decode --protocol P [--family opat|dma] [--direction request|response]
+// valvetune-cli decode [--protocol P] [--family opat|dma] [--direction request|response]
 //                      [--profile KEY] [--dictionary FAMILY] [--cob-id ID] HEX…
+// Without --protocol the bytes are auto-detected as the inspector's decode box does, and the
+// protocol chosen is named first.
 #include "commands.h"
 #include "core/hex.h"
 #include "dict/dictionary_loader.h"
 #include "hcs/profiles.h"
+#include "inspect/auto_detect.h"
 #include "inspect/describe_any.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace vt::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-const char kUsage[] = "usage: valvetune-cli decode --protocol "
-                      "gateway|modbus-rtu|modbus-tcp|profidrive|pkw|pzd|hart|canopen\n"
+const char kUsage[] = "usage: valvetune-cli decode [--protocol "
+                      "gateway|modbus-rtu|modbus-tcp|profidrive|pkw|pzd|hart|canopen]\n"
                       "       [--family opat|dma] [--direction request|response] [--profile KEY] "
                       "[--dictionary FAMILY]\n"
                       "       [--cob-id ID] [--lang en|de] HEX...";
@@ -46,14 +51,14 @@ int runDecode(const QStringList &argsIn, Context &ctx)
     const auto langArg = takeOption(args, "--lang", &missing);
     if (missing)
         return ctx.fail(kExitUsage, "an option is missing its value\n" + std::string(kUsage));
-    if (!protocolArg)
-        return ctx.fail(kExitUsage, "--protocol is required\n" + std::string(kUsage));
-    const auto protocol = dev::fromKey<dev::FrameFormat>(protocolArg->toStdString());
-    if (!protocol)
-        return ctx.fail(kExitUsage, "unknown protocol '" + protocolArg->toStdString() + "'");
+    std::optional<dev::FrameFormat> protocol;
+    if (protocolArg) {
+        protocol = dev::fromKey<dev::FrameFormat>(protocolArg->toStdString());
+        if (!protocol)
+            return ctx.fail(kExitUsage, "unknown protocol '" + protocolArg->toStdString() + "'");
+    }
 
     dev::AnyOptions options;
-    options.protocol = *protocol;
     if (familyArg) {
         const auto family = dev::hcs::familyFromName(familyArg->toStdString());
         if (!family)
@@ -102,6 +107,36 @@ int runDecode(const QStringList &argsIn, Context &ctx)
                                         std::to_string(bytes.error().position) + ": " +
                                         bytes.error().reason);
 
+    std::string detected; // "modbus-rtu, request, wrong CRC" when auto-detected
+    if (protocol) {
+        options.protocol = *protocol;
+    } else {
+        const auto detection = dev::inspect::detectProtocol(*bytes, options.cobId);
+        const dev::inspect::Candidate *c = detection.choice();
+        if (!c) {
+            std::string names;
+            for (const auto &candidate : detection.candidates)
+                names += (names.empty() ? "" : ", ") + std::string(dev::key(candidate.protocol));
+            return ctx.fail(kExitUsage, names.empty()
+                                            ? "the bytes are no frame of any protocol ValveTune "
+                                              "knows; give --protocol to see why"
+                                            : "cannot tell the protocol (could be " + names +
+                                                  "); give --protocol");
+        }
+        protocol = c->protocol;
+        options.protocol = c->protocol;
+        // The direction and family asked for when the bytes decode so; else the ones that do.
+        if (!c->directions.empty() &&
+            (!directionArg || std::find(c->directions.begin(), c->directions.end(),
+                                        options.direction) == c->directions.end()))
+            options.direction = c->directions.front();
+        if (!c->families.empty() && (!familyArg || std::find(c->families.begin(), c->families.end(),
+                                                             options.family) == c->families.end()))
+            options.family = c->families.front();
+        detected = std::string(dev::key(c->protocol)) + ", " +
+                   (options.direction == dev::Direction::Request ? "request" : "response") +
+                   (c->badCrc ? ", wrong CRC" : "");
+    }
     const auto described = dev::describeAny(*bytes, options);
     if (!described.ok())
         return ctx.fail(kExitUsage, described.error());
@@ -121,6 +156,7 @@ int runDecode(const QStringList &argsIn, Context &ctx)
             error = Json{{"offset", d.error->offset},
                          {"reason", dev::describeError(*d.error).in(lang)}};
         ctx.out << Json{{"protocol", dev::key(*protocol)},
+                        {"detected", !detected.empty()},
                         {"ok", d.ok()},
                         {"error", error},
                         {"summary", d.summary.in(lang)},
@@ -128,6 +164,8 @@ int runDecode(const QStringList &argsIn, Context &ctx)
                        .dump(2)
                 << '\n';
     } else {
+        if (!detected.empty())
+            ctx.out << "auto-detected: " << detected << '\n';
         if (!d.summary.in(lang).empty())
             ctx.out << d.summary.in(lang) << '\n';
         for (const dev::FieldSpan &f : d.fields) {

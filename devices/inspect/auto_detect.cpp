@@ -79,6 +79,31 @@ bool hasMbap(std::span<const std::uint8_t> bytes)
     return mbap.ok() && mbap->aduSize() == bytes.size();
 }
 
+// A Modbus RTU frame with a wrong CRC: its header announces exactly its length, and a read asks
+// for 1..125 registers (Modbus Application Protocol V1.1b3 §6.3), so zero padding is no request.
+std::optional<Candidate> rtuWithBadCrc(std::span<const std::uint8_t> bytes)
+{
+    if (bytes.size() < 5 || modbus::rtuCrcOk(bytes) || bytes[0] > 247)
+        return std::nullopt;
+    Candidate c;
+    c.protocol = FrameFormat::ModbusRtu;
+    c.badCrc = true;
+    for (Direction dir : kDirections) {
+        const auto length = modbus::rtuFrameLength(bytes, dir);
+        if (!length || *length != bytes.size())
+            continue;
+        if (dir == Direction::Request && bytes[1] == 3) {
+            const int count = (bytes[4] << 8) | bytes[5];
+            if (count < 1 || count > 125)
+                continue;
+        }
+        c.directions.push_back(dir);
+    }
+    if (c.directions.empty())
+        return std::nullopt;
+    return c;
+}
+
 } // namespace
 
 Detection detectProtocol(std::span<const std::uint8_t> bytes, std::optional<std::uint32_t> cobId)
@@ -136,11 +161,14 @@ Detection detectProtocol(std::span<const std::uint8_t> bytes, std::optional<std:
     if (bytes.size() == 14) // ED1/SD1 manual §4.5.1 telegram type 1: PKW + PZD
         add(weak, tryProtocol(bytes, FrameFormat::Pzd, false));
 
+    const auto damaged = strong.empty() ? rtuWithBadCrc(bytes) : std::nullopt;
     out.candidates = strong;
+    if (damaged)
+        out.candidates.push_back(*damaged);
     out.candidates.insert(out.candidates.end(), weak.begin(), weak.end());
     if (strong.size() == 1)
         out.chosen = 0;
-    else if (strong.empty() && weak.size() == 1)
+    else if (strong.empty() && (damaged || weak.size() == 1))
         out.chosen = 0;
     return out;
 }

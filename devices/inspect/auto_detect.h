@@ -2,6 +2,8 @@
 // byte string can be, and whether that is unambiguous. Checksums and headers (Modbus RTU CRC,
 // Modbus TCP MBAP, HART preambles + XOR) are strong evidence; a frame that merely decodes
 // (gateway, PROFIdrive mix, PKW, SDO) is weak evidence and decides only when it is the only one.
+// A Modbus RTU frame whose length matches its header but whose CRC is wrong is named as such
+// (a damaged frame is what one pastes to ask why) unless a checksum confirms another protocol.
 #pragma once
 
 #include "core/direction.h"
@@ -21,6 +23,7 @@ struct Candidate
     bool strong = false;               // a checksum / header confirmed it
     std::vector<Direction> directions; // the directions in which the bytes decode
     std::vector<hcs::Family> families; // gateway / Modbus / PROFIdrive: families that decode
+    bool badCrc = false; // Modbus RTU whose header fits its length but whose CRC is wrong
 };
 
 struct Detection

@@ -66,7 +66,7 @@ TEST(CliDecode, EveryProtocolSurvivesGarbage)
 
 TEST(CliDecode, UsageErrors)
 {
-    EXPECT_EQ(cli({"decode", "23 00"}).code, vt::cli::kExitUsage); // no --protocol
+    EXPECT_EQ(cli({"decode", "23 00"}).code, vt::cli::kExitUsage); // no protocol fits
     EXPECT_EQ(cli({"decode", "--protocol", "smoke-signals", "23"}).code, vt::cli::kExitUsage);
     EXPECT_EQ(cli({"decode", "--protocol", "gateway", "23 0G"}).code,
               vt::cli::kExitUsage);                                                // not hex
@@ -75,6 +75,30 @@ TEST(CliDecode, UsageErrors)
               vt::cli::kExitUsage);
     EXPECT_EQ(cli({"decode", "--protocol", "gateway", "--profile", "nope", "23 00 03"}).code,
               vt::cli::kExitUsage);
+}
+
+// Without --protocol the bytes are auto-detected, as the decode box does, and the protocol chosen
+// is named; a damaged Modbus RTU frame is named as RTU with a wrong CRC; --protocol still forces.
+TEST(CliDecode, AutoDetectsAndNamesTheProtocol)
+{
+    const CliRun ok = cli({"decode", "01 03 00 07 00 01 35 CB"});
+    EXPECT_EQ(ok.code, 0) << ok.err;
+    EXPECT_EQ(ok.out.rfind("auto-detected: modbus-rtu, request\n", 0), 0u) << ok.out;
+
+    const CliRun bad = cli({"--json", "decode", "01 03 00 07 00 01 35 34"});
+    EXPECT_EQ(bad.code, vt::cli::kExitDeviceError);
+    const auto doc = nlohmann::json::parse(bad.out);
+    EXPECT_EQ(doc["protocol"], "modbus-rtu");
+    EXPECT_EQ(doc["detected"], true);
+    EXPECT_NE(bad.err.find("CRC"), std::string::npos) << bad.err;
+
+    const CliRun ambiguous = cli({"decode", "20 49 03 00 00 00 01 C2"}); // PKW or SDO
+    EXPECT_EQ(ambiguous.code, vt::cli::kExitUsage);
+    EXPECT_NE(ambiguous.err.find("pkw"), std::string::npos) << ambiguous.err;
+
+    const CliRun forced = cli({"--json", "decode", "--protocol", "pkw", "20 49 03 00 00 00 01 C2"});
+    EXPECT_EQ(nlohmann::json::parse(forced.out)["protocol"], "pkw");
+    EXPECT_EQ(nlohmann::json::parse(forced.out)["detected"], false);
 }
 
 // OPAT manual §2.7 (CMD 6) and the classic Modbus reference frame 01 03 00 00 00 01 84 0A.

@@ -175,9 +175,12 @@ void DecodePanel::decode()
         if (!c->families.empty() &&
             std::find(c->families.begin(), c->families.end(), options.family) == c->families.end())
             options.family = c->families.front();
-        status = tr("Auto: %1 (%2).")
-                     .arg(protocolKey(c->protocol),
-                          options.direction == Direction::Request ? tr("request") : tr("response"));
+        const QString direction =
+            options.direction == Direction::Request ? tr("request") : tr("response");
+        status =
+            c->badCrc
+                ? tr("Auto: %1 (%2) with a wrong CRC.").arg(protocolKey(c->protocol), direction)
+                : tr("Auto: %1 (%2).").arg(protocolKey(c->protocol), direction);
     } else {
         options.protocol = static_cast<FrameFormat>(chosen);
     }

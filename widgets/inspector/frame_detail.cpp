@@ -11,6 +11,8 @@
 #include <QSplitter>
 #include <QTreeView>
 #include <QVBoxLayout>
+#include <string>
+#include <utility>
 
 namespace vt::ui {
 
@@ -100,9 +102,17 @@ void FrameDetail::updateHeadline()
     }
     if (d.error) {
         m_headline->setStyleSheet(QStringLiteral("color: #c81e1e;"));
+        // The headline names the byte; the codec's sentence does not say it a second time.
+        vt::dev::LocalText reason = vt::dev::describeError(*d.error);
+        const std::string at = std::to_string(d.error->offset);
+        const std::pair<std::string *, std::string> said[] = {{&reason.en, " at byte " + at},
+                                                              {&reason.de, " bei Byte " + at}};
+        for (const auto &[text, words] : said)
+            if (const auto i = text->find(words); i != std::string::npos)
+                text->erase(i, words.size());
         m_headline->setText(tr("Error at byte %1: %2")
                                 .arg(QLocale().toString(static_cast<qulonglong>(d.error->offset)),
-                                     model::localText(vt::dev::describeError(*d.error))));
+                                     model::localText(reason)));
         return;
     }
     m_headline->setStyleSheet({});

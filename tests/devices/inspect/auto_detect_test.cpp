@@ -30,9 +30,31 @@ TEST(AutoDetect, ModbusRtuByCrc)
     // Modbus over Serial Line §2.5.1.2: FC 3 read of ID 7 at unit 1, CRC 0xCB35 low byte first.
     const Bytes rtu{0x01, 0x03, 0x00, 0x07, 0x00, 0x01, 0x35, 0xCB};
     EXPECT_EQ(chosen(rtu), FrameFormat::ModbusRtu);
-    Bytes bad = rtu;
-    bad.back() ^= 0xFF;
-    EXPECT_NE(chosen(bad), FrameFormat::ModbusRtu);
+    EXPECT_FALSE(detectProtocol(rtu).choice()->badCrc);
+}
+
+TEST(AutoDetect, ModbusRtuWithAWrongCrcIsNamedSo)
+{
+    // The same read with its CRC damaged: eight bytes that are also a PKW telegram and an SDO,
+    // but the RTU header announces exactly eight bytes — a damaged RTU frame, said so.
+    Bytes bad{0x01, 0x03, 0x00, 0x07, 0x00, 0x01, 0x35, 0x34};
+    const Detection d = detectProtocol(bad);
+    ASSERT_NE(d.choice(), nullptr);
+    EXPECT_EQ(d.choice()->protocol, FrameFormat::ModbusRtu);
+    EXPECT_TRUE(d.choice()->badCrc);
+    EXPECT_EQ(d.choice()->directions, std::vector<Direction>{Direction::Request});
+    // A write (FC 6) echoes its request: either direction.
+    const Bytes write{0x02, 0x06, 0x00, 0x1C, 0x03, 0xE8, 0x00, 0x00};
+    ASSERT_NE(detectProtocol(write).choice(), nullptr);
+    EXPECT_TRUE(detectProtocol(write).choice()->badCrc);
+    EXPECT_EQ(detectProtocol(write).choice()->directions.size(), 2u);
+    // Zero padding after "01 03" asks for no register: no Modbus request, no guess made up.
+    const Bytes zeros{0x10, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};
+    const Detection z = detectProtocol(zeros);
+    EXPECT_TRUE(!z.choice() || z.choice()->protocol != FrameFormat::ModbusRtu);
+    // A checksum that confirms another protocol wins over a damaged-looking RTU header.
+    const Bytes tcp{0x00, 0x01, 0x00, 0x00, 0x00, 0x06, 0x01, 0x03, 0x00, 0x07, 0x00, 0x01};
+    EXPECT_EQ(chosen(tcp), FrameFormat::ModbusTcp);
 }
 
 TEST(AutoDetect, ModbusTcpByMbap)

@@ -155,6 +155,9 @@ TEST(DecodePanel, CorruptedFramesShowTheirErrorWithoutCrashing)
     ASSERT_FALSE(panel.description().ok());
     EXPECT_EQ(panel.description().error->code, dev::DecodeErrc::BadChecksum);
     EXPECT_TRUE(panel.detail()->headline().contains(QStringLiteral("byte 6")));
+    // The byte is named once ("Error at byte 6: checksum error: CRC …").
+    EXPECT_EQ(panel.detail()->headline().count(QStringLiteral("byte 6")), 1)
+        << panel.detail()->headline().toStdString();
     EXPECT_EQ(panel.detail()->hexView()->errorOffset(), 6);
     // A truncated CMD 6 (OPAT manual §2.4 needs 7 bytes).
     panel.setProtocol(FrameFormat::Gateway);
@@ -188,6 +191,13 @@ TEST(DecodePanel, AutoSaysWhenItCannotDecide)
     ASSERT_TRUE(panel.decodedProtocol().has_value());
     EXPECT_EQ(*panel.decodedProtocol(), FrameFormat::ModbusRtu);
     EXPECT_TRUE(panel.description().ok());
+    // A Modbus RTU read with a wrong CRC is named as one, not left undecided.
+    panel.setText(QStringLiteral("01 03 00 07 00 01 35 34"));
+    ASSERT_TRUE(panel.decodedProtocol().has_value()) << panel.statusText().toStdString();
+    EXPECT_EQ(*panel.decodedProtocol(), FrameFormat::ModbusRtu);
+    EXPECT_TRUE(panel.statusText().contains(QStringLiteral("CRC")))
+        << panel.statusText().toStdString();
+    EXPECT_EQ(panel.description().error->code, dev::DecodeErrc::BadChecksum);
 }
 
 TEST(DecodePanel, LanguageChangeSwitchesTheCoreTexts)
