@@ -18,13 +18,18 @@ namespace {
 struct Check
 {
     std::string problem;
-    bool in(const char *name, long long v, long long min, long long max)
+    ComposeError first{std::string()};
+    // `name` as the manuals write it (the reason), `field` the ComposeSpec member.
+    bool in(const char *name, const char *field, long long v, long long min, long long max)
     {
-        if ((v < min || v > max) && problem.empty())
+        if ((v < min || v > max) && problem.empty()) {
             problem =
                 std::string(name) + " must be " + std::to_string(min) + ".." + std::to_string(max);
+            first = ComposeError{problem, field, min, max};
+        }
         return problem.empty();
     }
+    ComposeError error() const { return first; }
 };
 
 std::uint8_t u8(long long v)
@@ -56,7 +61,7 @@ long long valueMax(int width)
 
 } // namespace
 
-Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
+Result<ComposedFrame, ComposeError> compose(const ComposeSpec &s)
 {
     Check c;
     ComposedFrame out;
@@ -65,19 +70,19 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     case ComposeKind::GatewayWrite: {
         out.protocol = FrameFormat::Gateway;
         out.link = LinkProtocol::NodeImage;
-        c.in("TADR", s.tadr, 0, 255);
-        c.in("SADR", s.sadr, 0, 255);
-        c.in("ID", s.id, 0, 0xFFFF);
+        c.in("TADR", "tadr", s.tadr, 0, 255);
+        c.in("SADR", "sadr", s.sadr, 0, 255);
+        c.in("ID", "id", s.id, 0, 0xFFFF);
         if (s.kind == ComposeKind::GatewayRead) {
-            c.in("N", s.count, 1, hcs::kMaxReadCount); // OPAT manual §2.1: at most 8
+            c.in("N", "count", s.count, 1, hcs::kMaxReadCount); // OPAT manual §2.1: at most 8
             if (!c.problem.empty())
-                return c.problem;
+                return c.error();
             out.bytes =
                 hcs::encode(hcs::ReadRequest{u8(s.tadr), u8(s.sadr), u16(s.id), u16(s.count)});
         } else {
-            c.in("value", s.value, -32768, 65535);
+            c.in("value", "value", s.value, -32768, 65535);
             if (!c.problem.empty())
-                return c.problem;
+                return c.error();
             out.bytes =
                 hcs::encode(hcs::WriteRequest{u8(s.tadr), u8(s.sadr), u16(s.id), u16(s.value)});
             out.writes = true;
@@ -88,12 +93,13 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
         out.protocol = FrameFormat::Gateway;
         out.link = LinkProtocol::NodeImage;
         out.writes = true; // set values move the valve
-        if (!c.in("TADR", s.tadr, 0, 255))
-            return c.problem;
+        if (!c.in("TADR", "tadr", s.tadr, 0, 255))
+            return c.error();
         const auto bytes = hcs::encode(hcs::CyclicRequest{u8(s.tadr), s.modules}, s.family);
         if (!bytes)
-            return "a " + std::string(hcs::familyName(s.family)) + " node cannot carry " +
-                   std::to_string(s.modules.size()) + " modules in CMD 15";
+            return ComposeError{"a " + std::string(hcs::familyName(s.family)) +
+                                " node cannot carry " + std::to_string(s.modules.size()) +
+                                " modules in CMD 15"};
         out.bytes = *bytes;
         return out;
     }
@@ -101,48 +107,48 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     case ComposeKind::ModbusWrite: {
         out.protocol = s.modbusTcp ? FrameFormat::ModbusTcp : FrameFormat::ModbusRtu;
         out.link = s.modbusTcp ? LinkProtocol::ModbusTcp : LinkProtocol::ModbusRtu;
-        c.in("unit", s.unit, 0, 255);
-        c.in("register", s.id, 0, 0xFFFF);
-        c.in("transaction", s.transaction, 0, 0xFFFF);
+        c.in("unit", "unit", s.unit, 0, 255);
+        c.in("register", "id", s.id, 0, 0xFFFF);
+        c.in("transaction", "transaction", s.transaction, 0, 0xFFFF);
         modbus::RequestPdu pdu;
         if (s.kind == ComposeKind::ModbusRead) {
-            c.in("count", s.count, 1, modbus::kMaxReadRegisters);
+            c.in("count", "count", s.count, 1, modbus::kMaxReadRegisters);
             pdu = modbus::ReadRequest{u16(s.id), u16(s.count)};
         } else {
-            c.in("value", s.value, -32768, 65535);
+            c.in("value", "value", s.value, -32768, 65535);
             pdu = modbus::WriteRequest{u16(s.id), u16(s.value)};
             out.writes = true;
         }
         if (!c.problem.empty())
-            return c.problem;
+            return c.error();
         const auto bytes =
             s.modbusTcp ? modbus::encodeTcp(modbus::TcpRequest{u16(s.transaction), u8(s.unit), pdu})
                         : modbus::encodeRtu(modbus::RtuRequest{u8(s.unit), pdu});
         if (!bytes)
-            return bytes.error().detail;
+            return ComposeError{bytes.error().detail};
         out.bytes = *bytes;
         return out;
     }
     case ComposeKind::PkwRead:
     case ComposeKind::PkwWrite: {
         out.protocol = FrameFormat::Pkw;
-        c.in("IND", s.ind, 0, 255);
-        c.in("PNU", s.pnu, 0, dsp408::kMaxPnu);
+        c.in("IND", "ind", s.ind, 0, 255);
+        c.in("PNU", "pnu", s.pnu, 0, dsp408::kMaxPnu);
         dsp408::Pkw pkw = dsp408::readRequest(u8(s.ind), u16(s.pnu));
         if (s.kind == ComposeKind::PkwWrite) {
             if (s.width != 1 && s.width != 2 && s.width != 4)
-                return std::string("width must be 1, 2 or 4 bytes");
-            c.in("value", s.value, valueMin(s.width), valueMax(s.width));
+                return ComposeError{std::string("width must be 1, 2 or 4 bytes")};
+            c.in("value", "value", s.value, valueMin(s.width), valueMax(s.width));
             pkw = dsp408::writeRequest(u8(s.ind), u16(s.pnu),
                                        static_cast<dsp408::ParamLength>(s.width),
                                        static_cast<std::uint32_t>(s.value));
             out.writes = true;
         }
         if (!c.problem.empty())
-            return c.problem;
+            return c.error();
         const auto bytes = dsp408::encodePkw(pkw);
         if (!bytes)
-            return bytes.error().detail;
+            return ComposeError{bytes.error().detail};
         out.bytes = *bytes;
         return out;
     }
@@ -155,33 +161,34 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
         if (s.hartDeviceType) {
             // longAddress() drops the two top bits of the expanded device type (HART-7 manual
             // §2.3).
-            c.in("device id", s.hartDeviceId, 0, hart::kMaxDeviceId);
+            c.in("device id", "hartDeviceId", s.hartDeviceId, 0, hart::kMaxDeviceId);
             address = hart::longAddress(*s.hartDeviceType, s.hartDeviceId);
         } else {
-            c.in("poll address", s.pollAddress, 0, hart::kMaxPollAddress);
+            c.in("poll address", "pollAddress", s.pollAddress, 0, hart::kMaxPollAddress);
             address = hart::shortAddress(u8(s.pollAddress));
         }
         std::uint8_t command = 0;
         Bytes data;
         if (s.kind == ComposeKind::HartCommand) {
-            c.in("command", s.hartCommand, 0, 255);
-            c.in("data bytes", static_cast<long long>(s.hartData.size()), 0, hart::kMaxByteCount);
+            c.in("command", "hartCommand", s.hartCommand, 0, 255);
+            c.in("data bytes", "hartData", static_cast<long long>(s.hartData.size()), 0,
+                 static_cast<long long>(hart::kMaxByteCount));
             command = u8(s.hartCommand);
             data = s.hartData;
             out.writes = !hartReadsOnly(s.hartCommand);
         } else {
             if (s.width != 1 && s.width != 2 && s.width != 4)
-                return std::string("width must be 1, 2 or 4 bytes");
-            c.in("IND", s.ind, 0, 255);
-            c.in("PNU", s.pnu, 0, 255);
-            c.in("instance", s.instance, 0, 255);
+                return ComposeError{std::string("width must be 1, 2 or 4 bytes")};
+            c.in("IND", "ind", s.ind, 0, 255);
+            c.in("PNU", "pnu", s.pnu, 0, 255);
+            c.in("instance", "instance", s.instance, 0, 255);
             const hart::ValueType type = s.width == 1   ? hart::ValueType::UInt8
                                          : s.width == 2 ? hart::ValueType::UInt16
                                                         : hart::ValueType::UInt32;
             const hart::ParamRef ref{u8(s.ind), u8(s.pnu), u8(s.instance)};
             hart::ParamAccess access = hart::readParam(type, ref);
             if (s.kind == ComposeKind::HartParamWrite) {
-                c.in("value", s.value, valueMin(s.width), valueMax(s.width));
+                c.in("value", "value", s.value, valueMin(s.width), valueMax(s.width));
                 std::uint32_t raw = static_cast<std::uint32_t>(s.value);
                 if (s.width < 4)
                     raw &= (1u << (8 * s.width)) - 1u;
@@ -189,18 +196,18 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
                 out.writes = true;
             }
             if (!c.problem.empty())
-                return c.problem;
+                return c.error();
             const auto payload = hart::encodeParamAccess(access, false);
             if (!payload)
-                return payload.error().detail;
+                return ComposeError{payload.error().detail};
             command = access.command;
             data = *payload;
         }
         if (!c.problem.empty())
-            return c.problem;
+            return c.error();
         const auto bytes = hart::encodeFrame(hart::makeRequest(address, command, std::move(data)));
         if (!bytes)
-            return bytes.error().detail;
+            return ComposeError{bytes.error().detail};
         out.bytes = *bytes;
         return out;
     }
@@ -208,14 +215,14 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
     case ComposeKind::SdoDownload: {
         out.protocol = FrameFormat::Canopen;
         out.link = LinkProtocol::Canopen;
-        c.in("node", s.node, 1, 127); // CiA 301 §7.3.3: node ids 1..127
-        c.in("index", s.index, 0, 0xFFFF);
-        c.in("sub-index", s.subindex, 0, 255);
+        c.in("node", "node", s.node, 1, 127); // CiA 301 §7.3.3: node ids 1..127
+        c.in("index", "index", s.index, 0, 0xFFFF);
+        c.in("sub-index", "subindex", s.subindex, 0, 255);
         canopen::Sdo sdo = canopen::uploadRequest(u16(s.index), u8(s.subindex));
         if (s.kind == ComposeKind::SdoDownload) {
             if (s.width != 1 && s.width != 2 && s.width != 4)
-                return std::string("width must be 1, 2 or 4 bytes");
-            c.in("value", s.value, valueMin(s.width), valueMax(s.width));
+                return ComposeError{std::string("width must be 1, 2 or 4 bytes")};
+            c.in("value", "value", s.value, valueMin(s.width), valueMax(s.width));
             std::uint32_t raw = static_cast<std::uint32_t>(s.value);
             if (s.width < 4)
                 raw &= (1u << (8 * s.width)) - 1u;
@@ -224,16 +231,16 @@ Result<ComposedFrame, std::string> compose(const ComposeSpec &s)
             out.writes = true;
         }
         if (!c.problem.empty())
-            return c.problem;
+            return c.error();
         const auto bytes = canopen::encodeSdo(sdo);
         if (!bytes)
-            return bytes.error().detail;
+            return ComposeError{bytes.error().detail};
         out.bytes = *bytes;
         out.cobId = canopen::sdoRequestId(u8(s.node));
         return out;
     }
     }
-    return std::string("unknown frame kind");
+    return ComposeError{std::string("unknown frame kind")};
 }
 
 Bytes wireBytes(const ComposedFrame &frame, std::size_t imageBytes)

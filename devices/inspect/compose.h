@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vt::dev::inspect {
@@ -65,8 +66,22 @@ struct ComposedFrame
     std::optional<LinkProtocol> link;
 };
 
-// Fails with an English reason naming the field out of range.
-Result<ComposedFrame, std::string> compose(const ComposeSpec &spec);
+// Why compose() failed: an English reason as the manuals name the fields (the CLI, logs), and for a
+// field out of range the ComposeSpec member and its range, so that a window names the field as
+// it labels it ("Count" for the gateway's N).
+struct ComposeError
+{
+    explicit ComposeError(std::string why, std::string member = {}, long long low = 0,
+                          long long high = 0)
+        : reason(std::move(why)), field(std::move(member)), min(low), max(high)
+    {
+    }
+    std::string reason;
+    std::string field; // "count", "tadr" …; empty when no one field is to blame
+    long long min = 0, max = 0;
+};
+
+Result<ComposedFrame, ComposeError> compose(const ComposeSpec &spec);
 
 // The bytes the frame's link sends: the SocketCAN image on CANopen, the telegram padded to
 // `imageBytes` on the node image, the frame itself otherwise.

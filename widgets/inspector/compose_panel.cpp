@@ -1,6 +1,7 @@
 #include "compose_panel.h"
 
 #include "access/node_image_adapter.h"
+#include "compose_messages.h"
 #include "core/hex.h"
 #include "frame_detail.h"
 #include "inspect/logged_frame.h"
@@ -18,6 +19,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -147,6 +149,10 @@ void ComposePanel::setConnection(vt::model::Connection *connection,
             setModbusTcp(true);
         else if (protocol == vt::dev::LinkProtocol::ModbusRtu)
             setModbusTcp(false);
+        // The frame offered first is one this link carries.
+        if (const auto read = readKindFor(protocol);
+            read && (!m_frame || m_frame->link != protocol))
+            setKind(*read);
     }
     updateSend();
 }
@@ -221,15 +227,20 @@ std::optional<long long> ComposePanel::number(const QString &name, QString *prob
         const model::NumberParse parsed = model::parseNumber(text, model::textLanguage(), rules);
         if (!parsed.ok()) {
             if (problem && problem->isEmpty())
-                *problem = tr("%1: %2").arg(m_labels.at(name)->text().remove(QLatin1Char(':')),
-                                            parsed.refusal);
+                *problem = tr("%1: %2").arg(labelText(name), parsed.refusal);
             return std::nullopt;
         }
         return static_cast<long long>(*parsed.value);
     }
     if (!ok && problem && problem->isEmpty())
-        *problem = tr("%1: not a number").arg(m_labels.at(name)->text().remove(QLatin1Char(':')));
+        *problem = tr("%1: not a number").arg(labelText(name));
     return ok ? std::optional<long long>(v) : std::nullopt;
+}
+
+QString ComposePanel::labelText(const QString &name) const
+{
+    const auto label = m_labels.find(name);
+    return label == m_labels.end() ? QString() : label->second->text().remove(QLatin1Char(':'));
 }
 
 void ComposePanel::rebuild()
@@ -316,7 +327,8 @@ void ComposePanel::rebuild()
         if (composed)
             m_frame = std::move(*composed);
         else
-            problem = QString::fromStdString(composed.error());
+            problem = composeRefusalText(composed.error(),
+                                         [this](const QString &key) { return labelText(key); });
     }
     m_problemText = problem;
     m_problem->setText(problem);
@@ -445,22 +457,21 @@ bool ComposePanel::send()
     const bool writes = frame.writes;
     m_connection->session().submit(
         std::move(t), vt::model::Priority::User,
-        [self, writes, module, row,
+        [self, writes, module, row, spec = m_spec,
          before = row ? m_connection->access().image().value(module, row) : std::nullopt,
          value = m_spec.value](const vt::model::Outcome &o) {
             if (!self)
                 return;
             self->m_busy = false;
-            // Rendered again when the language changes while it shows.
-            self->m_resultText = [status = o.status, reason = o.reason,
-                                  device = o.reply.exceptionText,
-                                  hex = QString::fromStdString(vt::dev::toHex(o.reply.frame))] {
-                if (status == vt::model::OutcomeStatus::Ok)
-                    return tr("Answered: %1").arg(hex);
-                const QString why = device.en.empty() ? reason : vt::model::localText(device);
-                return why.isEmpty() ? vt::model::outcomeStatusText(status)
-                                     : tr("%1: %2").arg(vt::model::outcomeStatusText(status), why);
-            };
+            // The answer decoded, as the telegram list decodes it; the text is rendered again
+            // when the language changes while it shows.
+            const auto decoded = self->m_connection
+                                     ? decodeAnswer(o, self->m_connection->protocol(), spec,
+                                                    self->dictionaryOf(module))
+                                     : std::nullopt;
+            if (decoded)
+                self->m_detail->setFrame(vt::link::toByteArray(o.reply.frame), *decoded);
+            self->m_resultText = answerText(o, decoded);
             // A write may have changed the device whatever the answer: read that parameter back
             // so the device image follows; an address no dictionary names cannot be followed.
             if (writes && o.sent && self->m_connection) {
@@ -492,38 +503,17 @@ bool ComposePanel::send()
     return true;
 }
 
+const vt::dev::Dictionary *ComposePanel::dictionaryOf(int address) const
+{
+    for (const vt::model::ModuleInfo &info : m_modules)
+        if (info.address == address)
+            return info.dictionary;
+    return nullptr;
+}
+
 const vt::dev::ParamMeta *ComposePanel::writtenRow(const vt::dev::inspect::ComposeSpec &spec) const
 {
-    using vt::dev::inspect::ComposeKind;
-    const int module = moduleOf(spec);
-    const vt::dev::Dictionary *dictionary = nullptr;
-    for (const vt::model::ModuleInfo &info : m_modules)
-        if (info.address == module)
-            dictionary = info.dictionary;
-    if (!dictionary)
-        return nullptr;
-    for (const vt::dev::ParamMeta &row : dictionary->params) {
-        switch (spec.kind) {
-        case ComposeKind::GatewayWrite:
-        case ComposeKind::ModbusWrite:
-            if (row.id && *row.id == spec.id)
-                return &row;
-            break;
-        case ComposeKind::HartParamWrite:
-        case ComposeKind::PkwWrite:
-            if (row.ind && row.pnu && *row.ind == spec.ind && *row.pnu == spec.pnu &&
-                (spec.kind == ComposeKind::PkwWrite || row.instance == spec.instance))
-                return &row;
-            break;
-        case ComposeKind::SdoDownload:
-            if (row.canopen && row.canopen->index == spec.index &&
-                row.canopen->sub == spec.subindex)
-                return &row;
-            break;
-        default: return nullptr;
-        }
-    }
-    return nullptr;
+    return rowWrittenBy(dictionaryOf(moduleOf(spec)), spec);
 }
 
 void ComposePanel::retranslate()

@@ -82,6 +82,9 @@ private:
     void updateSend();
     std::optional<long long> number(const QString &name, QString *problem) const;
     int moduleOf(const vt::dev::inspect::ComposeSpec &spec) const;
+    const vt::dev::Dictionary *dictionaryOf(int address) const;
+    // A field's label as shown, without its colon ("Count"); empty for an unknown field.
+    QString labelText(const QString &name) const;
     // The dictionary row a write frame addresses on its module; null when none is known.
     const vt::dev::ParamMeta *writtenRow(const vt::dev::inspect::ComposeSpec &spec) const;
 

@@ -15,7 +15,7 @@ namespace {
 ComposedFrame built(const ComposeSpec &s)
 {
     const auto r = compose(s);
-    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error());
+    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().reason);
     return r.ok() ? *r : ComposedFrame{};
 }
 

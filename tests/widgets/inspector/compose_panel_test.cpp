@@ -88,6 +88,33 @@ TEST(ComposePanel, ReadIsSentAndAnswered)
     EXPECT_EQ(answer.bytes.at(1), 0x03);
 }
 
+// The frame first offered is one the link can send; the answer is decoded, not only hex; a field
+// out of range is named as the panel labels it ("Count", not the manual's "N").
+TEST(ComposePanel, OffersASendableFrameDecodesTheAnswerAndNamesItsFields)
+{
+    test::LoggedSim rig;
+    ASSERT_TRUE(rig.open("dma-pn-v51")); // a single DMA: Modbus RTU
+    ComposePanel panel;
+    panel.setKind(ComposeKind::PkwRead); // no link of ValveTune carries it
+    panel.setConnection(rig.connection.get());
+    EXPECT_EQ(panel.kind(), ComposeKind::ModbusRead);
+    EXPECT_TRUE(panel.canSend()) << panel.sendBlockedReason().toStdString();
+
+    panel.setFieldText("id", "7");
+    panel.setFieldText("count", "1");
+    QSignalSpy finished(&panel, &ComposePanel::sendFinished);
+    ASSERT_TRUE(panel.send());
+    ASSERT_TRUE(finished.wait(test::kWaitMs));
+    const QString text = finished.at(0).at(0).toString();
+    EXPECT_TRUE(text.startsWith(QStringLiteral("Answered: FC 3"))) << text.toStdString();
+    EXPECT_TRUE(panel.detail()->headline().contains(QStringLiteral("FC 3")))
+        << panel.detail()->headline().toStdString();
+
+    panel.setKind(ComposeKind::GatewayRead);
+    panel.setFieldText("count", "9"); // OPAT manual §2.1: at most 8
+    EXPECT_EQ(panel.problem(), QStringLiteral("Count must be 1 to 8."));
+}
+
 TEST(ComposePanel, WritesAskFirst)
 {
     test::LoggedSim rig;
