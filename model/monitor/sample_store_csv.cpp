@@ -56,6 +56,17 @@ template<typename T> void appendNumber(QByteArray &line, T value, const CsvForma
     line.append(buf, static_cast<qsizetype>(r.ptr - buf));
 }
 
+// Times in seconds to the microsecond: finer digits of a steady clock are noise, and a reader
+// should not see 196.63327260100002.
+void appendTime(QByteArray &line, double seconds, const CsvFormat &format)
+{
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, seconds, std::chars_format::fixed, 6);
+    if (format.decimal != '.')
+        std::replace(buf, r.ptr, '.', format.decimal);
+    line.append(buf, static_cast<qsizetype>(r.ptr - buf));
+}
+
 // Marker texts and channel names are one line each: a line break would end the CSV row.
 QByteArray csvField(QString text, const CsvFormat &format)
 {
@@ -160,7 +171,7 @@ bool SampleStore::writeCsv(QIODevice &out, double t0, double t1, QString *error)
     const auto putMarkersBefore = [&](double limit, bool inclusive) {
         for (; marker != markerEnd && (marker->t < limit || (inclusive && marker->t == limit));
              ++marker) {
-            appendNumber(buf, marker->t, format);
+            appendTime(buf, marker->t, format);
             buf += QByteArray(channelCount() + 1, sep) + csvField(marker->text, format) + '\n';
         }
     };
@@ -168,7 +179,7 @@ bool SampleStore::writeCsv(QIODevice &out, double t0, double t1, QString *error)
     for (qsizetype i = !(t0 <= t1) ? 0 : lowerBound(t0); i < end; ++i) {
         const double t = timeAt(i);
         putMarkersBefore(t, false); // a marker at a sample's time follows that sample
-        appendNumber(buf, t, format);
+        appendTime(buf, t, format);
         for (int c = 0; c < channelCount(); ++c) {
             buf += sep;
             const float v = column(c)[physical(i)];

@@ -12,8 +12,10 @@ namespace vt::ui {
 
 namespace {
 
-constexpr int kRowRole = Qt::UserRole + 1;    // const dev::ParamMeta *
-constexpr int kModuleRole = Qt::UserRole + 2; // int
+constexpr int kRowRole = Qt::UserRole + 1;     // const dev::ParamMeta *
+constexpr int kModuleRole = Qt::UserRole + 2;  // int
+constexpr int kFamilyRole = Qt::UserRole + 3;  // QString, on a module's row
+constexpr int kVersionRole = Qt::UserRole + 4; // QString, on a module's row
 
 const dev::ParamMeta *rowOf(const QTreeWidgetItem *item)
 {
@@ -38,9 +40,10 @@ ChannelChooser::ChannelChooser(const std::vector<model::ModuleInfo> &modules,
             continue;
         auto *top = new QTreeWidgetItem(m_tree);
         top->setData(0, kModuleRole, module.address);
-        top->setText(0, QString::number(module.address));
-        top->setText(1, QString::fromStdString(module.identification.family));
-        top->setText(2, QString::fromStdString(module.identification.version));
+        // The module's own row names it; its version belongs beside the family, not under the
+        // rows' "Unit" heading (retranslate() writes the texts).
+        top->setData(1, kFamilyRole, QString::fromStdString(module.identification.family));
+        top->setData(1, kVersionRole, QString::fromStdString(module.identification.version));
         const auto chosen = selected.find(module.address);
         for (const dev::ParamMeta *row : it->second) {
             auto *child = new QTreeWidgetItem(top);
@@ -111,6 +114,13 @@ void ChannelChooser::retranslate()
            "so more modules share the link's rate; changing a module's channels starts its "
            "recording anew."));
     m_tree->setHeaderLabels({tr("Value"), tr("Name"), tr("Unit")});
+    for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
+        QTreeWidgetItem *top = m_tree->topLevelItem(i);
+        top->setText(0, tr("Module %1").arg(top->data(0, kModuleRole).toInt()));
+        const QString family = top->data(1, kFamilyRole).toString();
+        const QString version = top->data(1, kVersionRole).toString();
+        top->setText(1, version.isEmpty() ? family : tr("%1, version %2").arg(family, version));
+    }
 }
 
 } // namespace vt::ui

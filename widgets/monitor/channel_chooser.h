@@ -28,6 +28,7 @@ public:
     ChannelSelection selection() const;
     // Checks exactly `rows` of `module` (tests and presets).
     void setChecked(int module, const std::vector<const dev::ParamMeta *> &rows);
+    QTreeWidget *tree() const { return m_tree; }
 
 protected:
     void changeEvent(QEvent *event) override;

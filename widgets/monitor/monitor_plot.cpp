@@ -1,8 +1,12 @@
 #include "monitor_plot.h"
 
+#include <QDateTime>
+#include <QFontMetrics>
 #include <QLocale>
+#include <QToolTip>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vt::ui {
 
@@ -16,6 +20,9 @@ const QColor kPalette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
                            QColor(0xbc, 0xbd, 0x22), QColor(0x17, 0xbe, 0xcf)};
 constexpr int kMinBuckets = 100;
 constexpr std::size_t kMaxMarkersDrawn = 200; // more would be an unreadable comb
+constexpr std::size_t kMarkerLanes = 4;       // label rows below the top of the plot
+constexpr int kMarkerLabelPx = 220;           // a longer journal text is shortened ("…")
+constexpr double kMarkerHoverPx = 4;          // the mouse this near a marker line shows its text
 const QColor kMarkerColor(0x60, 0x60, 0x60);
 
 } // namespace
@@ -167,13 +174,20 @@ void MonitorPlot::removeMarkerItems()
 void MonitorPlot::setMarkers(const std::vector<model::SampleMarker> &markers)
 {
     removeMarkerItems();
+    m_shownMarkers.clear();
     const QCPRange range = xAxis->range();
+    const QFontMetrics metrics(font());
+    // Labels take the first of a few lanes below the top where they do not touch the label
+    // before them; one that fits nowhere keeps its line, its text is on hover.
+    std::vector<double> laneEnd(kMarkerLanes, -std::numeric_limits<double>::infinity());
     std::size_t drawn = 0;
     for (const model::SampleMarker &marker : markers) {
         if (marker.t < range.lower || marker.t > range.upper)
             continue;
         if (drawn == kMaxMarkersDrawn)
             break;
+        ++drawn;
+        m_shownMarkers.push_back(marker);
         auto *line = new QCPItemLine(this);
         line->start->setTypeX(QCPItemPosition::ptPlotCoords);
         line->start->setTypeY(QCPItemPosition::ptAxisRectRatio);
@@ -182,22 +196,77 @@ void MonitorPlot::setMarkers(const std::vector<model::SampleMarker> &markers)
         line->start->setCoords(marker.t, 0);
         line->end->setCoords(marker.t, 1);
         line->setPen(QPen(kMarkerColor, 1, Qt::DotLine));
-        auto *text = new QCPItemText(this);
-        text->position->setTypeX(QCPItemPosition::ptPlotCoords);
-        text->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-        // Staggered, so neighbouring markers' texts do not sit on each other.
-        text->position->setCoords(marker.t, 0.02 + 0.05 * static_cast<double>(drawn % 4));
+        m_markerItems.push_back(line);
+
+        const QString label = metrics.elidedText(marker.text, Qt::ElideRight, kMarkerLabelPx);
+        const double x = xAxis->coordToPixel(marker.t);
+        const double width = metrics.horizontalAdvance(label) + 6;
         // Texts in the right half open to the left, so they are not cut at the plot's edge.
         const bool rightHalf = marker.t > range.center();
+        const double left = rightHalf ? x - width : x;
+        const auto lane = std::find_if(laneEnd.begin(), laneEnd.end(),
+                                       [&](double end) { return left > end + 4; });
+        if (lane == laneEnd.end())
+            continue;
+        *lane = left + width;
+        auto *text = new QCPItemText(this);
+        text->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        text->position->setTypeY(QCPItemPosition::ptAbsolute);
+        text->position->setCoords(marker.t, axisRect()->top() + 2 +
+                                                static_cast<double>(lane - laneEnd.begin()) *
+                                                    (metrics.height() + 3));
         text->setPositionAlignment((rightHalf ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
-        text->setText(marker.text);
+        text->setText(label);
         text->setColor(kMarkerColor.darker(150));
         text->setBrush(QBrush(QColor(255, 255, 255, 200)));
         text->setClipToAxisRect(true);
-        m_markerItems.push_back(line);
         m_markerItems.push_back(text);
-        ++drawn;
     }
+}
+
+QString MonitorPlot::markerTextNear(double pixelX) const
+{
+    QStringList texts;
+    for (const model::SampleMarker &marker : m_shownMarkers)
+        if (std::abs(xAxis->coordToPixel(marker.t) - pixelX) <= kMarkerHoverPx)
+            texts << marker.text;
+    return texts.join(QLatin1Char('\n'));
+}
+
+void MonitorPlot::setModules(const std::vector<model::ModuleInfo> &modules)
+{
+    m_modules = modules;
+}
+
+QString MonitorPlot::exportTitle(const QDateTime &when) const
+{
+    QStringList modules;
+    for (const model::ModuleInfo &m : m_modules)
+        modules << tr("module %1 (%2 %3)")
+                       .arg(m.address)
+                       .arg(QString::fromStdString(m.identification.family),
+                            QString::fromStdString(m.identification.version));
+    const QString time = when.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+    return modules.isEmpty()
+               ? tr("ValveTune monitor, %1").arg(time)
+               : tr("ValveTune monitor: %1, %2").arg(modules.join(QStringLiteral(", ")), time);
+}
+
+bool MonitorPlot::exportWithTitle(const std::function<bool(int, int)> &save)
+{
+    // The file says what it shows and when: a title row above the plot while it is written.
+    auto *title = new QCPTextElement(this, exportTitle(QDateTime::currentDateTime()));
+    title->setObjectName(QStringLiteral("exportTitle"));
+    plotLayout()->insertRow(0);
+    plotLayout()->addElement(0, 0, title);
+    const QSize s = exportSize();
+    const QCPLayoutElement *element = title; // the size hint is public on the base
+    const bool ok = save(s.width(), s.height() + element->minimumOuterSizeHint().height());
+    m_lastExportTitle = title->text();
+    plotLayout()->remove(title);
+    plotLayout()->simplify();
+    replot();
+    return ok;
 }
 
 qsizetype MonitorPlot::pointCount() const
@@ -258,8 +327,15 @@ void MonitorPlot::setCursorAt(std::optional<double> t)
 void MonitorPlot::mouseMoveEvent(QMouseEvent *event)
 {
     QCustomPlot::mouseMoveEvent(event);
-    if (axisRect()->rect().contains(event->pos()) && event->buttons() == Qt::NoButton)
+    if (axisRect()->rect().contains(event->pos()) && event->buttons() == Qt::NoButton) {
         emit hovered(xAxis->pixelToCoord(event->position().x()));
+        // A journal entry's whole text, however its label was shortened or left out.
+        const QString text = markerTextNear(event->position().x());
+        if (!text.isEmpty())
+            QToolTip::showText(event->globalPosition().toPoint(), text, this);
+        else
+            QToolTip::hideText();
+    }
 }
 
 QSize MonitorPlot::exportSize() const
@@ -269,14 +345,12 @@ QSize MonitorPlot::exportSize() const
 
 bool MonitorPlot::exportPng(const QString &path)
 {
-    const QSize s = exportSize();
-    return savePng(path, s.width(), s.height());
+    return exportWithTitle([&](int w, int h) { return savePng(path, w, h); });
 }
 
 bool MonitorPlot::exportPdf(const QString &path)
 {
-    const QSize s = exportSize();
-    return savePdf(path, s.width(), s.height());
+    return exportWithTitle([&](int w, int h) { return savePdf(path, w, h); });
 }
 
 } // namespace vt::ui

@@ -5,8 +5,11 @@
 #pragma once
 
 #include "model/monitor/sample_store.h"
+#include "model/session/device_access.h"
 
+#include <QDateTime>
 #include <QString>
+#include <functional>
 #include <optional>
 #include <qcustomplot.h>
 #include <vector>
@@ -59,9 +62,16 @@ public:
     void setCursorAt(std::optional<double> t);
     std::optional<double> cursorTime() const { return m_cursorTime; }
 
-    // Exports at the widget's size (or 1000 × 600 while it has none yet).
+    // Exports at the widget's size (or 1000 × 600 while it has none yet), with a title that
+    // names the modules, the date and the time.
     bool exportPng(const QString &path);
     bool exportPdf(const QString &path);
+    // The modules the plot shows, for the export's title.
+    void setModules(const std::vector<model::ModuleInfo> &modules);
+    QString exportTitle(const QDateTime &when) const;
+    QString lastExportTitle() const { return m_lastExportTitle; }
+    // The whole text of the journal markers within a few pixels of `pixelX` (the hover text).
+    QString markerTextNear(double pixelX) const;
 
     // Labels follow the language (the time axis title).
     void retranslate();
@@ -77,10 +87,14 @@ private:
     QCPAxis *axisFor(const QString &unit);
     void removeMarkerItems();
     QSize exportSize() const;
+    bool exportWithTitle(const std::function<bool(int width, int height)> &save);
 
     std::vector<PlotChannel> m_channels;
     std::vector<std::pair<QString, QCPAxis *>> m_unitAxes; // in order of first use
     std::vector<QCPAbstractItem *> m_markerItems;
+    std::vector<model::SampleMarker> m_shownMarkers; // inside the time axis, in order
+    std::vector<model::ModuleInfo> m_modules;
+    QString m_lastExportTitle;
     QCPItemLine *m_cursorLine = nullptr;
     std::optional<double> m_cursorTime;
     bool m_decimate = true;

@@ -157,6 +157,7 @@ void MonitorView::setConnection(model::Connection *c, std::vector<model::ModuleI
     m_session->setRate(m_rate->value());
     m_session->setConnection(c, modules);
     m_step->setConnection(c ? &c->access() : nullptr, modules);
+    m_plot->setModules(modules);
     setFollowing(true);
     updateControls();
     updateRateLabel();

@@ -22,6 +22,9 @@ StepControl::StepControl(QWidget *parent) : QWidget(parent)
     m_title = new QLabel(this);
     m_module = new QComboBox(this);
     m_row = new QComboBox(this);
+    // Filled after the first show: sized to the texts they get, not to the empty combo.
+    m_module->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_row->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_value = new NumberBox(this);
     m_value->setKeyboardTracking(false);
     m_write = new QPushButton(this);
@@ -74,7 +77,7 @@ void StepControl::setConnection(model::DeviceAccess *access,
         if (!model::SetValueStep::setValueRows(*module.dictionary, module.identification.mode)
                  .empty()) {
             m_modules.push_back(module);
-            m_module->addItem(tr("module %1").arg(module.address), module.address);
+            m_module->addItem(tr("Module %1").arg(module.address), module.address);
         } else {
             without.push_back(module);
         }
@@ -393,6 +396,8 @@ void StepControl::retranslate()
 {
     m_title->setText(tr("Step:"));
     m_write->setText(tr("Write step"));
+    for (int i = 0; i < m_module->count(); ++i)
+        m_module->setItemText(i, tr("Module %1").arg(m_module->itemData(i).toInt()));
     m_write->setToolTip(
         tr("Writes the bus set value (range-checked, read back) and marks it on the time axis, "
            "after checking that the module takes its set value from the bus."));
@@ -408,8 +413,6 @@ void StepControl::retranslate()
     m_activate->setText(tr("Set %1 = %2").arg(name, value));
     m_activate->setToolTip(
         tr("Makes the bus set value the one that drives the valve (%1 = %2).").arg(name, value));
-    for (int i = 0; i < m_module->count(); ++i)
-        m_module->setItemText(i, tr("module %1").arg(m_module->itemData(i).toInt()));
     if (m_statusRender && m_status->text() == m_statusShown)
         showStatus(m_statusRender);
 }

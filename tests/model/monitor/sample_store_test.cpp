@@ -293,14 +293,18 @@ TEST(SampleStore, CsvRoundTripWithMarkers)
     EXPECT_EQ(back->channels(), s.channels());
     ASSERT_EQ(back->size(), s.size());
     for (qsizetype i = 0; i < s.size(); ++i) {
-        EXPECT_EQ(back->timeAt(i), s.timeAt(i));
+        EXPECT_NEAR(back->timeAt(i), s.timeAt(i), 0.5e-6); // times to the microsecond
         for (int c = 0; c < 3; ++c) {
             const double a = s.valueAt(c, i);
             const double b = back->valueAt(c, i);
             EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << i << ' ' << c;
         }
     }
-    EXPECT_EQ(back->markers(), s.markers());
+    ASSERT_EQ(back->markers().size(), s.markers().size());
+    for (std::size_t m = 0; m < s.markers().size(); ++m) {
+        EXPECT_NEAR(back->markers()[m].t, s.markers()[m].t, 0.5e-6);
+        EXPECT_EQ(back->markers()[m].text, s.markers()[m].text);
+    }
 
     // A range export holds only the rows and markers of the range.
     QBuffer part;
@@ -313,7 +317,18 @@ TEST(SampleStore, CsvRoundTripWithMarkers)
     ASSERT_TRUE(range.has_value());
     EXPECT_EQ(range->size(), 10);
     EXPECT_EQ(range->markers().size(), 1u);
-    EXPECT_EQ(range->firstTime(), s.timeAt(5));
+    EXPECT_NEAR(range->firstTime(), s.timeAt(5), 0.5e-6);
+}
+
+// A steady clock's time is written to the microsecond, not with every digit of the double.
+TEST(SampleStore, CsvTimesHaveMicrosecondPrecision)
+{
+    SampleStore s(channels(1), 10);
+    appendRow(s, 196.63327260100002, {1.0});
+    const QByteArray csv = csvOf(s);
+    EXPECT_TRUE(csv.contains("\n196.633273,1,\n")) << csv.toStdString();
+    EXPECT_TRUE(csvOf(s, QLocale::German).contains("\n196,633273;1;\n"))
+        << csvOf(s, QLocale::German).toStdString();
 }
 
 TEST(SampleStore, CsvReaderIsBoundedAndRejectsGarbage)
@@ -375,7 +390,7 @@ TEST(SampleStore, GermanCsvUsesSemicolonAndDecimalCommaAndRoundTrips)
         "# channel;d1.8;value 1;%\n"
         "time_s;d1.7;d1.8;marker\n"))
         << csv.toStdString();
-    EXPECT_TRUE(csv.contains("\n0,125000001;-1,5;1e-07;\n")) << csv.toStdString();
+    EXPECT_TRUE(csv.contains("\n0,125000;-1,5;1e-07;\n")) << csv.toStdString(); // µs
     EXPECT_FALSE(csv.contains("0.125")) << "no decimal point in a German file";
     EXPECT_TRUE(csv.contains(";\"C1.13 1,20 → 1,50; Test\"\n")) << csv.toStdString();
 
@@ -385,14 +400,16 @@ TEST(SampleStore, GermanCsvUsesSemicolonAndDecimalCommaAndRoundTrips)
     EXPECT_EQ(back->channels(), s.channels());
     ASSERT_EQ(back->size(), s.size());
     for (qsizetype i = 0; i < s.size(); ++i) {
-        EXPECT_EQ(back->timeAt(i), s.timeAt(i));
+        EXPECT_NEAR(back->timeAt(i), s.timeAt(i), 0.5e-6);
         for (int c = 0; c < 2; ++c) {
             const double a = s.valueAt(c, i);
             const double b = back->valueAt(c, i);
             EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << i << ' ' << c;
         }
     }
-    EXPECT_EQ(back->markers(), s.markers());
+    ASSERT_EQ(back->markers().size(), 1u);
+    EXPECT_NEAR(back->markers().front().t, s.markers().front().t, 0.5e-6);
+    EXPECT_EQ(back->markers().front().text, s.markers().front().text);
 
     // A decimal point in a German file is refused, not read as a different number.
     QByteArray pointed = csv;
