@@ -29,15 +29,18 @@ CurveBinding::CurveBinding(ParameterDocument &document, LCurveTableModel &curves
                     return;
                 m_curves.setRowValue(row, displayOf(*row));
             });
-    connect(
-        &m_curves, &LCurveTableModel::rowsEdited, this, [this](const QList<LCurveRowEdit> &edits) {
-            std::vector<std::pair<const dev::ParamMeta *, double>> values;
-            for (const LCurveRowEdit &e : edits) {
-                const double factor = e.row->scale.factor != 0 ? e.row->scale.factor : 1.0;
-                values.emplace_back(e.row, std::round(e.display / factor));
-            }
-            m_document.editNumbers(m_module, values, [] { return tr("Edit linearisation curve"); });
-        });
+    connect(&m_curves, &LCurveTableModel::rowsEdited, this,
+            [this](const QList<LCurveRowEdit> &edits) {
+                std::vector<std::pair<const dev::ParamMeta *, double>> values;
+                for (const LCurveRowEdit &e : edits) {
+                    const double factor = e.row->scale.factor != 0 ? e.row->scale.factor : 1.0;
+                    values.emplace_back(e.row, std::round(e.display / factor));
+                }
+                m_document.editNumbers(m_module, values,
+                                       [address = m_document.module(m_module).address] {
+                                           return tr("module %1 linearisation curve").arg(address);
+                                       });
+            });
 }
 
 std::optional<double> CurveBinding::displayOf(const dev::ParamMeta &row) const
@@ -58,11 +61,13 @@ void CurveBinding::reload()
 {
     if (m_module < 0 || m_module >= m_document.moduleCount()) {
         m_curves.setCurves({});
+        emit moduleShown(-1);
         return;
     }
     const ParamModule &m = m_document.module(m_module);
     m_curves.setDictionary(*m.dictionary, dev::majorVersion(m.version), m.mode);
     m_curves.setValues([this](const dev::ParamMeta &row) { return displayOf(row); });
+    emit moduleShown(m.address);
 }
 
 } // namespace vt::model

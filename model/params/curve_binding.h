@@ -23,6 +23,10 @@ public:
     void setModule(int module);
     int module() const { return m_module; }
 
+signals:
+    // The module shown now (its address); -1: none.
+    void moduleShown(int address);
+
 private:
     void reload();
     std::optional<double> displayOf(const dev::ParamMeta &row) const;

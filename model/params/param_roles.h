@@ -16,13 +16,14 @@ enum ParamRole {
     UnitRole,       // QString
     EnumLabelsRole, // QVariantList of QVariantMap{value, text}
     BitLabelsRole,  // QVariantList of QVariantMap{bit, text} (bit-field rows)
-    ReadOnlyRole,   // bool: not writable (greyed, no editor)
+    ReadOnlyRole,   // bool: not writable (no editor; greyed unless live)
     InactiveRole,   // bool: x / n rows, or not for this version/mode
     ChangedRole,    // bool: working value differs from the file (or, without one, the first read)
     DiffersFromDeviceRole, // bool: working value differs from the device's last known value
     HelpRole,              // QString: description, address, range, access for the help pane
     SearchTextRole,        // QString: name, label and description for the search box
     NodeKindRole,          // int: NodeKind
+    LiveRole,              // bool: a live value (status the module updates; the delegate marks it)
 };
 
 enum class NodeKind { Module = 1, Block = 2, Branch = 3, Parameter = 4 };

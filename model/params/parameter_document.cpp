@@ -400,8 +400,11 @@ std::optional<QString> ParameterDocument::edit(int module, const dev::ParamMeta 
     const auto before = this->value(module, row);
     if (sameValue(before, value))
         return std::nullopt;
-    const UndoText text = [this, row, value] {
-        return tr("Set %1 to %2")
+    // The module is named: a node has the same parameter on every module.
+    const UndoText text = [this, address = m_modules[static_cast<std::size_t>(module)].address, row,
+                           value] {
+        return tr("module %1 %2 = %3")
+            .arg(address)
             .arg(QString::fromStdString(row->name),
                  QString::fromStdString(valueText(*row, value, m_language)));
     };

@@ -31,6 +31,12 @@ bool isBitField(const dev::ParamMeta &row)
     return !row.bits.empty() && row.enums.empty();
 }
 
+// A row the module updates at run time (the editor polls it while connected).
+bool isLive(const ParamModule &m, const dev::ParamMeta &row)
+{
+    return row.kind == dev::RowKind::Live && m.active(row);
+}
+
 } // namespace
 
 QString formatRaw(const dev::ParamMeta &row, const dev::RawValue &value, dev::Language lang)
@@ -395,6 +401,9 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
         if (column == ColDevice)
             if (const QString age = deviceAgeText(module, row); !age.isEmpty())
                 return age;
+        if (column == ColValue && isLive(m, row))
+            return tr("Live value: read from the module again and again while connected.") +
+                   QStringLiteral("\n\n") + helpText(module, row);
         return helpText(module, row);
     case HelpRole: return helpText(module, row);
     case Qt::ForegroundRole:
@@ -402,7 +411,8 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
         if (column == ColDevice && m_document.value(module, &row, Layer::Device) &&
             !m_document.deviceCurrent(module, &row))
             return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
-        if (!row.writable() || !m.active(row))
+        // Grey is for what can be neither edited nor watched: a live value reads as live.
+        if ((!row.writable() && !isLive(m, row)) || !m.active(row))
             return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
         return {};
     case Qt::FontRole:
@@ -452,6 +462,7 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
     }
     case ReadOnlyRole: return !row.writable() || !m.active(row);
     case InactiveRole: return !m.active(row);
+    case LiveRole: return isLive(m, row);
     case ChangedRole: return m_document.changed(module, &row);
     case DiffersFromDeviceRole: return m_document.differsFromDevice(module, &row);
     case SearchTextRole:

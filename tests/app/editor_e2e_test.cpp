@@ -26,6 +26,7 @@
 #include <QAction>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -277,6 +278,32 @@ TEST_F(EditorE2E, FileOfAnotherVersionReportsWhatDidNotMap)
     auto reread = model::readParamFile(again, dev::Language::English);
     ASSERT_TRUE(reread.ok());
     ASSERT_NE(reread->modules[0].find("C1.99"), nullptr);
+}
+
+// Compare: "Tick All" only ticks, and the Apply button and the line above it say what applying
+// will change (how many values, into the document, not the device).
+TEST_F(EditorE2E, CompareSaysWhatApplyWillChange)
+{
+    connectSimulator();
+    const auto device = working("C1.07");
+    typeValue("C1.07", QStringLiteral("2.5"));
+    ASSERT_NE(working("C1.07"), device);
+    qRegisterMetaType<ui::CompareDialog *>();
+    QSignalSpy compared(&window->device(), &app::DeviceController::compareDialogOpened);
+    window->device().compareWithDevice();
+    ASSERT_TRUE(compared.wait(kWaitMs));
+    auto *compare = window->findChild<ui::CompareDialog *>();
+    ASSERT_NE(compare, nullptr);
+    ASSERT_EQ(compare->compareModel()->rowCount(), 1);
+    EXPECT_FALSE(compare->applyButton()->isEnabled());
+    compare->findChild<QPushButton *>(QStringLiteral("compareTickAll"))->click();
+    EXPECT_EQ(working("C1.07"), dev::RawValue{2500.0}); // ticking changes nothing yet
+    EXPECT_TRUE(compare->applyButton()->isEnabled());
+    EXPECT_EQ(compare->applyButton()->text(), "Apply 1 Ticked Value");
+    EXPECT_TRUE(compare->effectLabel()->text().contains(QStringLiteral("Write Changes")))
+        << compare->effectLabel()->text().toStdString();
+    compare->applyButton()->click();
+    EXPECT_EQ(working("C1.07"), device);
 }
 
 } // namespace

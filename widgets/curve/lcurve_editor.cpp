@@ -8,6 +8,7 @@
 #include <QEvent>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -18,6 +19,7 @@ LCurveEditor::LCurveEditor(QWidget *parent) : QWidget(parent)
 {
     m_plot = new LCurvePlot(this);
     m_table = new QTableView(this);
+    m_table->setObjectName(QStringLiteral("curveTable"));
     auto *delegate = new LCurveDelegate(m_table);
     m_table->setItemDelegate(delegate);
     connect(delegate, &LCurveDelegate::refused, this,
@@ -31,12 +33,18 @@ LCurveEditor::LCurveEditor(QWidget *parent) : QWidget(parent)
     m_table->setSizePolicy(QSizePolicy::Maximum, QSizePolicy::Expanding);
     m_plot->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 
+    // The branch chosen in the table is the one a drag grabs where both curves overlap.
+    connect(m_table, &QTableView::clicked, this, [this](const QModelIndex &index) {
+        if (m_model)
+            m_plot->setPreferredCurve(m_model->curveOfColumn(index.column()));
+    });
     connect(m_plot, &LCurvePlot::pointPicked, this, [this](int curve, int index) {
         if (m_model)
             m_table->setCurrentIndex(m_model->indexOf(curve, index, model::LAxis::Y));
     });
 
     auto *splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->setObjectName(QStringLiteral("curveSplitter"));
     splitter->addWidget(m_plot);
     splitter->addWidget(m_table);
     splitter->setStretchFactor(0, 1);
@@ -60,7 +68,14 @@ LCurveEditor::LCurveEditor(QWidget *parent) : QWidget(parent)
     m_noCurve->setVisible(false);
     m_views = splitter;
 
+    m_subject = new QLabel(this);
+    m_subject->setObjectName(QStringLiteral("curveModule"));
+    QFont bold = m_subject->font();
+    bold.setBold(true);
+    m_subject->setFont(bold);
+
     auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_subject);
     layout->addWidget(splitter, 1);
     layout->addWidget(m_noCurve, 1);
     layout->addWidget(m_hint);
@@ -106,6 +121,24 @@ void LCurveEditor::showWhetherCurves()
     m_noCurve->setVisible(none);
     m_views->setVisible(!none);
     m_hint->setVisible(!none);
+    // The table as wide as its columns: the splitter sizes it by its minimum, not its hint.
+    int width = m_table->verticalHeader()->sizeHint().width() + 2 * m_table->frameWidth() +
+                m_table->verticalScrollBar()->sizeHint().width() + 4;
+    const QAbstractItemView *view = m_table; // sizeHintForColumn is public here
+    for (int c = 0; m_model && c < m_model->columnCount(); ++c)
+        width += qMax(view->sizeHintForColumn(c), m_table->horizontalHeader()->sectionSizeHint(c));
+    m_table->setMinimumWidth(width);
+}
+
+void LCurveEditor::setModule(int address)
+{
+    m_address = address;
+    retranslate();
+}
+
+QString LCurveEditor::moduleText() const
+{
+    return m_subject->text();
 }
 
 QString LCurveEditor::message() const
@@ -135,6 +168,15 @@ void LCurveEditor::retranslate()
         tr("Drag a point or type its coordinates. Input x must rise from point to "
            "point; grey coordinates are fixed by the device. Whether the module applies "
            "the curve depends on the branch's Linearization parameter (C1.02 / C2.02)."));
+    if (!m_subject)
+        return;
+    const dev::Dictionary *dictionary = m_model ? m_model->dictionary() : nullptr;
+    m_subject->setText(m_address < 0 ? tr("No module chosen: choose one in the node view.")
+                       : !dictionary ? tr("Module %1").arg(m_address)
+                                     : tr("Module %1: %2")
+                                           .arg(m_address)
+                                           .arg(QString::fromStdString(
+                                               dictionary->title.in(model::textLanguage()))));
 }
 
 } // namespace vt::ui

@@ -32,6 +32,10 @@ public:
     QString message() const;
     // The "no linearisation curve" sentence, empty while the module has curves or none is chosen.
     QString noCurveText() const;
+    // Names the module whose curves are shown (address -1: none) above the views, with its
+    // parameter list's title in the UI language.
+    void setModule(int address);
+    QString moduleText() const;
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -43,6 +47,8 @@ private:
 
     LCurvePlot *m_plot = nullptr;
     QTableView *m_table = nullptr;
+    QLabel *m_subject = nullptr;
+    int m_address = -1;
     QLabel *m_hint = nullptr;
     QLabel *m_message = nullptr;
     QLabel *m_noCurve = nullptr;

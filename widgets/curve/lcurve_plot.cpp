@@ -141,6 +141,9 @@ std::optional<LCurvePlot::Pick> LCurvePlot::pickAt(const QPointF &pos) const
 {
     if (!m_model)
         return std::nullopt;
+    // The nearest point; points closer to each other than a pixel (the branches' curves
+    // overlap) go to the preferred curve.
+    constexpr double kSamePixel = 1.0;
     std::optional<Pick> best;
     double bestDistance = kPickRadiusPx;
     for (std::size_t c = 0; c < m_model->curves().size(); ++c) {
@@ -153,7 +156,11 @@ std::optional<LCurvePlot::Pick> LCurvePlot::pickAt(const QPointF &pos) const
             const double dx = xAxis->coordToPixel(*values[i].x) - pos.x();
             const double dy = yAxis->coordToPixel(*values[i].y) - pos.y();
             const double d = std::hypot(dx, dy);
-            if (d <= bestDistance) {
+            const bool tie = best && std::abs(d - bestDistance) < kSamePixel;
+            const bool wins =
+                tie ? static_cast<int>(c) == m_preferredCurve && best->curve != m_preferredCurve
+                    : d <= bestDistance;
+            if (wins) {
                 bestDistance = d;
                 best = Pick{static_cast<int>(c), static_cast<int>(i)};
             }
@@ -169,6 +176,7 @@ void LCurvePlot::mousePressEvent(QMouseEvent *event)
             const double x = *m_model->value(pick->curve, pick->index, model::LAxis::X);
             const double y = *m_model->value(pick->curve, pick->index, model::LAxis::Y);
             m_drag = Drag{pick->curve, pick->index, x, y, x, y, event->position(), false};
+            m_preferredCurve = pick->curve;
             setCursor(Qt::ClosedHandCursor);
             emit pointPicked(pick->curve, pick->index);
             event->accept();

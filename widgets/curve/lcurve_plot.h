@@ -29,6 +29,11 @@ public:
     // Pixels around a point that still grab it.
     static constexpr double kPickRadiusPx = 10;
 
+    // The curve whose point wins where points of both branches lie on the same pixel: the one
+    // selected in the table or grabbed last (the first curve until then).
+    void setPreferredCurve(int curve) { m_preferredCurve = curve; }
+    int preferredCurve() const { return m_preferredCurve; }
+
 signals:
     // The user grabbed a point (the editor selects it in the table).
     void pointPicked(int curve, int index);
@@ -67,6 +72,7 @@ private:
     std::vector<QCPGraph *> m_graphs; // owned by the plot
     QCPGraph *m_linear = nullptr;     // the identity line, for reference
     std::optional<Drag> m_drag;
+    int m_preferredCurve = 0;
 };
 
 } // namespace vt::ui

@@ -22,23 +22,45 @@ CompareDialog::CompareDialog(model::ParameterDocument &document, QWidget *parent
     m_table->setModel(m_model);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
+    m_effect = new QLabel(this);
+    m_effect->setObjectName(QStringLiteral("compareEffect"));
+    m_effect->setWordWrap(true);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    QPushButton *all = buttons->addButton(tr("Take All"), QDialogButtonBox::ActionRole);
-    QPushButton *none = buttons->addButton(tr("Take None"), QDialogButtonBox::ActionRole);
-    QPushButton *apply = buttons->addButton(tr("Apply Chosen"), QDialogButtonBox::ApplyRole);
-    apply->setObjectName(QStringLiteral("compareApply"));
+    // Ticking only chooses; the Apply button says what it will do, with how many values.
+    QPushButton *all = buttons->addButton(tr("Tick All"), QDialogButtonBox::ActionRole);
+    all->setObjectName(QStringLiteral("compareTickAll"));
+    QPushButton *none = buttons->addButton(tr("Tick None"), QDialogButtonBox::ActionRole);
+    m_apply = buttons->addButton(QString(), QDialogButtonBox::ApplyRole);
+    m_apply->setObjectName(QStringLiteral("compareApply"));
     connect(all, &QPushButton::clicked, this, [this] { m_model->setAllTaken(true); });
     connect(none, &QPushButton::clicked, this, [this] { m_model->setAllTaken(false); });
-    connect(apply, &QPushButton::clicked, this, [this] {
+    connect(m_apply, &QPushButton::clicked, this, [this] {
         m_model->applyTaken();
         updateSummary();
     });
+    connect(m_model, &QAbstractItemModel::dataChanged, this, &CompareDialog::updateApply);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &CompareDialog::updateApply);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
     layout->addWidget(m_table, 1);
+    layout->addWidget(m_effect);
     layout->addWidget(buttons);
-    resize(900, 500);
+    resize(1000, 560);
+    updateApply();
+}
+
+void CompareDialog::updateApply()
+{
+    const int n = m_model->takenCount();
+    m_apply->setText(tr("Apply %n Ticked Value(s)", nullptr, n));
+    m_apply->setEnabled(n > 0);
+    m_effect->setText(
+        n == 0 ? tr("Tick the values to take; nothing changes until you apply them.")
+               : tr("Apply puts %n ticked value(s) into this document as one step (Edit ▸ Undo "
+                    "takes it back). Nothing is written to the device until Device ▸ Write "
+                    "Changes.",
+                    nullptr, n));
 }
 
 void CompareDialog::compareWithDevice()

@@ -7,6 +7,7 @@
 #include <QDialog>
 
 class QLabel;
+class QPushButton;
 class QTableView;
 
 namespace vt::model {
@@ -28,12 +29,18 @@ public:
     void compareWithDevice();
     void compareWithFile(const dev::files::ParamFile &file, const QString &name);
 
+    QPushButton *applyButton() const { return m_apply; }
+    QLabel *effectLabel() const { return m_effect; }
+
 private:
     void updateSummary();
+    void updateApply();
 
     model::CompareModel *m_model = nullptr;
     QTableView *m_table = nullptr;
     QLabel *m_summary = nullptr;
+    QLabel *m_effect = nullptr;
+    QPushButton *m_apply = nullptr;
 };
 
 } // namespace vt::ui

@@ -6,6 +6,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QLocale>
+#include <QPainter>
 
 namespace vt::ui {
 namespace {
@@ -32,6 +33,22 @@ QString rangeHint(const QModelIndex &index)
 
 ParamDelegate::ParamDelegate(QObject *parent) : QStyledItemDelegate(parent)
 {
+}
+
+void ParamDelegate::paint(QPainter *painter, const QStyleOptionViewItem &option,
+                          const QModelIndex &index) const
+{
+    QStyledItemDelegate::paint(painter, option, index);
+    if (!index.data(model::LiveRole).toBool())
+        return;
+    const int d = qMax(4, option.rect.height() / 4);
+    const QRect dot(option.rect.right() - d - 4, option.rect.center().y() - d / 2, d, d);
+    painter->save();
+    painter->setRenderHint(QPainter::Antialiasing);
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(QColor(46, 160, 67)); // a quiet green, the colour of "running"
+    painter->drawEllipse(dot);
+    painter->restore();
 }
 
 QWidget *ParamDelegate::createEditor(QWidget *parent, const QStyleOptionViewItem &option,

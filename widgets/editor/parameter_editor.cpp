@@ -13,9 +13,14 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSplitter>
+#include <QStyle>
 #include <QTextBrowser>
+#include <QTimer>
 #include <QTreeView>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <functional>
+#include <iterator>
 
 namespace vt::ui {
 
@@ -62,6 +67,14 @@ ParameterEditor::ParameterEditor(model::ParameterDocument &document, QWidget *pa
             emit showFramesRequested(module, QString::fromStdString(row->name));
     });
 
+    // F1 on a parameter: its help beside the tree, opened again if the user had closed it.
+    auto *helpAction = new QAction(m_view);
+    helpAction->setObjectName(QStringLiteral("actionParameterHelp"));
+    helpAction->setShortcut(QKeySequence::HelpContents);
+    helpAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_view->addAction(helpAction);
+    connect(helpAction, &QAction::triggered, this, &ParameterEditor::showHelpOfCurrent);
+
     m_message = new QLabel(this);
     m_message->setObjectName(QStringLiteral("editorMessage"));
     m_message->setWordWrap(true);
@@ -85,6 +98,8 @@ ParameterEditor::ParameterEditor(model::ParameterDocument &document, QWidget *pa
     leftLayout->addWidget(m_message);
 
     auto *splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter = splitter;
+    splitter->setObjectName(QStringLiteral("editorSplitter"));
     splitter->addWidget(left);
     splitter->addWidget(m_help);
     splitter->setStretchFactor(0, 4);
@@ -94,18 +109,42 @@ ParameterEditor::ParameterEditor(model::ParameterDocument &document, QWidget *pa
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(splitter);
 
-    connect(m_search, &QLineEdit::textChanged, m_filter,
-            &model::ParameterFilterModel::setSearchText);
+    // A filter brings rows back collapsed: each change restores the blocks the user had open
+    // (a search shows every match, opened).
     connect(m_search, &QLineEdit::textChanged, this, [this](const QString &text) {
-        if (!text.isEmpty())
-            m_view->expandAll();
+        m_filter->setSearchText(text);
+        restoreExpansion();
     });
-    connect(m_changedOnly, &QCheckBox::toggled, m_filter,
-            &model::ParameterFilterModel::setChangedOnly);
-    connect(m_differsOnly, &QCheckBox::toggled, m_filter,
-            &model::ParameterFilterModel::setDiffersFromDeviceOnly);
-    connect(m_showInactive, &QCheckBox::toggled, m_filter,
-            &model::ParameterFilterModel::setShowInactive);
+    connect(m_changedOnly, &QCheckBox::toggled, this, [this](bool on) {
+        m_filter->setChangedOnly(on);
+        restoreExpansion();
+    });
+    connect(m_differsOnly, &QCheckBox::toggled, this, [this](bool on) {
+        m_filter->setDiffersFromDeviceOnly(on);
+        restoreExpansion();
+    });
+    connect(m_showInactive, &QCheckBox::toggled, this, [this](bool on) {
+        m_filter->setShowInactive(on);
+        restoreExpansion();
+    });
+    connect(m_view, &QTreeView::expanded, this, [this](const QModelIndex &index) {
+        if (!m_restoring && m_search->text().isEmpty())
+            m_expanded.insert(expansionKey(index));
+    });
+    connect(m_view, &QTreeView::collapsed, this, [this](const QModelIndex &index) {
+        if (!m_restoring && m_search->text().isEmpty())
+            m_expanded.remove(expansionKey(index));
+    });
+    // Rows a value change lets through the "changed" filters come back as the user left them.
+    connect(m_filter, &QAbstractItemModel::rowsInserted, this, [this] {
+        if (m_restorePending)
+            return;
+        m_restorePending = true;
+        QTimer::singleShot(0, this, [this] {
+            m_restorePending = false;
+            restoreExpansion();
+        });
+    });
     connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex &current) { onCurrentChanged(current); });
     connect(m_tree, &ParameterTreeModel::editRefused, this,
@@ -117,14 +156,17 @@ ParameterEditor::ParameterEditor(model::ParameterDocument &document, QWidget *pa
             [this] { m_message->hide(); });
     connect(m_tree, &QAbstractItemModel::modelReset, this, [this] {
         updateColumns();
+        fitValueColumns();
         expandDefault();
     });
     connect(&m_document, &model::ParameterDocument::moduleChanged, this,
             &ParameterEditor::updateColumns);
     connect(&m_document, &model::ParameterDocument::filePathChanged, this,
             &ParameterEditor::updateColumns);
-    connect(&m_document, &model::ParameterDocument::languageChanged, this,
-            [this] { onCurrentChanged(m_view->currentIndex()); });
+    connect(&m_document, &model::ParameterDocument::languageChanged, this, [this] {
+        onCurrentChanged(m_view->currentIndex());
+        fitValueColumns();
+    });
     updateColumns();
     retranslate();
 }
@@ -133,9 +175,68 @@ ParameterEditor::~ParameterEditor() = default;
 
 void ParameterEditor::expandDefault()
 {
-    // Modules open on their blocks; blocks stay closed until the user opens one.
+    // Modules open on their blocks; blocks stay closed until the user opens one, and those the
+    // user opened stay open across an Open or a reconnect.
     for (int r = 0; r < m_filter->rowCount(); ++r)
-        m_view->expand(m_filter->index(r, 0));
+        m_expanded.insert(expansionKey(m_filter->index(r, 0)));
+    restoreExpansion();
+}
+
+void ParameterEditor::fitValueColumns()
+{
+    // Values and ranges readable without dragging: each column at least as wide as its longest
+    // text (within reason); a column the user widened stays as wide.
+    constexpr int kMaxWidth = 340;
+    const QFontMetrics metrics = m_view->fontMetrics();
+    const int padding = 2 * m_view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 24;
+    const int columns[] = {ParameterTreeModel::ColValue, ParameterTreeModel::ColDevice,
+                           ParameterTreeModel::ColFile, ParameterTreeModel::ColRange};
+    int widths[std::size(columns)] = {};
+    std::function<void(const QModelIndex &)> measure = [&](const QModelIndex &parent) {
+        for (int r = 0; r < m_tree->rowCount(parent); ++r) {
+            const QModelIndex row = m_tree->index(r, 0, parent);
+            for (std::size_t c = 0; c < std::size(columns); ++c)
+                widths[c] = qMax(widths[c], metrics.horizontalAdvance(
+                                                row.siblingAtColumn(columns[c]).data().toString()));
+            measure(row);
+        }
+    };
+    measure({});
+    widths[0] = std::max({widths[0], widths[1], widths[2]}); // the three value columns alike
+    widths[1] = widths[2] = widths[0];
+    for (std::size_t c = 0; c < std::size(columns); ++c) {
+        const int header =
+            metrics.horizontalAdvance(m_tree->headerData(columns[c], Qt::Horizontal).toString());
+        const int want = qMin(kMaxWidth, qMax(widths[c], header) + padding);
+        if (m_view->columnWidth(columns[c]) < want)
+            m_view->setColumnWidth(columns[c], want);
+    }
+}
+
+QString ParameterEditor::expansionKey(const QModelIndex &proxy) const
+{
+    // The source rows' path: the same under every filter, and in either language.
+    QStringList path;
+    for (QModelIndex i = m_filter->mapToSource(proxy); i.isValid(); i = i.parent())
+        path.prepend(QString::number(i.row()));
+    return path.join(QLatin1Char('/'));
+}
+
+void ParameterEditor::restoreExpansion()
+{
+    m_restoring = true;
+    const bool searching = !m_search->text().isEmpty();
+    std::function<void(const QModelIndex &)> apply = [&](const QModelIndex &parent) {
+        for (int r = 0; r < m_filter->rowCount(parent); ++r) {
+            const QModelIndex child = m_filter->index(r, 0, parent);
+            if (!m_filter->hasChildren(child))
+                continue;
+            m_view->setExpanded(child, searching || m_expanded.contains(expansionKey(child)));
+            apply(child);
+        }
+    };
+    apply({});
+    m_restoring = false;
 }
 
 void ParameterEditor::updateColumns()
@@ -157,6 +258,16 @@ void ParameterEditor::onCurrentChanged(const QModelIndex &current)
                              : QString());
     if (row)
         emit parameterSelected(m_tree->moduleAt(source), row);
+}
+
+void ParameterEditor::showHelpOfCurrent()
+{
+    onCurrentChanged(m_view->currentIndex());
+    QList<int> sizes = m_splitter->sizes();
+    if (sizes.size() == 2 && sizes[1] < 80) {
+        const int total = sizes[0] + sizes[1];
+        m_splitter->setSizes({total - 300, 300});
+    }
 }
 
 bool ParameterEditor::selectParameter(int module, const dev::ParamMeta *row)
@@ -201,6 +312,7 @@ void ParameterEditor::retranslate()
     m_differsOnly->setText(tr("Differs from device"));
     m_showInactive->setText(tr("Show inactive"));
     m_view->actions().constFirst()->setText(tr("Show Telegrams of This Parameter"));
+    m_view->actions().at(1)->setText(tr("Help on This Parameter"));
 }
 
 } // namespace vt::ui

@@ -6,11 +6,13 @@
 
 #include "dict/param_meta.h"
 
+#include <QSet>
 #include <QWidget>
 
 class QCheckBox;
 class QLabel;
 class QLineEdit;
+class QSplitter;
 class QTextBrowser;
 class QTreeView;
 
@@ -40,6 +42,8 @@ public:
     bool selectParameter(int module, const dev::ParamMeta *row);
     // The selected parameter (module index and row), or {-1, nullptr}.
     std::pair<int, const dev::ParamMeta *> currentParameter() const;
+    // F1: the help of the selected parameter in the pane beside the tree, opening the pane.
+    void showHelpOfCurrent();
 
 signals:
     void parameterSelected(int module, const dev::ParamMeta *row);
@@ -54,6 +58,9 @@ private:
     void updateColumns();
     void onCurrentChanged(const QModelIndex &current);
     void expandDefault();
+    void fitValueColumns();
+    QString expansionKey(const QModelIndex &proxy) const;
+    void restoreExpansion();
 
     model::ParameterDocument &m_document;
     model::ParameterTreeModel *m_tree = nullptr;
@@ -65,6 +72,10 @@ private:
     QCheckBox *m_showInactive = nullptr;
     QLabel *m_message = nullptr;
     QTextBrowser *m_help = nullptr;
+    QSplitter *m_splitter = nullptr;
+    QSet<QString> m_expanded; // source row paths of the rows the user keeps open
+    bool m_restoring = false;
+    bool m_restorePending = false;
 };
 
 } // namespace vt::ui

@@ -244,5 +244,41 @@ TEST_F(LCurveEditorTest, LosingTheModelEmptiesThePlot)
     EXPECT_EQ(editor.plot()->graphCount(), 0);
 }
 
+TEST_F(LCurveEditorTest, ThePanelNamesItsModule)
+{
+    editor.setModule(3);
+    EXPECT_TRUE(editor.moduleText().contains(QStringLiteral("Module 3")))
+        << editor.moduleText().toStdString();
+    EXPECT_TRUE(editor.moduleText().contains(QString::fromStdString(opat().title.en)))
+        << editor.moduleText().toStdString();
+    editor.setModule(-1);
+    EXPECT_FALSE(editor.moduleText().contains(QStringLiteral("Module 3")));
+}
+
+// Where both branches' curves lie on each other, a press grabs the branch chosen in the table
+// (or grabbed last), the first one until then — never always branch 2.
+TEST_F(LCurveEditorTest, OverlappingPointsGoToTheChosenBranch)
+{
+    model.setValues([](const dev::ParamMeta &row) -> std::optional<double> {
+        return *row.defaultValue * 0.001; // L1 and L2 the same line
+    });
+    editor.plot()->replot();
+    LCurvePlot *p = editor.plot();
+    QSignalSpy picked(p, &LCurvePlot::pointPicked);
+    QTest::mouseClick(p, Qt::LeftButton, {}, pixel(3.75, 3.75));
+    ASSERT_EQ(picked.size(), 1);
+    EXPECT_EQ(picked.last().at(0).toInt(), 0);
+
+    // Branch 2 chosen in the table: its point is grabbed.
+    const QModelIndex cell = model.indexOf(1, 3, LAxis::Y);
+    QTest::mouseClick(editor.table()->viewport(), Qt::LeftButton, {},
+                      editor.table()->visualRect(cell).center());
+    EXPECT_EQ(p->preferredCurve(), 1);
+    QTest::mouseClick(p, Qt::LeftButton, {}, pixel(3.75, 3.75));
+    ASSERT_EQ(picked.size(), 2);
+    EXPECT_EQ(picked.last().at(0).toInt(), 1);
+    EXPECT_TRUE(batches.empty()); // clicks edit nothing
+}
+
 } // namespace
 } // namespace vt::ui

@@ -3,17 +3,25 @@
 // field — and committing goes through the model, which refuses out-of-range input.
 #include "dict/dictionary_loader.h"
 #include "model/params/param_roles.h"
+#include "model/params/parameter_filter_model.h"
 #include "model/params/parameter_tree_model.h"
 #include "widgets/editor/param_delegate.h"
 #include "widgets/editor/parameter_editor.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QPainter>
+#include <QSignalSpy>
+#include <QSplitter>
 #include <QStyleOptionViewItem>
+#include <QTest>
 #include <QTextBrowser>
 #include <QTreeView>
+#include <QUndoStack>
 #include <gtest/gtest.h>
 
 namespace vt::test {
@@ -123,6 +131,109 @@ TEST(ParameterEditorWidget, RefusalIsShownUnderTheTreeAndFiltersHideRows)
     EXPECT_TRUE(editor.messageLabel()->isVisible());
     EXPECT_TRUE(editor.messageLabel()->text().contains(QStringLiteral("9.999")));
     EXPECT_TRUE(editor.helpPane()->toPlainText().contains(QStringLiteral("C1.07")));
+}
+
+// A live d-value reads as live (normal text and a marker), not as a disabled row; grey stays for
+// what can be neither edited nor watched.
+TEST_F(DelegateFixture, LiveValuesAreDrawnAsLiveAndOnlyDeadRowsAreGrey)
+{
+    EXPECT_TRUE(value("d1.11").data(model::LiveRole).toBool());
+    EXPECT_FALSE(value("d1.11").data(Qt::ForegroundRole).isValid());
+    EXPECT_FALSE(value("C1.07").data(model::LiveRole).toBool());
+    EXPECT_FALSE(value("C1.07").data(Qt::ForegroundRole).isValid());
+    EXPECT_FALSE(value("S1.08").data(model::LiveRole).toBool()); // reserved: neither
+    EXPECT_TRUE(value("S1.08").data(Qt::ForegroundRole).isValid());
+
+    auto greenPixels = [&](const char *name) {
+        QImage image(160, 24, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        QStyleOptionViewItem option;
+        option.rect = image.rect();
+        option.palette = parent.palette();
+        delegate.paint(&painter, option, value(name));
+        painter.end();
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                n += c.green() > 120 && c.red() < 120 && c.blue() < 120;
+            }
+        return n;
+    };
+    EXPECT_GT(greenPixels("d1.11"), 4);
+    EXPECT_EQ(greenPixels("C1.07"), 0);
+}
+
+// An undo step names the module: a node has the same parameter on every module.
+TEST_F(DelegateFixture, UndoTextNamesTheModule)
+{
+    const auto refused = doc.edit(0, dma.find("C1.07"), 1250.0);
+    ASSERT_FALSE(refused.has_value()) << refused->toStdString();
+    EXPECT_EQ(doc.undoStack()->undoText(),
+              QStringLiteral("module %1 C1.07 = 1.250 V").arg(doc.module(0).address));
+}
+
+// F1 on a parameter shows its help beside the tree, opening the pane the user had closed.
+TEST(ParameterEditorWidget, F1ShowsTheHelpOfTheParameter)
+{
+    const dev::Dictionary &dma = *dev::builtinDictionaries()->find("dma-pn-v51");
+    model::ParameterDocument doc;
+    ui::ParameterEditor editor(doc);
+    editor.resize(1200, 600);
+    editor.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&editor));
+    doc.createNew({&dma, "51", "3", 1, 1}, *dev::builtinDictionaries());
+    auto *splitter = editor.findChild<QSplitter *>(QStringLiteral("editorSplitter"));
+    ASSERT_TRUE(splitter);
+    splitter->setSizes({1200, 0});
+    ASSERT_EQ(editor.helpPane()->width(), 0);
+    ASSERT_TRUE(editor.selectParameter(0, dma.find("C1.07")));
+    editor.view()->setFocus();
+    QTest::keyClick(editor.view(), Qt::Key_F1);
+    EXPECT_GT(splitter->sizes().at(1), 0);
+    EXPECT_TRUE(editor.helpPane()->toPlainText().contains(QStringLiteral("C1.07")));
+}
+
+// The filters and a new document bring rows back as the user left them: open blocks stay open.
+TEST(ParameterEditorWidget, FiltersAndANewDocumentKeepTheOpenBlocks)
+{
+    const dev::Dictionary &dma = *dev::builtinDictionaries()->find("dma-pn-v51");
+    model::ParameterDocument doc;
+    ui::ParameterEditor editor(doc);
+    editor.show();
+    doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries());
+    QTreeView *view = editor.view();
+    auto blockOf = [&](const char *name) {
+        return editor.filterModel()->mapFromSource(
+            editor.treeModel()->indexOf(0, dma.find(name)).parent());
+    };
+    ASSERT_TRUE(blockOf("E22").isValid());
+    view->expand(blockOf("E22"));
+    EXPECT_FALSE(view->isExpanded(blockOf("d1.11")));
+    // An edit, so that "Changed only" keeps something.
+    doc.edit(0, dma.find("C1.07"), 1000.0);
+
+    editor.findChild<QCheckBox *>(QStringLiteral("filterChanged"))->setChecked(true);
+    EXPECT_FALSE(blockOf("E22").isValid()); // the filter hides the block
+    editor.findChild<QCheckBox *>(QStringLiteral("filterChanged"))->setChecked(false);
+    ASSERT_TRUE(blockOf("E22").isValid());
+    EXPECT_TRUE(view->isExpanded(blockOf("E22")));
+    EXPECT_FALSE(view->isExpanded(blockOf("d1.11")));
+
+    editor.searchBox()->setText(QStringLiteral("C1.07"));
+    editor.searchBox()->clear();
+    EXPECT_TRUE(view->isExpanded(blockOf("E22")));
+    EXPECT_FALSE(view->isExpanded(blockOf("d1.11")));
+
+    // Open / New: the same blocks open again.
+    doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries());
+    EXPECT_TRUE(view->isExpanded(blockOf("E22")));
+    EXPECT_FALSE(view->isExpanded(blockOf("d1.11")));
+    // A block the user closes stays closed.
+    view->collapse(blockOf("E22"));
+    editor.findChild<QCheckBox *>(QStringLiteral("filterInactive"))->toggle();
+    EXPECT_FALSE(view->isExpanded(blockOf("E22")));
 }
 
 } // namespace
