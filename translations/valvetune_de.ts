@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>QObject</name>
+    <message>
+        <source>ValveTune cannot start with this command line:</source>
+        <translation>ValveTune kann mit dieser Befehlszeile nicht starten:</translation>
+    </message>
+    <message>
+        <source>Run &quot;valvetune --help&quot; in a terminal for the options.</source>
+        <translation>&quot;valvetune --help&quot; in einem Terminal zeigt die Optionen.</translation>
+    </message>
+</context>
+<context>
     <name>vt::app::DeviceController</name>
     <message>
         <source>Scanning the node…</source>
@@ -328,7 +339,7 @@
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation>&amp;Wiederholen</translation>
+        <translation>Wieder&amp;herstellen</translation>
     </message>
     <message>
         <source>Revert to &amp;Device</source>
@@ -353,14 +364,6 @@
     <message>
         <source>Linearisation</source>
         <translation>Linearisierung</translation>
-    </message>
-    <message>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Rückgängig: %1</translation>
-    </message>
-    <message>
-        <source>&amp;Redo %1</source>
-        <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
         <source>%1 on module %2</source>
@@ -388,6 +391,61 @@
             <numerusform>Der Knoten-Assistent hat %n Modul des angeschlossenen Knotens gelesen.</numerusform>
             <numerusform>Der Knoten-Assistent hat %n Module des angeschlossenen Knotens gelesen.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Undo: %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo: %1</source>
+        <translation>Wieder&amp;herstellen: %1</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+</context>
+<context>
+    <name>vt::app::WelcomePage</name>
+    <message>
+        <source>Welcome to ValveTune</source>
+        <translation>Willkommen bei ValveTune</translation>
+    </message>
+    <message>
+        <source>No device is connected and no parameter file is open. Start with one of these:</source>
+        <translation>Kein Gerät ist verbunden und keine Parameterdatei geöffnet. Beginnen Sie mit einem von diesen:</translation>
+    </message>
+    <message>
+        <source>Connect…</source>
+        <translation>Verbinden…</translation>
+    </message>
+    <message>
+        <source>Reach a node or module over serial, TCP, CAN or HART.</source>
+        <translation>Einen Knoten oder ein Modul über seriell, TCP, CAN oder HART erreichen.</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Öffnen…</translation>
+    </message>
+    <message>
+        <source>Open a parameter file (.vtpar) or a fold plan (.vtfold).</source>
+        <translation>Eine Parameterdatei (.vtpar) oder einen Modulplan (.vtfold) öffnen.</translation>
+    </message>
+    <message>
+        <source>New…</source>
+        <translation>Neu…</translation>
+    </message>
+    <message>
+        <source>Make a parameter file for a module type and version, without a device.</source>
+        <translation>Eine Parameterdatei für einen Modultyp und eine Version anlegen, ohne Gerät.</translation>
+    </message>
+    <message>
+        <source>Try the simulator…</source>
+        <translation>Simulator ausprobieren…</translation>
+    </message>
+    <message>
+        <source>Connect to a built-in simulated node: every window works, no valve moves.</source>
+        <translation>Mit einem eingebauten simulierten Knoten verbinden: jedes Fenster funktioniert, kein Ventil bewegt sich.</translation>
     </message>
 </context>
 <context>
@@ -792,8 +850,8 @@
 <context>
     <name>vt::model::CurveBinding</name>
     <message>
-        <source>Edit linearisation curve</source>
-        <translation>Linearisierungskennlinie bearbeiten</translation>
+        <source>module %1 linearisation curve</source>
+        <translation>Modul %1 Linearisierungskennlinie</translation>
     </message>
 </context>
 <context>
@@ -1642,10 +1700,6 @@
 <context>
     <name>vt::model::ParameterDocument</name>
     <message>
-        <source>Set %1 to %2</source>
-        <translation>%1 auf %2 setzen</translation>
-    </message>
-    <message>
         <source>Revert to device</source>
         <translation>Auf Gerätewerte zurücksetzen</translation>
     </message>
@@ -1707,6 +1761,10 @@
     <message>
         <source>Module %1 of the document has no module on the node: it stays offline.</source>
         <translation>Modul %1 des Dokuments hat kein Modul am Knoten: es bleibt offline.</translation>
+    </message>
+    <message>
+        <source>module %1 %2 = %3</source>
+        <translation>Modul %1 %2 = %3</translation>
     </message>
 </context>
 <context>
@@ -1834,6 +1892,10 @@
     <message>
         <source>%1: %2 (%3)</source>
         <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Live value: read from the module again and again while connected.</source>
+        <translation>Live-Wert: wird bei bestehender Verbindung fortlaufend vom Modul gelesen.</translation>
     </message>
 </context>
 <context>
@@ -2474,24 +2536,20 @@ Die ursprünglichen Werte zurückschreiben?</translation>
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>%1, version %2</source>
+        <translation>%1, Version %2</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::CompareDialog</name>
     <message>
         <source>Compare</source>
         <translation>Vergleich</translation>
-    </message>
-    <message>
-        <source>Take All</source>
-        <translation>Alle übernehmen</translation>
-    </message>
-    <message>
-        <source>Take None</source>
-        <translation>Keine übernehmen</translation>
-    </message>
-    <message>
-        <source>Apply Chosen</source>
-        <translation>Auswahl anwenden</translation>
     </message>
     <message>
         <source>No differences.</source>
@@ -2502,6 +2560,32 @@ Die ursprünglichen Werte zurückschreiben?</translation>
         <translation>
             <numerusform>%n Parameter weicht ab. Kreuzen Sie &quot;Übernehmen&quot; bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
             <numerusform>%n Parameter weichen ab. Kreuzen Sie &quot;Übernehmen&quot; bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Tick All</source>
+        <translation>Alle ankreuzen</translation>
+    </message>
+    <message>
+        <source>Tick None</source>
+        <translation>Keine ankreuzen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Apply %n Ticked Value(s)</source>
+        <translation>
+            <numerusform>%n angekreuzten Wert übernehmen</numerusform>
+            <numerusform>%n angekreuzte Werte übernehmen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Tick the values to take; nothing changes until you apply them.</source>
+        <translation>Kreuzen Sie die zu übernehmenden Werte an; nichts ändert sich, bevor Sie sie übernehmen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Apply puts %n ticked value(s) into this document as one step (Edit ▸ Undo takes it back). Nothing is written to the device until Device ▸ Write Changes.</source>
+        <translation>
+            <numerusform>Übernehmen setzt %n angekreuzten Wert in einem Schritt in dieses Dokument (Bearbeiten ▸ Rückgängig nimmt ihn zurück). Zum Gerät wird erst mit Gerät ▸ Änderungen schreiben geschrieben.</numerusform>
+            <numerusform>Übernehmen setzt %n angekreuzte Werte in einem Schritt in dieses Dokument (Bearbeiten ▸ Rückgängig nimmt sie zurück). Zum Gerät wird erst mit Gerät ▸ Änderungen schreiben geschrieben.</numerusform>
         </translation>
     </message>
 </context>
@@ -2745,6 +2829,14 @@ Senden?</translation>
         <source>No parameter of the module&apos;s dictionary has this address: the editor&apos;s Device column cannot follow it. Read the device again.</source>
         <translation>Kein Parameter im Wörterbuch des Moduls hat diese Adresse: die Gerätespalte des Editors kann nicht folgen. Gerät erneut lesen.</translation>
     </message>
+    <message>
+        <source>%1 must be %2 to %3.</source>
+        <translation>%1 muss %2 bis %3 sein.</translation>
+    </message>
+    <message>
+        <source>Answered: %1 (%2)</source>
+        <translation>Antwort: %1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::ConnectDialog</name>
@@ -2829,6 +2921,10 @@ Senden?</translation>
     <message>
         <source>response (device → master)</source>
         <translation>Antwort (Gerät → Master)</translation>
+    </message>
+    <message>
+        <source>Auto: %1 (%2) with a wrong CRC.</source>
+        <translation>Automatisch: %1 (%2) mit falscher CRC.</translation>
     </message>
 </context>
 <context>
@@ -3034,10 +3130,6 @@ Senden?</translation>
         <translation>Modul %1 (SADR %2)</translation>
     </message>
     <message>
-        <source>The test bench needs a node image connection (TCP with the node image protocol, or the simulator with protocol &quot;node-image&quot;).</source>
-        <translation>Der Prüfstand braucht eine Knotenabbild-Verbindung (TCP mit dem Knotenabbild-Protokoll oder den Simulator mit dem Protokoll &quot;node-image&quot;).</translation>
-    </message>
-    <message>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
@@ -3055,10 +3147,6 @@ Senden?</translation>
     <message>
         <source>Sends CMD 15 to every module with the values below, TADR changing every telegram, and shows each module&apos;s answer as the node multiplexes them (DMA Profinet manual §4.2, OPAT manual §3.2).</source>
         <translation>Sendet CMD 15 mit den Werten unten an jedes Modul, mit wechselnder TADR in jedem Telegramm, und zeigt die Antwort jedes Moduls, wie der Knoten sie multiplext (DMA-Profinet-Handbuch §4.2, OPAT-Handbuch §3.2).</translation>
-    </message>
-    <message>
-        <source>Not available: connect through a node image link (TCP with the node image protocol, or the simulator with protocol &quot;node-image&quot;) to use the test bench.</source>
-        <translation>Nicht verfügbar: Verbinden Sie sich über eine Knotenabbild-Verbindung (TCP mit dem Knotenabbild-Protokoll oder den Simulator mit dem Protokoll &quot;node-image&quot;), um den Prüfstand zu nutzen.</translation>
     </message>
     <message>
         <source>PLC test bench</source>
@@ -3111,6 +3199,18 @@ Senden?</translation>
     <message>
         <source>Cycle:</source>
         <translation>Zyklus:</translation>
+    </message>
+    <message>
+        <source>Connect the node&apos;s fieldbus gateway over TCP with the protocol &quot;node-image&quot; (Device ▸ Connect…), or the simulator with the protocol &quot;node-image&quot;.</source>
+        <translation>Verbinden Sie das Feldbus-Gateway des Knotens über TCP mit dem Protokoll &quot;node-image&quot; (Gerät ▸ Verbinden…) oder den Simulator mit dem Protokoll &quot;node-image&quot;.</translation>
+    </message>
+    <message>
+        <source>Not available: no node is connected.</source>
+        <translation>Nicht verfügbar: Kein Knoten ist verbunden.</translation>
+    </message>
+    <message>
+        <source>Not available: the connection speaks %1, and the test bench needs the node&apos;s cyclic CMD 15 image.</source>
+        <translation>Nicht verfügbar: Die Verbindung spricht %1, der Prüfstand braucht aber das zyklische CMD-15-Abbild des Knotens.</translation>
     </message>
 </context>
 <context>
@@ -3554,6 +3654,18 @@ Senden?</translation>
         <source>This device has no linearisation curve: the parameter list of %1 has no L block.</source>
         <translation>Dieses Gerät hat keine Linearisierungskurve: die Parameterliste von %1 hat keinen L-Block.</translation>
     </message>
+    <message>
+        <source>No module chosen: choose one in the node view.</source>
+        <translation>Kein Modul gewählt: Wählen Sie eines in der Knotenansicht.</translation>
+    </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>Module %1: %2</source>
+        <translation>Modul %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::LCurvePlot</name>
@@ -3648,6 +3760,18 @@ Senden?</translation>
     <message>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>module %1 (%2 %3)</source>
+        <translation>Modul %1 (%2 %3)</translation>
+    </message>
+    <message>
+        <source>ValveTune monitor, %1</source>
+        <translation>ValveTune-Monitor, %1</translation>
+    </message>
+    <message>
+        <source>ValveTune monitor: %1, %2</source>
+        <translation>ValveTune-Monitor: %1, %2</translation>
     </message>
 </context>
 <context>
@@ -3908,6 +4032,10 @@ Senden?</translation>
         <source>Show Telegrams of This Parameter</source>
         <translation>Telegramme dieses Parameters anzeigen</translation>
     </message>
+    <message>
+        <source>Help on This Parameter</source>
+        <translation>Hilfe zu diesem Parameter</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::SerialLineFields</name>
@@ -4060,10 +4188,6 @@ Senden?</translation>
 <context>
     <name>vt::ui::StepControl</name>
     <message>
-        <source>module %1</source>
-        <translation>Modul %1</translation>
-    </message>
-    <message>
         <source>Step:</source>
         <translation>Sprung:</translation>
     </message>
@@ -4122,6 +4246,10 @@ Senden?</translation>
     <message>
         <source>Makes the bus set value the one that drives the valve (%1 = %2).</source>
         <translation>Macht den Bus-Sollwert zu dem, der das Ventil steuert (%1 = %2).</translation>
+    </message>
+    <message>
+        <source>Module %1</source>
+        <translation>Modul %1</translation>
     </message>
 </context>
 <context>
@@ -4185,6 +4313,13 @@ Senden?</translation>
     <message>
         <source>Modbus unit / SADR of the module; 0 is the OPAT master; for the ED1&apos;s gateway its Modbus unit</source>
         <translation>Modbus-Unit / SADR des Moduls; 0 ist der OPAT-Master; beim Gateway der ED1 dessen Modbus-Unit</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::UserGuideDialog</name>
+    <message>
+        <source>ValveTune User Guide</source>
+        <translation>ValveTune-Benutzerhandbuch</translation>
     </message>
 </context>
 <context>

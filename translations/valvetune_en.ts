@@ -57,6 +57,13 @@
             <numerusform>Connected: %n modules.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The fold wizard read %n module(s) of the connected node.</source>
+        <translation>
+            <numerusform>The fold wizard read %n module of the connected node.</numerusform>
+            <numerusform>The fold wizard read %n modules of the connected node.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>vt::model::FoldSheetText</name>
@@ -160,6 +167,20 @@
         <translation>
             <numerusform>%n parameter differs. Tick &quot;Take other&quot; for each value to take into this document.</numerusform>
             <numerusform>%n parameters differ. Tick &quot;Take other&quot; for each value to take into this document.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Apply %n Ticked Value(s)</source>
+        <translation>
+            <numerusform>Apply %n Ticked Value</numerusform>
+            <numerusform>Apply %n Ticked Values</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Apply puts %n ticked value(s) into this document as one step (Edit ▸ Undo takes it back). Nothing is written to the device until Device ▸ Write Changes.</source>
+        <translation>
+            <numerusform>Apply puts %n ticked value into this document as one step (Edit ▸ Undo takes it back). Nothing is written to the device until Device ▸ Write Changes.</numerusform>
+            <numerusform>Apply puts %n ticked values into this document as one step (Edit ▸ Undo takes it back). Nothing is written to the device until Device ▸ Write Changes.</numerusform>
         </translation>
     </message>
 </context>

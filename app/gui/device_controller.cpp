@@ -26,11 +26,22 @@ DeviceController::~DeviceController() = default;
 
 void DeviceController::connectDialog()
 {
+    openConnectDialog();
+}
+
+void DeviceController::connectDialogOn(model::ConnectionKind kind)
+{
+    openConnectDialog()->setKind(kind);
+}
+
+ui::ConnectDialog *DeviceController::openConnectDialog()
+{
     // Remembers every kind's last fields in the settings and opens on the last kind used.
     auto *dialog = new ui::ConnectDialog(m_workspace.dictionaries(), &m_settings.store(), m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] { connectTo(dialog->spec()); });
     dialog->open();
+    return dialog;
 }
 
 void DeviceController::connectTo(const model::ConnectionSpec &spec)

@@ -21,6 +21,7 @@ class ReadAllJob;
 
 namespace vt::ui {
 class CompareDialog;
+class ConnectDialog;
 class WriteDialog;
 } // namespace vt::ui
 
@@ -37,6 +38,8 @@ public:
     ~DeviceController() override;
 
     void connectDialog();
+    // The connect dialog opened on one kind of link (the welcome page's "simulator").
+    void connectDialogOn(model::ConnectionKind kind);
     void connectTo(const model::ConnectionSpec &spec);
     // Offers to put back the actuator-moving values this tool changed, then disconnects.
     void disconnectFromDevice();
@@ -72,6 +75,7 @@ signals:
 
 private:
     void showConnectFailure(const QString &reason);
+    ui::ConnectDialog *openConnectDialog();
     // Reads rows of the document's online modules (all readable rows without `rows`) with a
     // progress dialog; `then(complete, problems, warnings)` after (warnings: values that arrived
     // with a device warning).

@@ -13,23 +13,17 @@
 #include <QIcon>
 #include <QMessageBox>
 #include <cstdio>
-#include <unistd.h>
 
 int main(int argc, char *argv[])
 {
-    QApplication app(argc, argv);
-    vt::model::installQtAssertHandler();
-    QCoreApplication::setOrganizationName(QStringLiteral("ValveTune"));
-    QCoreApplication::setApplicationName(QStringLiteral("ValveTune"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));
-    // The installed desktop entry and icon carry the application id: window managers and Wayland
-    // compositors match the window to them through it.
-    QGuiApplication::setDesktopFileName(QStringLiteral(VT_APP_ID));
-    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral(VT_APP_ID)));
-
+    // The command line first, without a display: --help, --version and a wrong option answer on a
+    // terminal and a server alike.
     QString help;
-    const vt::app::GuiOptions options =
-        vt::app::parseGuiOptions(QCoreApplication::arguments(), &help);
+    vt::app::GuiOptions options;
+    {
+        QCoreApplication probe(argc, argv);
+        options = vt::app::parseGuiOptions(QCoreApplication::arguments(), &help);
+    }
     if (options.exitNow) {
         if (options.exitCode == -1) {
             std::fputs(qPrintable(help), stdout);
@@ -41,11 +35,26 @@ int main(int argc, char *argv[])
         }
         std::fprintf(stderr, "valvetune: %s\n", qPrintable(options.error));
         // Started from a desktop shortcut nobody reads stderr: say it where it is seen.
-        if (!isatty(STDERR_FILENO))
-            QMessageBox::critical(nullptr, QStringLiteral("ValveTune"),
-                                  QStringLiteral("valvetune: %1").arg(options.error));
+        if (vt::app::displayAvailable()) {
+            QApplication app(argc, argv);
+            vt::app::Language language;
+            language.setLanguage(vt::app::Language::isKnown(options.language)
+                                     ? options.language
+                                     : vt::app::Language::systemDefault());
+            vt::app::startupErrorBox(options.error)->exec();
+        }
         return options.exitCode;
     }
+
+    QApplication app(argc, argv);
+    vt::model::installQtAssertHandler();
+    QCoreApplication::setOrganizationName(QStringLiteral("ValveTune"));
+    QCoreApplication::setApplicationName(QStringLiteral("ValveTune"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(VT_VERSION));
+    // The installed desktop entry and icon carry the application id: window managers and Wayland
+    // compositors match the window to them through it.
+    QGuiApplication::setDesktopFileName(QStringLiteral(VT_APP_ID));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral(VT_APP_ID)));
 
     vt::app::AppSettings settings;
     vt::app::Language language;

@@ -6,10 +6,12 @@
 #include "dict/dictionary_loader.h"
 #include "file_controller.h"
 #include "language.h"
+#include "layout_memory.h"
 #include "model/curve/lcurve_table_model.h"
 #include "model/params/curve_binding.h"
 #include "model/recent_files.h"
 #include "transports/link.h"
+#include "welcome_page.h"
 #include "widgets/about_dialog.h"
 #include "widgets/connect/link_status_widget.h"
 #include "widgets/curve/lcurve_editor.h"
@@ -20,6 +22,7 @@
 #include "widgets/inspector/compose_panel.h"
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/monitor/monitor_view.h"
+#include "widgets/user_guide_dialog.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -30,7 +33,9 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QStackedWidget>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoStack>
 
 namespace vt::app {
@@ -45,8 +50,13 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     m_files = new FileController(*m_workspace, *m_recent, this);
     m_device = new DeviceController(*m_workspace, m_settings, this);
 
+    // The editor, or while there is neither a device nor a file, the ways to start.
     m_editor = new ui::ParameterEditor(m_workspace->document(), this);
-    setCentralWidget(m_editor);
+    m_welcome = new WelcomePage(this);
+    m_centre = new QStackedWidget(this);
+    m_centre->addWidget(m_welcome);
+    m_centre->addWidget(m_editor);
+    setCentralWidget(m_centre);
     createActions();
     createMenus();
     createDocks();
@@ -73,7 +83,8 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     applyDocumentLanguage();
     connectWorkspace();
 
-    resize(1440, 900);
+    // Fits a 1366 × 768 laptop (the window manager maximises a larger default there).
+    resize(1340, 720);
     restoreGeometry(m_settings.windowGeometry());
     restoreState(m_settings.windowState());
     retranslate();
@@ -132,6 +143,7 @@ void MainWindow::createActions()
     m_liveValues->setCheckable(true);
     m_liveValues->setChecked(true);
     m_about = make("actionAbout");
+    m_guide = make("actionUserGuide");
     m_english = make("actionEnglish");
     m_german = make("actionGerman");
 
@@ -144,6 +156,15 @@ void MainWindow::createActions()
     connect(m_german, &QAction::triggered, this, [this] { chooseLanguage(QStringLiteral("de")); });
     connect(m_quit, &QAction::triggered, this, &QWidget::close);
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(m_guide, &QAction::triggered, this, [this] {
+        auto *guide = findChild<ui::UserGuideDialog *>();
+        if (!guide) {
+            guide = new ui::UserGuideDialog(this);
+            guide->setAttribute(Qt::WA_DeleteOnClose);
+        }
+        guide->show();
+        guide->raise();
+    });
     connect(m_new, &QAction::triggered, m_files, &FileController::newFile);
     connect(m_open, &QAction::triggered, m_files, &FileController::open);
     connect(m_save, &QAction::triggered, m_files, &FileController::save);
@@ -161,6 +182,11 @@ void MainWindow::createActions()
     connect(m_compareDevice, &QAction::triggered, m_device, &DeviceController::compareWithDevice);
     connect(m_scanNode, &QAction::triggered, m_device, &DeviceController::scan);
     connect(m_foldWizard, &QAction::triggered, this, [this] { openFoldWizard(); });
+    connect(m_welcome, &WelcomePage::connectRequested, m_device, &DeviceController::connectDialog);
+    connect(m_welcome, &WelcomePage::openRequested, m_files, &FileController::open);
+    connect(m_welcome, &WelcomePage::newRequested, m_files, &FileController::newFile);
+    connect(m_welcome, &WelcomePage::simulatorRequested, this,
+            [this] { m_device->connectDialogOn(model::ConnectionKind::Sim); });
     connect(m_liveValues, &QAction::toggled, this,
             [this](bool on) { m_workspace->setLivePollRate(on ? 2.0 : 0.0); });
 }
@@ -199,7 +225,7 @@ void MainWindow::createMenus()
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName(QStringLiteral("menuHelp"));
-    m_helpMenu->addAction(m_about);
+    m_helpMenu->addActions({m_guide, m_about});
     rebuildRecentMenu();
 }
 
@@ -257,13 +283,15 @@ void MainWindow::createDocks()
     m_curveBinding = new model::CurveBinding(m_workspace->document(), *m_curves, this);
     m_curveEditor = new ui::LCurveEditor(this);
     m_curveEditor->setModel(m_curves);
+    connect(m_curveBinding, &model::CurveBinding::moduleShown, m_curveEditor,
+            &ui::LCurveEditor::setModule);
     m_curveDock = dock("dockCurve", m_curveEditor, Qt::BottomDockWidgetArea);
     // The editor keeps the full width; monitor, telegrams and curves share the bottom as tabs.
     tabifyDockWidget(m_monitorDock, m_telegramsDock);
     tabifyDockWidget(m_monitorDock, m_curveDock);
     m_monitorDock->raise();
     resizeDocks({m_nodeDock}, {230}, Qt::Horizontal);
-    resizeDocks({m_monitorDock}, {360}, Qt::Vertical);
+    resizeDocks({m_monitorDock}, {300}, Qt::Vertical);
     connect(m_nodeView, &ui::NodeView::moduleActivated, this, [this](int module) {
         const auto &m = m_workspace->document().module(module);
         if (!m.dictionary->params.empty())
@@ -408,6 +436,8 @@ void MainWindow::updateActions()
     m_compareFile->setEnabled(hasModules);
     m_revertDevice->setEnabled(hasModules);
     m_revertFile->setEnabled(doc.hasFile());
+    const bool empty = !hasModules && !m_workspace->connection();
+    m_centre->setCurrentWidget(empty ? static_cast<QWidget *>(m_welcome) : m_editor);
 }
 
 void MainWindow::updateTitle()
@@ -460,6 +490,7 @@ void MainWindow::retranslate()
     m_foldWizard->setText(tr("&Fold Wizard…"));
     m_english->setText(QStringLiteral("English")); // language names stay in their own language
     m_german->setText(QStringLiteral("Deutsch"));
+    m_guide->setText(tr("&User Guide"));
     m_about->setText(tr("&About ValveTune…"));
 
     m_nodeDock->setWindowTitle(tr("Node"));
@@ -476,9 +507,9 @@ void MainWindow::updateUndoActions()
     m_undo->setEnabled(undo->canUndo());
     m_redo->setEnabled(undo->canRedo());
     m_undo->setText(undo->undoText().isEmpty() ? tr("&Undo")
-                                               : tr("&Undo %1").arg(undo->undoText()));
+                                               : tr("&Undo: %1").arg(undo->undoText()));
     m_redo->setText(undo->redoText().isEmpty() ? tr("&Redo")
-                                               : tr("&Redo %1").arg(undo->redoText()));
+                                               : tr("&Redo: %1").arg(undo->redoText()));
 }
 
 void MainWindow::rebuildRecentMenu()
@@ -517,8 +548,19 @@ void MainWindow::saveLayout()
 {
     m_settings.setWindowGeometry(saveGeometry());
     m_settings.setWindowState(saveState());
+    saveViewLayout(*this, m_settings.store());
     m_settings.setRecentFiles(m_recent->files());
     m_settings.sync();
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (m_viewLayoutRestored)
+        return;
+    m_viewLayoutRestored = true;
+    // Splitters and columns take their remembered sizes once the first show has laid them out.
+    QTimer::singleShot(0, this, [this] { restoreViewLayout(*this, m_settings.store()); });
 }
 
 void MainWindow::changeEvent(QEvent *event)

@@ -13,6 +13,7 @@ class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QStackedWidget;
 
 namespace vt::dev {
 class DictionarySet;
@@ -40,6 +41,7 @@ class AppSettings;
 class DeviceController;
 class FileController;
 class Language;
+class WelcomePage;
 class Workspace;
 
 class MainWindow : public QMainWindow
@@ -54,6 +56,7 @@ public:
     FileController &files() const { return *m_files; }
     DeviceController &device() const { return *m_device; }
     ui::ParameterEditor *editor() const { return m_editor; }
+    WelcomePage *welcomePage() const { return m_welcome; }
     QDockWidget *nodeDock() const { return m_nodeDock; }
     QDockWidget *monitorDock() const { return m_monitorDock; }
     QDockWidget *telegramsDock() const { return m_telegramsDock; }
@@ -73,6 +76,7 @@ public:
 protected:
     void changeEvent(QEvent *event) override;
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     void createActions();
@@ -96,6 +100,8 @@ private:
     DeviceController *m_device = nullptr;
     model::RecentFiles *m_recent = nullptr;
     ui::ParameterEditor *m_editor = nullptr;
+    WelcomePage *m_welcome = nullptr;
+    QStackedWidget *m_centre = nullptr; // the welcome page or the editor
     ui::NodeView *m_nodeView = nullptr;
     model::LCurveTableModel *m_curves = nullptr;
     model::CurveBinding *m_curveBinding = nullptr;
@@ -104,6 +110,7 @@ private:
     ui::MonitorView *m_monitor = nullptr;
     QPointer<ui::FoldWizard> m_wizard;
     bool m_restoreOffered = false; // closing: the put-back question was asked
+    bool m_viewLayoutRestored = false;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
@@ -135,6 +142,7 @@ private:
     QAction *m_english = nullptr;
     QAction *m_german = nullptr;
     QAction *m_about = nullptr;
+    QAction *m_guide = nullptr;
 
     QDockWidget *m_nodeDock = nullptr;
     QDockWidget *m_monitorDock = nullptr;

@@ -1,6 +1,10 @@
 #include "app/gui/gui_options.h"
+#include "app/gui/startup.h"
 
+#include <QMessageBox>
+#include <QProcess>
 #include <gtest/gtest.h>
+#include <tuple>
 
 using vt::app::parseGuiOptions;
 
@@ -138,4 +142,45 @@ TEST(GuiOptions, HelpNamesConnectAndItsOptions)
         << help.toStdString();
     EXPECT_TRUE(help.contains("--port PATH [--baud B]")) << help.toStdString();
     EXPECT_TRUE(help.contains("[--out-register N] [--in-register N]")) << help.toStdString();
+}
+
+// A bad command line is said in a message box as well (a desktop shortcut has no terminal), and
+// --help / a bad option answer without any display: no QGuiApplication is made for them.
+TEST(GuiStartup, BadCommandLineIsShownInAMessageBox)
+{
+    const auto options = parseGuiOptions({"valvetune", "--simulate", "nonsense"});
+    ASSERT_TRUE(options.exitNow);
+    QMessageBox *box = vt::app::startupErrorBox(options.error);
+    box->open();
+    EXPECT_TRUE(box->isVisible());
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("--simulate")))
+        << box->informativeText().toStdString();
+    EXPECT_TRUE(box->informativeText().contains(QStringLiteral("nonsense")));
+    box->close(); // deletes itself
+}
+
+TEST(GuiStartup, HelpAndBadOptionsNeedNoDisplay)
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char *name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        env.remove(QString::fromLatin1(name));
+    EXPECT_FALSE(qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")); // this test runs offscreen
+    auto run = [&](const QStringList &args) {
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(VT_GUI_PATH), args);
+        EXPECT_TRUE(p.waitForFinished(10000));
+        return std::make_tuple(p.exitStatus(), p.exitCode(),
+                               QString::fromUtf8(p.readAllStandardOutput()),
+                               QString::fromUtf8(p.readAllStandardError()));
+    };
+    const auto [helpStatus, helpCode, helpOut, helpErr] = run({QStringLiteral("--help")});
+    EXPECT_EQ(helpStatus, QProcess::NormalExit);
+    EXPECT_EQ(helpCode, 0) << helpErr.toStdString();
+    EXPECT_TRUE(helpOut.contains(QStringLiteral("--simulate"))) << helpOut.toStdString();
+    const auto [badStatus, badCode, badOut, badErr] =
+        run({QStringLiteral("--simulate"), QStringLiteral("nonsense")});
+    EXPECT_EQ(badStatus, QProcess::NormalExit);
+    EXPECT_EQ(badCode, 2);
+    EXPECT_TRUE(badErr.contains(QStringLiteral("nonsense"))) << badErr.toStdString();
 }

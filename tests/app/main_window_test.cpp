@@ -4,19 +4,28 @@
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
 #include "app/gui/startup.h"
+#include "app/gui/welcome_page.h"
 #include "app/gui/workspace.h"
+#include "dict/dictionary_loader.h"
 #include "qt_printers.h"
+#include "widgets/connect/connect_dialog.h"
 #include "widgets/connect/link_status_widget.h"
+#include "widgets/editor/parameter_editor.h"
 #include "widgets/fold/fold_wizard.h"
+#include "widgets/user_guide_dialog.h"
 
 #include <QAction>
+#include <QCommandLinkButton>
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QFile>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSplitter>
 #include <QTemporaryDir>
+#include <QTextBrowser>
+#include <QTreeView>
 #include <gtest/gtest.h>
 
 using namespace vt::app;
@@ -127,6 +136,9 @@ TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)
                            "Mit &Gerät vergleichen…", "&Live-Anzeigewerte", "Knoten &abfragen",
                            "&Knoten-Assistent…"}));
     EXPECT_EQ(w.nodeDock()->windowTitle(), "Knoten");
+    // One German word for Redo, the one Qt's own text fields use (docs/GLOSSARY-DE.md).
+    EXPECT_EQ(w.findChild<QAction *>("actionRedo")->text(), "Wieder&herstellen");
+    EXPECT_EQ(w.findChild<QAction *>("actionUndo")->text(), "&Rückgängig");
     EXPECT_EQ(w.linkStatus()->linkText(), "Nicht verbunden");
     EXPECT_EQ(settings.language(), "de"); // the choice is remembered
 
@@ -138,18 +150,85 @@ TEST_F(Fixture, SwitchingToGermanRetranslatesAtRunTime)
 
 TEST_F(Fixture, LayoutIsKeptInTheSettings)
 {
+    const vt::dev::Dictionary &dma = *vt::dev::builtinDictionaries()->find("dma-pn-v51");
+    int helpWidth = 0;
     {
         MainWindow w(settings, language);
         w.show();
+        w.workspace().document().createNew({&dma, "51", "3", 1, 1},
+                                           *vt::dev::builtinDictionaries());
         w.resize(1700, 1050);
         w.telegramsDock()->hide();
+        // Column widths and splitters as the user left them.
+        w.editor()->view()->setColumnWidth(2, 333);
+        w.findChild<QSplitter *>("editorSplitter")->setSizes({900, 420});
+        helpWidth = w.findChild<QSplitter *>("editorSplitter")->sizes().at(1);
+        ASSERT_GT(helpWidth, 380); // not the default (about a fifth)
         w.saveLayout();
     }
     MainWindow again(settings, language);
     again.show();
+    QCoreApplication::processEvents(); // the sizes come once the first show laid the window out
+    // The editor (behind the welcome page until there is a document) keeps them too.
+    again.workspace().document().createNew({&dma, "51", "3", 1, 1},
+                                           *vt::dev::builtinDictionaries());
+    QCoreApplication::processEvents();
     EXPECT_FALSE(again.telegramsDock()->isVisible());
     EXPECT_TRUE(again.nodeDock()->isVisible());
     EXPECT_EQ(again.size(), QSize(1700, 1050));
+    EXPECT_EQ(again.editor()->view()->columnWidth(2), 333);
+    EXPECT_NEAR(again.findChild<QSplitter *>("editorSplitter")->sizes().at(1), helpWidth, 8);
+}
+
+// With neither a device nor a file the window says how to start, as buttons that do it.
+TEST_F(Fixture, AnEmptyWindowOffersTheWaysToStart)
+{
+    MainWindow w(settings, language);
+    w.show();
+    WelcomePage *welcome = w.welcomePage();
+    ASSERT_NE(welcome, nullptr);
+    EXPECT_TRUE(welcome->isVisible());
+    EXPECT_FALSE(w.editor()->isVisible());
+    EXPECT_EQ(welcome->connectButton()->text(), "Connect…");
+    EXPECT_EQ(welcome->openButton()->text(), "Open…");
+    EXPECT_EQ(welcome->newButton()->text(), "New…");
+
+    welcome->simulatorButton()->click();
+    auto *dialog = w.findChild<vt::ui::ConnectDialog *>();
+    ASSERT_NE(dialog, nullptr);
+    EXPECT_TRUE(dialog->isVisible());
+    EXPECT_EQ(dialog->kind(), vt::model::ConnectionKind::Sim);
+    dialog->reject();
+
+    // A document: the editor takes the place.
+    const vt::dev::Dictionary &dma = *vt::dev::builtinDictionaries()->find("dma-pn-v51");
+    w.workspace().document().createNew({&dma, "51", "3", 1, 1}, *vt::dev::builtinDictionaries());
+    EXPECT_FALSE(welcome->isVisible());
+    EXPECT_TRUE(w.editor()->isVisible());
+}
+
+// Help ▸ User Guide: the guide inside the application, in the UI language, again on a switch.
+TEST_F(Fixture, TheUserGuideIsInTheApplicationInBothLanguages)
+{
+    MainWindow w(settings, language);
+    w.show();
+    EXPECT_TRUE(actionTexts(w, "menuHelp").contains("&User Guide"));
+    w.findChild<QAction *>("actionUserGuide")->trigger();
+    auto *guide = w.findChild<vt::ui::UserGuideDialog *>();
+    ASSERT_NE(guide, nullptr);
+    EXPECT_TRUE(guide->isVisible());
+    const QString en = guide->browser()->toPlainText();
+    EXPECT_TRUE(en.contains("Trust rules")) << en.toStdString();
+    EXPECT_TRUE(en.contains("ValveTune.conf"));
+    w.findChild<QAction *>("actionGerman")->trigger();
+    QCoreApplication::processEvents();
+    const QString de = guide->browser()->toPlainText();
+    EXPECT_TRUE(de.contains("Wo Dateien landen")) << de.toStdString();
+    // Both texts have the same chapters.
+    const auto headings = [](const QString &markdown) { return markdown.count("\n## "); };
+    EXPECT_EQ(headings(vt::ui::UserGuideDialog::guideText("en")),
+              headings(vt::ui::UserGuideDialog::guideText("de")));
+    EXPECT_GE(headings(vt::ui::UserGuideDialog::guideText("en")), 4);
 }
 
 TEST(Language, RejectsUnknownCodesAndKeepsTheCurrentOne)

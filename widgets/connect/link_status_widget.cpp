@@ -18,6 +18,17 @@ namespace {
 // Counters change with every request (the monitor polls many times a second); people read ten
 // updates a second at most.
 constexpr int kRefreshMs = 100;
+// The status bar keeps room for messages: link and identity give up their tails (whole on hover).
+constexpr int kLinkWidthPx = 240;
+constexpr int kIdentityWidthPx = 260;
+constexpr const char *kFullText = "vtFullText";
+
+void setElided(QLabel *label, const QString &full, int widthPx, const QString &moreTip = {})
+{
+    label->setProperty(kFullText, full);
+    label->setText(label->fontMetrics().elidedText(full, Qt::ElideRight, widthPx));
+    label->setToolTip(moreTip.isEmpty() ? full : full + QStringLiteral("\n\n") + moreTip);
+}
 
 } // namespace
 
@@ -97,12 +108,13 @@ void LinkStatusWidget::scheduleRefresh()
 
 QString LinkStatusWidget::linkText() const
 {
-    return m_link->text();
+    const QVariant full = m_link->property(kFullText);
+    return full.isValid() ? full.toString() : m_link->text();
 }
 
 QString LinkStatusWidget::identityText() const
 {
-    return m_identity->text();
+    return m_identity->property(kFullText).toString();
 }
 
 QString LinkStatusWidget::countersText() const
@@ -133,8 +145,10 @@ void LinkStatusWidget::refresh()
     const QLocale locale;
     if (!m_connection) {
         m_link->setText(link::linkStateText(link::LinkState::Closed));
+        m_link->setProperty(kFullText, QVariant());
         m_link->setToolTip(QString());
         m_identity->clear();
+        m_identity->setProperty(kFullText, QString());
         m_identity->setToolTip(QString());
         m_identity->hide();
         m_counters->clear();
@@ -145,8 +159,7 @@ void LinkStatusWidget::refresh()
     QString state = link::linkStateText(m_connection->link().state());
     if (!m_reason.isEmpty())
         state = tr("%1: %2").arg(state, m_reason);
-    m_link->setText(tr("%1 — %2").arg(m_connection->displayText(), state));
-    m_link->setToolTip(m_link->text());
+    setElided(m_link, tr("%1 — %2").arg(m_connection->displayText(), state), kLinkWidthPx);
 
     QStringList modules;
     QStringList warnings;
@@ -155,8 +168,8 @@ void LinkStatusWidget::refresh()
         if (!module.identification.warning.en.empty())
             warnings << model::localText(module.identification.warning);
     }
-    m_identity->setText(modules.join(QStringLiteral("; ")));
-    m_identity->setToolTip(warnings.join(QLatin1Char('\n')));
+    setElided(m_identity, modules.join(QStringLiteral("; ")), kIdentityWidthPx,
+              warnings.join(QLatin1Char('\n')));
     m_identity->setVisible(!modules.isEmpty());
 
     const model::SessionCounters &c = m_connection->session().counters();

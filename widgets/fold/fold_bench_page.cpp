@@ -152,9 +152,7 @@ bool FoldBenchPage::startBench()
     const model::FoldPlan &plan = wizard->plan();
     model::Connection *connection = wizard->connection();
     if (!wizard->online() || !model::PlcTestBench::supports(connection->session())) {
-        m_counters->setText(
-            tr("The test bench needs a node image connection (TCP with the node image "
-               "protocol, or the simulator with protocol \"node-image\")."));
+        m_counters->setText(unavailableText());
         return false;
     }
     const dev::hcs::Family family = model::foldFamily(plan.node);
@@ -265,6 +263,21 @@ void FoldBenchPage::showCounters()
             .arg(m_bench->lastTadr()));
 }
 
+QString FoldBenchPage::unavailableText() const
+{
+    // Why, and what to connect: the bench talks to the node as a PLC does, through its image.
+    const QString what =
+        tr("Connect the node's fieldbus gateway over TCP with the protocol \"node-image\" "
+           "(Device ▸ Connect…), or the simulator with the protocol \"node-image\".");
+    FoldWizard *wizard = fold();
+    if (!wizard || !wizard->online())
+        return tr("Not available: no node is connected.") + QLatin1Char(' ') + what;
+    return tr("Not available: the connection speaks %1, and the test bench needs the node's "
+              "cyclic CMD 15 image.")
+               .arg(QString::fromLatin1(dev::key(wizard->connection()->protocol()))) +
+           QLatin1Char(' ') + what;
+}
+
 void FoldBenchPage::updateState()
 {
     FoldWizard *wizard = fold();
@@ -275,13 +288,11 @@ void FoldBenchPage::updateState()
     const bool running = m_bench && m_bench->isRunning();
     m_start->setEnabled(usable && !running);
     m_stop->setEnabled(running);
-    m_intro->setText(
-        usable ? tr("Sends CMD 15 to every module with the values below, TADR changing every "
-                    "telegram, and shows each module's answer as the node multiplexes them "
-                    "(DMA Profinet manual §4.2, OPAT manual §3.2).")
-               : tr("Not available: connect through a node image link (TCP with the node "
-                    "image protocol, or the simulator with protocol \"node-image\") to use "
-                    "the test bench."));
+    m_intro->setText(usable ? tr("Sends CMD 15 to every module with the values below, TADR "
+                                 "changing every telegram, and shows each module's answer as the "
+                                 "node multiplexes them (DMA Profinet manual §4.2, OPAT manual "
+                                 "§3.2).")
+                            : unavailableText());
 }
 
 void FoldBenchPage::retranslate()

@@ -42,6 +42,7 @@ private:
     void pushSetpoints();
     void showAnswer(int index);
     void showCounters();
+    QString unavailableText() const;
     void updateState();
 
     QLabel *m_intro = nullptr;

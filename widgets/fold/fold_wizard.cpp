@@ -34,6 +34,8 @@ FoldWizard::FoldWizard(const dev::DictionarySet &dictionaries, model::Connection
     setPage(PlcPageId, new FoldPlcPage(this));
     setPage(BenchPageId, new FoldBenchPage(this));
     setStartId(NodePageId);
+    // Its tables and texts readable without resizing, on a 1366 × 768 laptop as well.
+    resize(980, 640);
     if (m_connection)
         connect(m_connection, &model::Connection::lost, this, &FoldWizard::connectionChanged);
     retranslate();

@@ -78,11 +78,15 @@ InspectorView::InspectorView(QWidget *parent)
     m_tabs->addTab(m_detail, QString());
     m_tabs->addTab(m_decode, QString());
     m_tabs->addTab(m_compose, QString());
-    auto *split = new QSplitter(Qt::Vertical, this);
+    // Side by side: the dock is wide and low, and the list keeps the dock's whole height for rows.
+    m_table->setObjectName(QStringLiteral("telegramTable"));
+    auto *split = new QSplitter(Qt::Horizontal, this);
+    split->setObjectName(QStringLiteral("inspectorSplitter"));
     split->addWidget(m_table);
     split->addWidget(m_tabs);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
+    split->setSizes({860, 440});
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(bar);
     layout->addWidget(split, 1);
@@ -130,8 +134,18 @@ void InspectorView::setLog(vt::model::TelegramLog *log)
     m_model->setSummaryOptions(summaryOptions());
     m_table->setModel(m_model);
     applyFilterFromControls();
-    m_table->horizontalHeader()->setSectionResizeMode(vt::model::TelegramLogModel::SummaryColumn,
-                                                      QHeaderView::Stretch);
+    // One text line a frame; the summary takes what the short columns leave.
+    using Log = vt::model::TelegramLogModel;
+    const QFontMetrics metrics = m_table->fontMetrics();
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_table->verticalHeader()->setDefaultSectionSize(metrics.height() + 6);
+    const std::pair<int, const char *> widths[] = {
+        {Log::TimeColumn, "00000,000000"},      {Log::DirectionColumn, "Direction"},
+        {Log::LinkColumn, "sim dma-pn-v51 ×3"}, {Log::ProtocolColumn, "node-image"},
+        {Log::ModuleColumn, "Module"},          {Log::StatusColumn, "timeout"}};
+    for (const auto &[column, sample] : widths)
+        m_table->setColumnWidth(column, metrics.horizontalAdvance(QString::fromUtf8(sample)) + 16);
+    m_table->horizontalHeader()->setSectionResizeMode(Log::SummaryColumn, QHeaderView::Stretch);
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             &InspectorView::onCurrentRowChanged);
     connect(m_model, &QAbstractItemModel::rowsInserted, this, &InspectorView::onRowsInserted);

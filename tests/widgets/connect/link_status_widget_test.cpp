@@ -53,6 +53,13 @@ TEST(LinkStatusWidget, FollowsStateIdentityAndCounters)
         << widget.identityText().toStdString();
     EXPECT_TRUE(widget.identityText().startsWith(QStringLiteral("#1 ")))
         << widget.identityText().toStdString();
+    // A node of five: the status bar keeps room for messages, the whole text is on hover.
+    widget.setModules(std::vector<model::ModuleInfo>(5, identified->module));
+    auto *identity = widget.findChild<QLabel *>(QStringLiteral("identity"));
+    ASSERT_TRUE(identity);
+    EXPECT_LE(identity->sizeHint().width(), 360);
+    EXPECT_EQ(widget.identityText().count(QStringLiteral("#1 ")), 5);
+    EXPECT_TRUE(identity->toolTip().contains(widget.identityText()));
 
     const quint64 requests = connection->session().counters().requests;
     ASSERT_GT(requests, 0u);

@@ -90,6 +90,14 @@ TEST(FoldWizard, PagesInOrderAndACleanPlanPasses)
     EXPECT_FALSE(w.wizard.page(FoldWizard::BenchPageId)
                      ->findChild<QAbstractButton *>(QStringLiteral("startBench"))
                      ->isEnabled());
+    // It says why it cannot run and what to connect.
+    auto *intro =
+        w.wizard.page(FoldWizard::BenchPageId)->findChild<QLabel *>(QStringLiteral("intro"));
+    ASSERT_TRUE(intro);
+    EXPECT_TRUE(intro->text().contains(QStringLiteral("no node is connected")))
+        << intro->text().toStdString();
+    EXPECT_TRUE(intro->text().contains(QStringLiteral("node-image")));
+    EXPECT_TRUE(intro->text().contains(QStringLiteral("Device ▸ Connect")));
 }
 
 // DMA Profinet manual §4.1: every module needs its own E22.
