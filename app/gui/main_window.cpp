@@ -20,6 +20,7 @@
 #include "widgets/inspector/compose_panel.h"
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/monitor/monitor_view.h"
+#include "widgets/tuning/workbench_view.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -258,7 +259,14 @@ void MainWindow::createDocks()
     m_curveEditor = new ui::LCurveEditor(this);
     m_curveEditor->setModel(m_curves);
     m_curveDock = dock("dockCurve", m_curveEditor, Qt::BottomDockWidgetArea);
-    // The editor keeps the full width; monitor, telegrams and curves share the bottom as tabs.
+    // The tuning workbench: test signals on a set value, step and frequency response, runs.
+    m_workbench = new ui::WorkbenchView(this);
+    m_workbenchDock = dock("dockWorkbench", m_workbench, Qt::BottomDockWidgetArea);
+    connect(m_workbench, &ui::WorkbenchView::written, m_monitor, &ui::MonitorView::journalWrites);
+    connect(m_workbench, &ui::WorkbenchView::statusMessage, this, &MainWindow::showStatus);
+    // The editor keeps the full width; monitor, workbench, telegrams and curves share the bottom
+    // as tabs.
+    tabifyDockWidget(m_monitorDock, m_workbenchDock);
     tabifyDockWidget(m_monitorDock, m_telegramsDock);
     tabifyDockWidget(m_monitorDock, m_curveDock);
     m_monitorDock->raise();
@@ -300,6 +308,7 @@ void MainWindow::connectWorkspace()
     // The wizard holds the connection: it lets go before the connection is destroyed.
     connect(m_workspace, &Workspace::aboutToDisconnect, this, [this] {
         m_monitor->clearConnection();
+        m_workbench->clearConnection();
         m_inspector->clearConnection();
         m_linkStatus->clearConnection();
         if (m_wizard)
@@ -312,6 +321,7 @@ void MainWindow::connectWorkspace()
         m_nodeView->setNodeText(m_workspace->connection()->displayText());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
         m_monitor->setConnection(m_workspace->connection(), m_workspace->modules());
+        m_workbench->setConnection(&m_workspace->connection()->access(), m_workspace->modules());
         showStatus(tr("Connected: %n module(s).", nullptr,
                       static_cast<int>(m_workspace->modules().size())));
         updateActions();
@@ -319,6 +329,7 @@ void MainWindow::connectWorkspace()
     });
     connect(m_workspace, &Workspace::scanFinished, this, [this] {
         m_monitor->setConnection(m_workspace->connection(), m_workspace->modules());
+        m_workbench->setConnection(&m_workspace->connection()->access(), m_workspace->modules());
         m_linkStatus->setModules(m_workspace->modules());
         m_inspector->setConnection(m_workspace->connection(), m_workspace->modules());
     });
@@ -464,6 +475,7 @@ void MainWindow::retranslate()
 
     m_nodeDock->setWindowTitle(tr("Node"));
     m_monitorDock->setWindowTitle(tr("Monitor"));
+    m_workbenchDock->setWindowTitle(tr("Workbench"));
     m_telegramsDock->setWindowTitle(tr("Telegrams"));
     m_curveDock->setWindowTitle(tr("Linearisation"));
     updateTitle();

@@ -1,10 +1,12 @@
 #include "test_run.h"
 
+#include "core/key_lookup.h"
 #include "dict/cooking.h"
 #include "model/monitor/set_value_step.h"
 #include "model/text_language.h"
 
 #include <QLocale>
+#include <array>
 #include <cmath>
 
 namespace vt::model {
@@ -59,24 +61,6 @@ const char *key(TestEnd end)
     case TestEnd::LinkLost: return "link-lost";
     }
     return "?";
-}
-
-double TestRecording::updateRateHz() const
-{
-    const auto &t = setValue.t;
-    if (t.size() < 2 || !(t.back() > t.front()))
-        return 0;
-    return static_cast<double>(t.size() - 1) / (t.back() - t.front());
-}
-
-double TestRecording::sampleRateHz() const
-{
-    if (channels.empty())
-        return 0;
-    const auto &t = channels.front().t;
-    if (t.size() < 2 || !(t.back() > t.front()))
-        return 0;
-    return static_cast<double>(t.size() - 1) / (t.back() - t.front());
 }
 
 TestRun::TestRun(DeviceAccess &access, TestRunSetup setup, QObject *parent)
@@ -421,3 +405,15 @@ void TestRun::restore()
 }
 
 } // namespace vt::model
+
+namespace vt::dev {
+
+template<> std::optional<model::TestEnd> fromKey<model::TestEnd>(std::string_view text)
+{
+    using model::TestEnd;
+    constexpr std::array kEnds{TestEnd::Finished, TestEnd::Stopped,     TestEnd::WindowExceeded,
+                               TestEnd::Refused,  TestEnd::DeviceError, TestEnd::LinkLost};
+    return keyLookup<TestEnd>(kEnds, text);
+}
+
+} // namespace vt::dev

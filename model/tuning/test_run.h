@@ -14,7 +14,7 @@
 
 #include "model/session/device_access.h"
 #include "model/session/write_job.h"
-#include "model/tuning/samples.h"
+#include "model/tuning/test_recording.h"
 #include "model/tuning/test_signal.h"
 
 #include <QObject>
@@ -47,20 +47,6 @@ enum class TestEnd {
     LinkLost,       // the link went away or stopped answering
 };
 const char *key(TestEnd end);
-
-// What the test recorded: one series per channel and the set value as acknowledged, on the time
-// axis of the test (0 = the first value of the signal was acknowledged).
-struct TestRecording
-{
-    std::vector<const dev::ParamMeta *> rows; // the channels
-    std::vector<Samples> channels;            // one per row, display units
-    Samples setValue;                         // display units, at each acknowledgement
-    double sessionStart = 0;                  // session seconds of t = 0
-    int writes = 0;
-    int cycles = 0;
-    double updateRateHz() const; // acknowledged set-value writes per second
-    double sampleRateHz() const; // channel reads per second
-};
 
 struct TestOutcome
 {
@@ -125,5 +111,9 @@ private:
 };
 
 } // namespace vt::model
+
+namespace vt::dev {
+template<> std::optional<model::TestEnd> fromKey<model::TestEnd>(std::string_view text);
+} // namespace vt::dev
 
 Q_DECLARE_METATYPE(vt::model::TestOutcome)
