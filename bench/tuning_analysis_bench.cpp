@@ -37,7 +37,7 @@ struct Times
 constexpr double kSeconds = 3600;
 constexpr double kRateHz = 200;
 constexpr double kUpdateHz = 100;
-constexpr double kStepEvery = 10;  // s
+constexpr double kStepEvery = 10; // s
 constexpr int kSweepPoints = 30;
 constexpr double kPointSeconds = kSeconds / kSweepPoints;
 constexpr int kSettleCycles = 2;
@@ -148,7 +148,7 @@ double threadCpuMs()
     return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
 }
 
-void measure(Times &times, const std::function<double()> &work, volatile double &sink)
+void measure(Times &times, volatile double &sink, const std::function<double()> &work)
 {
     const double cpu = threadCpuMs();
     const auto start = Clock::now();
@@ -173,10 +173,10 @@ int main()
     volatile double sink = 0;
     Times copySteps, stepTimes, copySweep, sweepTimes;
     for (int run = 0; run < kRuns; ++run) { // interleaved, so load changes hit all alike
-        measure(copySteps, [&] { return copy(steps); }, sink);
-        measure(stepTimes, [&] { return analyseSteps(steps); }, sink);
-        measure(copySweep, [&] { return copy(sweep); }, sink);
-        measure(sweepTimes, [&] { return analyseSweep(sweep); }, sink);
+        measure(copySteps, sink, [&] { return copy(steps); });
+        measure(stepTimes, sink, [&] { return analyseSteps(steps); });
+        measure(copySweep, sink, [&] { return copy(sweep); });
+        measure(sweepTimes, sink, [&] { return analyseSweep(sweep); });
     }
     // What the timed runs computed, so a bench that measures refusals shows it.
     const std::vector<StepEdge> edges = findStepEdges(steps[0], 0.01, t.back());
@@ -185,8 +185,8 @@ int main()
         if (stepMetrics(steps[1], edge).ok())
             ++measured;
     const std::vector<FrequencyPoint> points = sweepPoints(sweep);
-    const auto valid = static_cast<std::size_t>(
-        std::count_if(points.begin(), points.end(), [](const FrequencyPoint &p) { return p.valid; }));
+    const auto valid = static_cast<std::size_t>(std::count_if(
+        points.begin(), points.end(), [](const FrequencyPoint &p) { return p.valid; }));
     const double f3 = gainCrossing(points).value_or(0);
 
     const double cSteps = median(copySteps.cpu), aSteps = median(stepTimes.cpu);
@@ -195,8 +195,8 @@ int main()
                 "CPU (wall) ms\n",
                 t.size(), kRuns);
     std::printf("  copy of the step recording:  %8.2f (%8.2f)\n", cSteps, median(copySteps.wall));
-    std::printf("  step metrics:                %8.2f (%8.2f)  %zu of %zu steps measured\n",
-                aSteps, median(stepTimes.wall), measured, edges.size());
+    std::printf("  step metrics:                %8.2f (%8.2f)  %zu of %zu steps measured\n", aSteps,
+                median(stepTimes.wall), measured, edges.size());
     std::printf("  copy of the sweep recording: %8.2f (%8.2f)\n", cSweep, median(copySweep.wall));
     std::printf("  sweep:                       %8.2f (%8.2f)  %zu of %d points valid, "
                 "-3 dB at %.2f Hz (the lag's: %.2f Hz)\n",
