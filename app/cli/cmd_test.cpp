@@ -111,8 +111,8 @@ std::string parseSignal(QStringList &args, dev::Language lang, Parsed &p)
         const auto text = take(name);
         if (!text)
             return;
-        const auto v = parseInteger(*text);
-        if ((!v || *v < min || *v > max) && error.empty())
+        const auto v = parseInteger(*text, min, max);
+        if (!v && error.empty())
             error = std::string(name) + " takes a whole number " + std::to_string(min) + ".." +
                     std::to_string(max);
         if (v)
@@ -308,7 +308,7 @@ int runTest(const QStringList &argsIn, Context &ctx)
         const dev::LocalText reason = dict.monitor.forMode(mode).noSetValue;
         return ctx.fail(kExitUsage, moduleText(*module) + " has no set value for branch " +
                                         std::to_string(p.branch) + " a test can drive" +
-                                        (reason.empty() ? "" : ": " + reason.in(run.lang())) +
+                                        (reason.in(run.lang()).empty() ? "" : ": " + reason.in(run.lang())) +
                                         "; nothing was sent");
     }
     model::TestRunSetup setup{*module, setValue, *signal, {}, {}, p.window, p.rate, true};

@@ -322,12 +322,11 @@ void TestRun::readChannels()
 
 void TestRun::scheduleNext()
 {
-    if (m_setup.rateHz <= 0) {
-        m_next.start(0);
-        return;
-    }
-    // Cycles start on a fixed grid from t = 0, so a slow exchange does not shift the rest.
-    const double period = 1.0 / m_setup.rateHz;
+    // Cycles start on a fixed grid from t = 0, so a slow exchange does not shift the rest. "As
+    // fast as the link allows" is capped at kMaxRateHz: an in-process simulator answers at once,
+    // and its plant moves in 0.5 ms steps.
+    const double period = 1.0 / (m_setup.rateHz > 0 ? std::min(m_setup.rateHz, kMaxRateHz)
+                                                      : kMaxRateHz);
     const double t = now() - m_recording.sessionStart;
     const double due = std::ceil(t / period + 1e-9) * period;
     m_next.start(static_cast<int>(std::lround((due - t) * 1000.0)));

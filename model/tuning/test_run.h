@@ -24,6 +24,8 @@
 
 namespace vt::model {
 
+constexpr double kMaxRateHz = 1000;
+
 struct TestRunSetup
 {
     ModuleInfo module;
@@ -34,7 +36,8 @@ struct TestRunSetup
     // Travel window: stop when the actual value leaves the signal's range by more than this
     // (same unit as the set value).
     std::optional<double> window;
-    double rateHz = 0;         // cycles (write + read) per second; 0: as fast as the link allows
+    // Cycles (write + read) per second; 0: as fast as the link allows. At most kMaxRateHz.
+    double rateHz = 0;
     bool switchSource = false; // write the activation rows for the test, restore them after
 };
 
