@@ -329,7 +329,7 @@ void TestRun::scheduleNext()
                                                       : kMaxRateHz);
     const double t = now() - m_recording.sessionStart;
     const double due = std::ceil(t / period + 1e-9) * period;
-    m_next.start(static_cast<int>(std::lround((due - t) * 1000.0)));
+    m_next.start(static_cast<int>(std::ceil((due - t) * 1000.0)));
 }
 
 void TestRun::stop()
