@@ -97,7 +97,7 @@ double TestRun::elapsed() const
 {
     if (m_recording.setValue.t.empty())
         return 0;
-    return now() - m_recording.sessionStart;
+    return now() - m_recording.sessionStart - m_lateBy;
 }
 
 double TestRun::raw(double display) const
@@ -234,7 +234,18 @@ void TestRun::cycle()
         return;
     }
     const bool first = m_recording.setValue.t.empty();
-    const double t = first ? 0 : now() - m_recording.sessionStart;
+    double t = first ? 0 : now() - m_recording.sessionStart - m_lateBy;
+    // A cycle that comes late (a loaded machine, a slow link) never skips a level of a step or
+    // square: the signal's clock waits, so every level is written and held for its full time.
+    const std::vector<double> &jumps = m_setup.signal.jumps();
+    if (m_jumpsDone < jumps.size() &&
+        t >= (m_jumpsDone + 1 < jumps.size() ? jumps[m_jumpsDone + 1]
+                                             : m_setup.signal.duration())) {
+        m_lateBy += t - jumps[m_jumpsDone];
+        t = jumps[m_jumpsDone];
+    }
+    while (m_jumpsDone < jumps.size() && t >= jumps[m_jumpsDone])
+        ++m_jumpsDone;
     if (!first && t >= m_setup.signal.duration()) {
         end(TestEnd::Finished, {});
         return;
@@ -327,7 +338,7 @@ void TestRun::scheduleNext()
     // and its plant moves in 0.5 ms steps.
     const double period = 1.0 / (m_setup.rateHz > 0 ? std::min(m_setup.rateHz, kMaxRateHz)
                                                       : kMaxRateHz);
-    const double t = now() - m_recording.sessionStart;
+    const double t = now() - m_recording.sessionStart - m_lateBy;
     const double due = std::ceil(t / period + 1e-9) * period;
     m_next.start(static_cast<int>(std::ceil((due - t) * 1000.0)));
 }

@@ -107,6 +107,8 @@ private:
     std::optional<double> m_lastRaw;         // the set value last acknowledged
     bool m_stopRequested = false;
     bool m_attempted = false; // a set-value write was sent
+    double m_lateBy = 0;          // s the signal's clock waited for late cycles
+    std::size_t m_jumpsDone = 0;  // jumps of the signal written
     QTimer m_next;
     std::shared_ptr<DeviceAccess::ReadHandle> m_read;
     std::unique_ptr<WriteJob> m_job;

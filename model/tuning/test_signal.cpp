@@ -144,6 +144,8 @@ void TestSignal::build()
                 m_edges.push_back({static_cast<double>(i) * s.hold, m_levels[i - 1], m_levels[i],
                                    static_cast<double>(i + 1) * s.hold});
         }
+        for (std::size_t i = 1; i < m_levels.size(); ++i)
+            m_jumps.push_back(static_cast<double>(i) * s.hold);
         m_duration = static_cast<double>(m_levels.size()) * s.hold;
         m_min = std::min(s.from, s.to);
         m_max = std::max(s.from, s.to);
@@ -162,6 +164,7 @@ void TestSignal::build()
                 const double t = half * period / 2;
                 const bool high = half % 2 == 0;
                 m_edges.push_back({t, high ? m_min : m_max, high ? m_max : m_min, t + period / 2});
+                m_jumps.push_back(t);
             }
         }
         m_points.push_back({s.frequencyHz, 0, s.settlingCycles * period, s.cycles});

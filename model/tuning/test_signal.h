@@ -77,6 +77,9 @@ public:
     double initialValue() const { return valueAt(0); }
 
     const std::vector<SignalEdge> &edges() const { return m_edges; }    // step and square
+    // Every time the value jumps (step and square, the unmeasured way back included); empty
+    // for the continuous signals.
+    const std::vector<double> &jumps() const { return m_jumps; }
     const std::vector<SignalPoint> &points() const { return m_points; } // sine and sweep
 
 private:
@@ -90,6 +93,7 @@ private:
     double m_max = 0;
     std::vector<SignalEdge> m_edges;
     std::vector<SignalPoint> m_points;
+    std::vector<double> m_jumps;
     std::vector<double> m_levels; // step: level of each hold, m_levels[i] over [i·hold, (i+1)·hold)
 };
 

@@ -4,6 +4,7 @@
 #include "model/tuning/test_run.h"
 #include "sim_rig.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <gtest/gtest.h>
 
@@ -89,6 +90,34 @@ TEST(TestRun, AStepRecordsTheAcknowledgedSetValueAndPutsItBack)
     EXPECT_DOUBLE_EQ(b.read("A1.01"), 1000);
     ASSERT_EQ(outcome.restore.size(), 1u);
     EXPECT_EQ(outcome.restore[0].status, WriteStatus::Verified);
+}
+
+// A loaded machine may hold the test back longer than a level lasts: the level is still written
+// and held, never skipped.
+TEST(TestRun, ALateCycleNeverSkipsALevel)
+{
+    Bench b;
+    ASSERT_TRUE(b.rig);
+    ASSERT_TRUE(b.write("E17", 2));
+    SignalSpec spec = upStep(3, 5, 0.05);
+    spec.direction = StepDirection::Both;
+    TestRun test(b.rig->access(), b.setup(spec));
+    bool stalled = false;
+    QObject::connect(&test, &TestRun::sampled, &test, [&] {
+        if (!stalled && test.recording().setValue.y.size() == 2) {
+            stalled = true;
+            QElapsedTimer busy; // the GUI thread busy for two levels' time
+            busy.start();
+            while (busy.elapsed() < 120) {
+            }
+        }
+    });
+    const TestOutcome outcome = b.run(test);
+    EXPECT_EQ(outcome.end, TestEnd::Finished);
+    ASSERT_EQ(test.recording().setValue.y.size(), 3u);
+    EXPECT_DOUBLE_EQ(test.recording().setValue.y[2], 3.0);
+    const double held = test.recording().channels[0].t.back() - test.recording().setValue.t[2];
+    EXPECT_GE(held, 0.045);
 }
 
 TEST(TestRun, TheSourceIsCheckedFirstAndNothingIsWrittenWhenItDiffers)

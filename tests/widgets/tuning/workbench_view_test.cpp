@@ -64,6 +64,9 @@ TEST(WorkbenchView, AStepIsAskedForRunsAndKeepsARunWithItsResults)
     test::ActuatorAnswer answer;
     ASSERT_TRUE(b.view.selectTarget(b.rig->module().address, QStringLiteral("A1.01")));
     b.view.signalForm()->setSpec(step(0.25));
+    ASSERT_TRUE(b.view.signalForm()->spec());
+    EXPECT_EQ(b.view.signalForm()->spec()->direction, model::StepDirection::Both);
+    EXPECT_EQ(b.view.signalForm()->spec()->hold, 0.25);
     ASSERT_TRUE(b.runOnce(1)) << b.view.statusText().toStdString();
     ASSERT_EQ(answer.asked.size(), 1);
     EXPECT_TRUE(answer.asked.front().join(' ').contains(QStringLiteral("A1.01")));
