@@ -364,7 +364,7 @@ int runTest(const QStringList &argsIn, Context &ctx)
         return run.failDeadline("module " + std::to_string(module->address) + ": the test");
 
     const model::TestRecording &rec = test.recording();
-    const model::RunAnalysis analysis = model::analyseRun(*signal, rec, setup.actualRow);
+    const model::RunAnalysis analysis = model::analyseRun(*signal, rec, setup.actualRow, setValue);
     if (!p.csv.isEmpty() && !writeCsv(p.csv, rec, *setValue))
         ctx.err << "valvetune-cli: could not write " << str(p.csv) << '\n';
 

@@ -48,7 +48,7 @@ std::vector<StepEdge> measuredEdges(const TestSignal &signal, const TestRecordin
 } // namespace
 
 RunAnalysis analyseRun(const TestSignal &signal, const TestRecording &recording,
-                       const dev::ParamMeta *responseRow)
+                       const dev::ParamMeta *responseRow, const dev::ParamMeta *setValueRow)
 {
     RunAnalysis out;
     const Samples *actual = recording.channel(responseRow);
@@ -59,8 +59,11 @@ RunAnalysis analyseRun(const TestSignal &signal, const TestRecording &recording,
     for (const StepEdge &edge : measuredEdges(signal, recording, end)) {
         StepResult result{edge, {}, {}};
         auto metrics = stepMetrics(*actual, edge);
-        if (metrics.ok())
+        if (metrics.ok()) {
             result.metrics = *metrics;
+            if (setValueRow && responseRow->unit != setValueRow->unit)
+                result.metrics->steadyStateError = std::numeric_limits<double>::quiet_NaN();
+        }
         else
             result.problem = metrics.error();
         out.steps.push_back(result);

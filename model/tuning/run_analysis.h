@@ -33,7 +33,9 @@ struct RunAnalysis
     double maxValidHz = 0;        // the valid band's top for these sample and update rates
 };
 
+// `setValueRow` names the set value's unit: a response in another unit (a solenoid current in
+// open loop) has no steady-state error against it (NaN).
 RunAnalysis analyseRun(const TestSignal &signal, const TestRecording &recording,
-                       const dev::ParamMeta *responseRow);
+                       const dev::ParamMeta *responseRow, const dev::ParamMeta *setValueRow);
 
 } // namespace vt::model

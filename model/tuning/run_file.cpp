@@ -289,8 +289,14 @@ dev::Result<RunFileData, std::string> parseRunFiles(std::string_view json, std::
         return e;
     if (channels->size() > kMaxChannels)
         return std::string("more than 64 channels");
+    // Names go into the CSV's header: no separators in them.
+    const auto plainName = [](const std::string &name) {
+        return !name.empty() && name.find_first_of(",\r\n") == std::string::npos;
+    };
+    if (!plainName(run.setValue))
+        return std::string("\"set_value\" is not a row name");
     for (const Json &c : *channels) {
-        if (!c.is_string())
+        if (!c.is_string() || !plainName(c.get<std::string>()))
             return std::string("\"channels\" must be a list of row names");
         run.channelNames.push_back(c.get<std::string>());
     }

@@ -195,7 +195,7 @@ std::optional<TuningRun> loadRun(const QString &path, const dev::DictionarySet &
     run.end = dev::fromKey<TestEnd>(data.end).value_or(TestEnd::Finished);
     run.restored = data.restored;
     run.settings = data.settings;
-    run.analysis = analyseRun(*signal, run.recording, run.responseRow);
+    run.analysis = analyseRun(*signal, run.recording, run.responseRow, run.setValueRow);
     return run;
 }
 

@@ -485,7 +485,8 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
     run->end = outcome.end;
     run->restored = outcome.restored;
     if (const auto signal = model::TestSignal::make(run->spec))
-        run->analysis = model::analyseRun(*signal, run->recording, run->responseRow);
+        run->analysis = model::analyseRun(*signal, run->recording, run->responseRow,
+                                            run->setValueRow);
     ++m_nextNumber;
     m_status = outcomeText(outcome);
     m_statusLabel->setText(m_status);
