@@ -87,6 +87,8 @@ const std::vector<Command> &commands()
          runWrite},
         {"diff", "compare a .vtpar file with the device", runDiff},
         {"monitor", "poll display values at a rate for a time (--csv)", runMonitor},
+        {"test", "drive the set value with a step, sine or sweep; step figures, gain and phase",
+         runTest},
         {"fold", "plan a multi-module node's PLC configuration (GSD, byte map)", runFold},
     };
     return list;

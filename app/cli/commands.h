@@ -18,6 +18,8 @@ int runSet(const QStringList &args, Context &ctx);
 int runWrite(const QStringList &args, Context &ctx);
 int runDiff(const QStringList &args, Context &ctx);
 int runMonitor(const QStringList &args, Context &ctx);
+// The tuning workbench: a test signal on a set value, analysed (cmd_test.cpp).
+int runTest(const QStringList &args, Context &ctx);
 
 // Module-fold PLC plan: cmd_fold.cpp.
 int runFold(const QStringList &args, Context &ctx);

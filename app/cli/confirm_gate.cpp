@@ -61,13 +61,21 @@ int ConfirmGate::pass(DeviceRun &run, const model::ModuleInfo &module,
 
 int ConfirmGate::pass(DeviceRun &run, std::vector<GateItem> items)
 {
+    return pass(run, std::move(items), {});
+}
+
+int ConfirmGate::pass(DeviceRun &run, std::vector<GateItem> items, const std::string &what)
+{
     std::erase_if(items, [](const GateItem &item) { return !item.row->movesActuator; });
     if (m_yes || items.empty())
         return kExitOk;
     readBefore(run, items);
-    // A value the device already holds is not sent again (the write sends changes only).
-    std::erase_if(items, [](const GateItem &item) {
-        return item.before && sameValue(*item.row, item.value, *item.before);
+    // A value the device already holds is not sent again (the write sends changes only). A
+    // test's set value (its first items) is listed whatever the device holds: the signal writes
+    // more than that value.
+    const dev::ParamMeta *testRow = what.empty() ? nullptr : items.front().row;
+    std::erase_if(items, [&](const GateItem &item) {
+        return item.row != testRow && item.before && sameValue(*item.row, item.value, *item.before);
     });
     if (items.empty())
         return kExitOk;
@@ -78,10 +86,13 @@ int ConfirmGate::pass(DeviceRun &run, std::vector<GateItem> items)
         for (const GateItem &item : items)
             list +=
                 (list.empty() ? "" : "; ") + moduleText(*item.module) + ": " + change(item, lang);
-        return m_ctx.fail(kExitUsage, "this write can move the actuator (" + list +
+        return m_ctx.fail(kExitUsage, (what.empty() ? "this write" : what) +
+                                          " can move the actuator (" + list +
                                           "); there is no terminal to confirm it: pass --yes "
                                           "to write it anyway; nothing was sent");
     }
+    if (!what.empty())
+        m_ctx.err << "This " << what.substr(2) << ".\n";
     m_ctx.err << "This write can move the actuator:\n";
     for (const GateItem &item : items)
         m_ctx.err << "  " << moduleText(*item.module) << ": " << change(item, lang) << '\n';

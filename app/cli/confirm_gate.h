@@ -30,6 +30,9 @@ public:
     // kExitOk: go on — nothing valve-moving would change, `--yes` was given, or the person said
     // yes. Otherwise the exit code (kExitUsage) after saying why; the caller sends nothing.
     int pass(DeviceRun &run, std::vector<GateItem> items);
+    // A test signal: `what` says what it does; every valve-moving item is listed, even one the
+    // device holds already (a test writes more than its first value).
+    int pass(DeviceRun &run, std::vector<GateItem> items, const std::string &what);
     int pass(DeviceRun &run, const model::ModuleInfo &module,
              const std::vector<model::WriteItem> &items);
 

@@ -14,7 +14,7 @@ _valvetune_cli()
 {
     local cur=${COMP_WORDS[COMP_CWORD]}
     local prev=${COMP_WORDS[COMP_CWORD - 1]}
-    local commands="decode encode dictionary info scan read get set write diff monitor fold"
+    local commands="decode encode dictionary info scan read get set write diff monitor test fold"
     local connection="--sim --port --baud --parity --stop --tcp --protocol --can --node --hart
         --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
         --module --fault --product --turnaround --lang --json --help"
@@ -108,6 +108,13 @@ _valvetune_cli()
         write) options="$connection --dry-run --yes" files=vtpar ;;
         diff) options=$connection files=vtpar ;;
         monitor) options="$connection --rate --duration --csv" ;;
+        test)
+            options="$connection --yes --branch --rate --window --csv --from --to --hold --repeat \
+--direction --amplitude --offset --frequency --cycles --settling --from-hz --to-hz \
+--points-per-decade"
+            [[ $((COMP_CWORD - i)) -eq 1 ]] && words="step square triangle sine sweep"
+            [[ $prev == --direction ]] && words="up down both"
+            ;;
         *) return ;;
     esac
     if [[ $prev == --protocol && $command != decode ]]; then

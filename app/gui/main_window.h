@@ -33,6 +33,7 @@ class LinkStatusWidget;
 class LCurveEditor;
 class NodeView;
 class ParameterEditor;
+class WorkbenchView;
 } // namespace vt::ui
 
 namespace vt::app {
@@ -59,6 +60,8 @@ public:
     WelcomePage *welcomePage() const { return m_welcome; }
     QDockWidget *nodeDock() const { return m_nodeDock; }
     QDockWidget *monitorDock() const { return m_monitorDock; }
+    QDockWidget *workbenchDock() const { return m_workbenchDock; }
+    ui::WorkbenchView *workbench() const { return m_workbench; }
     QDockWidget *telegramsDock() const { return m_telegramsDock; }
     QDockWidget *curveDock() const { return m_curveDock; }
     ui::LCurveEditor *curveEditor() const { return m_curveEditor; }
@@ -146,6 +149,8 @@ private:
 
     QDockWidget *m_nodeDock = nullptr;
     QDockWidget *m_monitorDock = nullptr;
+    QDockWidget *m_workbenchDock = nullptr;
+    ui::WorkbenchView *m_workbench = nullptr;
     QDockWidget *m_telegramsDock = nullptr;
     QDockWidget *m_curveDock = nullptr;
     ui::LinkStatusWidget *m_linkStatus = nullptr;

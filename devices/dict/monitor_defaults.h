@@ -26,7 +26,10 @@ struct MonitorDefaults
     std::vector<std::string> channels;          // plotted when monitoring starts, in this order
     std::vector<std::string> setValues;         // rows the step writes; empty: no step
     std::vector<SetValueActivation> activation; // checked in this order
-    LocalText noSetValue;                       // why there is no step, when setValues is empty
+    // Set value → the row that answers it (the workbench's actual value: d1.11 for A1.01 in
+    // closed loop, the solenoid current in open loop). A set value without one has no analysis.
+    std::map<std::string, std::string> responses;
+    LocalText noSetValue; // why there is no step, when setValues is empty
 };
 
 // The dictionary-level defaults and their per-mode overrides (a mode entry replaces the keys it

@@ -127,8 +127,8 @@ private:
 
     MonitorDefaults entry(const Json &j, const std::string &mode, bool top)
     {
-        static const std::set<std::string> kKeys = {"channels",     "set_values", "activation",
-                                                    "no_set_value", "note",       "modes"};
+        static const std::set<std::string> kKeys = {
+            "channels", "set_values", "activation", "responses", "no_set_value", "note", "modes"};
         for (const auto &[key, value] : j.items())
             if (!kKeys.count(key) || (!top && key == "modes"))
                 fail("\"monitor\" has an unknown key '" + key + "'");
@@ -160,6 +160,27 @@ private:
                 for (const Json &a : j["activation"])
                     if (auto act = activation(a, mode))
                         out.activation.push_back(std::move(*act));
+        }
+        if (j.contains("responses")) {
+            if (!j["responses"].is_object())
+                fail("\"monitor\".\"responses\" must map set values to the rows that answer them");
+            else
+                for (const auto &[set, answer] : j["responses"].items()) {
+                    if (std::find(out.setValues.begin(), out.setValues.end(), set) ==
+                        out.setValues.end()) {
+                        fail("\"monitor\".\"responses\" names '" + set +
+                             "', which is not one of the set values");
+                        continue;
+                    }
+                    const ParamMeta *p = answer.is_string()
+                                             ? row(answer.get<std::string>(), mode, "response")
+                                             : nullptr;
+                    if (!p || !p->readable() || p->isString()) {
+                        fail("\"monitor\" response of '" + set + "' must be a readable number");
+                        continue;
+                    }
+                    out.responses[set] = p->name;
+                }
         }
         out.noSetValue = text(j.value("no_set_value", Json()));
         if (out.setValues.empty() && !out.noSetValue.complete())

@@ -1,0 +1,429 @@
+#include "test_run.h"
+
+#include "core/key_lookup.h"
+#include "dict/cooking.h"
+#include "model/monitor/set_value_step.h"
+#include "model/text_language.h"
+
+#include <QLocale>
+#include <array>
+#include <cmath>
+
+namespace vt::model {
+
+namespace {
+
+QString rowName(const dev::ParamMeta &row)
+{
+    return QString::fromStdString(row.name);
+}
+
+QString displayText(const dev::ParamMeta &row, double raw)
+{
+    return QString::fromStdString(dev::formatValue(row, raw, textLanguage()));
+}
+
+QString numberText(double v)
+{
+    return QLocale().toString(v, 'g', 6);
+}
+
+// Why switching the source failed, with the row and the device's or the application's words.
+QString switchFailure(const std::vector<WriteItem> &items)
+{
+    for (const WriteItem &item : items)
+        if (!isOnDevice(item.status))
+            return TestRun::tr("Switching the set-value source %1 failed: %2")
+                .arg(rowName(*item.row), writeReasonText(item, textLanguage()));
+    return TestRun::tr("Switching the set-value source failed.");
+}
+
+TestEnd endFor(OutcomeStatus status)
+{
+    switch (status) {
+    case OutcomeStatus::LinkLost:
+    case OutcomeStatus::Timeout: return TestEnd::LinkLost;
+    case OutcomeStatus::Cancelled: return TestEnd::Stopped;
+    default: return TestEnd::DeviceError;
+    }
+}
+
+} // namespace
+
+const char *key(TestEnd end)
+{
+    switch (end) {
+    case TestEnd::Finished: return "finished";
+    case TestEnd::Stopped: return "stopped";
+    case TestEnd::WindowExceeded: return "window";
+    case TestEnd::Refused: return "refused";
+    case TestEnd::DeviceError: return "device-error";
+    case TestEnd::LinkLost: return "link-lost";
+    }
+    return "?";
+}
+
+TestRun::TestRun(DeviceAccess &access, TestRunSetup setup, QObject *parent)
+    : QObject(parent), m_access(access), m_setup(std::move(setup))
+{
+    m_recording.rows = m_setup.channels;
+    m_recording.channels.resize(m_setup.channels.size());
+    m_next.setSingleShot(true);
+    m_next.setTimerType(Qt::PreciseTimer);
+    connect(&m_next, &QTimer::timeout, this, &TestRun::cycle);
+}
+
+TestRun::~TestRun()
+{
+    *m_alive = false;
+    if (m_read)
+        m_read->cancel();
+    // A running restore finishes on its own: the set value must go back even when the view that
+    // started the test is closed (the job deletes itself when done).
+    if (m_job && m_job->isRunning()) {
+        WriteJob *job = m_job.release();
+        job->setParent(nullptr);
+        disconnect(job, nullptr, this, nullptr);
+        connect(job, &WriteJob::finished, job, &QObject::deleteLater);
+    }
+}
+
+double TestRun::now() const
+{
+    return static_cast<double>(m_access.session().elapsedNs()) * 1e-9;
+}
+
+double TestRun::elapsed() const
+{
+    if (m_recording.setValue.t.empty())
+        return 0;
+    return now() - m_recording.sessionStart - m_lateBy;
+}
+
+double TestRun::raw(double display) const
+{
+    const double factor =
+        m_setup.setValueRow->scale.factor != 0 ? m_setup.setValueRow->scale.factor : 1.0;
+    return std::round(display / factor);
+}
+
+QString TestRun::rangeProblem(const TestRunSetup &setup)
+{
+    const dev::ParamMeta *row = setup.setValueRow;
+    if (!row || !setup.module.dictionary)
+        return tr("The module has no set value a test can drive.");
+    if (!row->writable() || row->isString())
+        return tr("%1 cannot be written.").arg(rowName(*row));
+    const double factor = row->scale.factor != 0 ? row->scale.factor : 1.0;
+    for (double v : {setup.signal.minimum(), setup.signal.maximum()}) {
+        if (const auto error = dev::checkWrite(*row, std::round(v / factor)))
+            return tr("The signal reaches %1, outside %2: %3")
+                .arg(displayText(*row, std::round(v / factor)), rowName(*row),
+                     QString::fromStdString(error->message.in(textLanguage())));
+    }
+    if (setup.window && !(*setup.window > 0))
+        return tr("The window must be more than 0.");
+    if (setup.window && !setup.actualRow)
+        return tr("A window needs an actual value to watch.");
+    if (setup.window && setup.actualRow->unit != row->unit)
+        return tr("The window is in %1, the unit of %2; %3 is in %4.")
+            .arg(QString::fromStdString(row->unit), rowName(*row), rowName(*setup.actualRow),
+                 QString::fromStdString(setup.actualRow->unit));
+    return {};
+}
+
+void TestRun::start()
+{
+    if (m_phase != Phase::Idle)
+        return;
+    if (const QString problem = rangeProblem(m_setup); !problem.isEmpty()) {
+        m_phase = Phase::Done;
+        m_outcome.end = TestEnd::Refused;
+        m_outcome.reason = problem;
+        m_outcome.restored = true; // nothing was written
+        emit finished(m_outcome);
+        return;
+    }
+    check();
+}
+
+void TestRun::check()
+{
+    m_phase = Phase::Checking;
+    const dev::Dictionary &dict = *m_setup.module.dictionary;
+    const auto rules = SetValueStep::activationRules(dict, m_setup.module.identification.mode);
+    std::vector<const dev::ParamMeta *> rows;
+    for (const dev::SetValueActivation *rule : rules)
+        rows.push_back(SetValueStep::ruleRow(dict, *rule));
+    rows.push_back(m_setup.setValueRow);
+    const auto alive = m_alive;
+    m_read = m_access.read(
+        m_setup.module.address, rows, Priority::User,
+        [this, alive, rules, rows](const ReadResult &result) {
+            if (!*alive)
+                return;
+            if (!result.complete() || result.values.size() != rows.size()) {
+                const QString why = result.failures.empty()
+                                        ? tr("cancelled")
+                                        : result.failures.front().outcome.reason;
+                m_phase = Phase::Done;
+                m_outcome.end = TestEnd::Refused;
+                m_outcome.reason = tr("Reading the set value and its source failed: %1").arg(why);
+                m_outcome.restored = true;
+                emit finished(m_outcome);
+                return;
+            }
+            m_original = result.values.back().value;
+            for (std::size_t i = 0; i < rules.size(); ++i) {
+                const double held = dev::rawNumber(result.values[i].value);
+                if (held == rules[i]->value)
+                    continue;
+                if (!m_setup.switchSource) {
+                    m_phase = Phase::Done;
+                    m_outcome.end = TestEnd::Refused;
+                    m_outcome.needsSource = true;
+                    m_outcome.reason = SetValueStep::refusalText(*m_setup.setValueRow, *rows[i],
+                                                                 *rules[i], held, textLanguage());
+                    m_outcome.restored = true;
+                    emit finished(m_outcome);
+                    return;
+                }
+                WriteItem item;
+                item.row = rows[i];
+                item.value = rules[i]->value;
+                item.before = result.values[i].value;
+                m_sourceChanges.push_back(item);
+            }
+            if (m_sourceChanges.empty()) {
+                begin();
+                return;
+            }
+            m_phase = Phase::Switching;
+            m_job = std::make_unique<WriteJob>(m_access, m_setup.module.address,
+                                               *m_setup.module.dictionary, m_sourceChanges);
+            connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
+                m_sourceChanges = m_job->items();
+                m_job.release()->deleteLater();
+                if (!complete || m_stopRequested) {
+                    end(complete ? TestEnd::Stopped : TestEnd::DeviceError,
+                        complete ? QString() : switchFailure(m_sourceChanges));
+                    return;
+                }
+                begin();
+            });
+            m_job->start();
+        });
+}
+
+void TestRun::begin()
+{
+    m_phase = Phase::Running;
+    if (m_stopRequested) {
+        end(TestEnd::Stopped, {});
+        return;
+    }
+    cycle();
+}
+
+void TestRun::cycle()
+{
+    if (m_phase != Phase::Running)
+        return;
+    if (m_stopRequested) {
+        end(TestEnd::Stopped, {});
+        return;
+    }
+    const bool first = m_recording.setValue.t.empty();
+    double t = first ? 0 : now() - m_recording.sessionStart - m_lateBy;
+    // A cycle that comes late (a loaded machine, a slow link) never skips a level of a step or
+    // square: the signal's clock waits, so every level is written and held for its full time.
+    const std::vector<double> &jumps = m_setup.signal.jumps();
+    if (m_jumpsDone < jumps.size() &&
+        t >=
+            (m_jumpsDone + 1 < jumps.size() ? jumps[m_jumpsDone + 1] : m_setup.signal.duration())) {
+        m_lateBy += t - jumps[m_jumpsDone];
+        t = jumps[m_jumpsDone];
+    }
+    while (m_jumpsDone < jumps.size() && t >= jumps[m_jumpsDone])
+        ++m_jumpsDone;
+    if (!first && t >= m_setup.signal.duration()) {
+        end(TestEnd::Finished, {});
+        return;
+    }
+    const double value = raw(m_setup.signal.valueAt(t));
+    if (m_lastRaw && *m_lastRaw == value) {
+        readChannels();
+        return;
+    }
+    const auto alive = m_alive;
+    m_attempted = true;
+    m_access.write(
+        m_setup.module.address, *m_setup.setValueRow, dev::RawValue{value}, Priority::User,
+        [this, alive, value](const Outcome &outcome) {
+            if (!*alive || m_phase != Phase::Running)
+                return;
+            if (outcome.status != OutcomeStatus::Ok) {
+                end(endFor(outcome.status),
+                    tr("Writing %1 failed: %2").arg(rowName(*m_setup.setValueRow), outcome.reason));
+                return;
+            }
+            const double at = now();
+            if (m_recording.setValue.t.empty())
+                m_recording.sessionStart = at;
+            m_recording.setValue.t.push_back(at - m_recording.sessionStart);
+            m_recording.setValue.y.push_back(dev::toDisplay(*m_setup.setValueRow, value));
+            m_lastRaw = value;
+            ++m_recording.writes;
+            readChannels();
+        });
+}
+
+void TestRun::readChannels()
+{
+    std::vector<const dev::ParamMeta *> rows = m_setup.channels;
+    rows.push_back(m_setup.setValueRow);
+    const auto alive = m_alive;
+    m_read = m_access.read(
+        m_setup.module.address, rows, Priority::User,
+        [this, alive, rows](const ReadResult &result) {
+            if (!*alive || m_phase != Phase::Running)
+                return;
+            if (!result.complete() || result.values.size() != rows.size()) {
+                if (result.cancelled) {
+                    end(TestEnd::Stopped, {});
+                    return;
+                }
+                const Outcome &o = result.failures.front().outcome;
+                end(endFor(o.status), tr("Reading the recorded values failed: %1").arg(o.reason));
+                return;
+            }
+            const double t = now() - m_recording.sessionStart;
+            ++m_recording.cycles;
+            std::optional<double> actual;
+            for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+                const double v = dev::toDisplay(*rows[i], dev::rawNumber(result.values[i].value));
+                m_recording.channels[i].t.push_back(t);
+                m_recording.channels[i].y.push_back(v);
+                if (rows[i] == m_setup.actualRow)
+                    actual = v;
+            }
+            emit sampled();
+            const double held = dev::rawNumber(result.values.back().value);
+            if (m_lastRaw && held != *m_lastRaw) {
+                end(TestEnd::DeviceError,
+                    tr("%1 holds %2, not the %3 written: something else writes the set value.")
+                        .arg(rowName(*m_setup.setValueRow), displayText(*m_setup.setValueRow, held),
+                             displayText(*m_setup.setValueRow, *m_lastRaw)));
+                return;
+            }
+            if (m_setup.window && actual) {
+                const double low = m_setup.signal.minimum() - *m_setup.window;
+                const double high = m_setup.signal.maximum() + *m_setup.window;
+                if (*actual < low || *actual > high) {
+                    end(TestEnd::WindowExceeded,
+                        tr("%1 = %2 left the travel window %3 … %4.")
+                            .arg(rowName(*m_setup.actualRow), numberText(*actual), numberText(low),
+                                 numberText(high)));
+                    return;
+                }
+            }
+            scheduleNext();
+        });
+}
+
+void TestRun::scheduleNext()
+{
+    // Cycles start on a fixed grid from t = 0, so a slow exchange does not shift the rest. "As
+    // fast as the link allows" is capped at kMaxRateHz: an in-process simulator answers at once,
+    // and its plant moves in 0.5 ms steps.
+    const double period =
+        1.0 / (m_setup.rateHz > 0 ? std::min(m_setup.rateHz, kMaxRateHz) : kMaxRateHz);
+    const double t = now() - m_recording.sessionStart - m_lateBy;
+    const double due = std::ceil(t / period + 1e-9) * period;
+    m_next.start(static_cast<int>(std::ceil((due - t) * 1000.0)));
+}
+
+void TestRun::stop()
+{
+    if (!isRunning())
+        return;
+    m_stopRequested = true;
+    if (m_phase == Phase::Running) {
+        if (m_next.isActive()) {
+            m_next.stop();
+            end(TestEnd::Stopped, {});
+        }
+        // Otherwise the exchange on the wire ends and cycle()/readChannels() see the request.
+    } else if (m_phase == Phase::Checking) {
+        if (m_read)
+            m_read->cancel();
+    }
+}
+
+void TestRun::end(TestEnd why, const QString &reason)
+{
+    if (m_phase == Phase::Restoring || m_phase == Phase::Done)
+        return;
+    m_next.stop();
+    m_outcome.end = why;
+    m_outcome.reason = reason;
+    restore();
+}
+
+void TestRun::restore()
+{
+    m_phase = Phase::Restoring;
+    std::vector<WriteItem> items;
+    // A write that was sent but never acknowledged may still have arrived: put it back too.
+    if (m_original && m_attempted) {
+        WriteItem item;
+        item.row = m_setup.setValueRow;
+        item.value = *m_original;
+        if (m_lastRaw)
+            item.before = dev::RawValue{*m_lastRaw};
+        items.push_back(item);
+    }
+    // The source goes back after the set value, so the valve never sees the test's value from
+    // an analogue input again.
+    for (const WriteItem &changed : m_sourceChanges) {
+        if (!changed.before || !isOnDevice(changed.status))
+            continue;
+        WriteItem item;
+        item.row = changed.row;
+        item.value = *changed.before;
+        item.before = changed.value;
+        items.push_back(item);
+    }
+    if (items.empty()) {
+        m_phase = Phase::Done;
+        m_outcome.restored = true;
+        emit finished(m_outcome);
+        return;
+    }
+    WriteOptions options;
+    options.skipUnchanged = false; // the device's value is what the test left, whatever we know
+    m_job = std::make_unique<WriteJob>(m_access, m_setup.module.address, *m_setup.module.dictionary,
+                                       std::move(items), options);
+    connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
+        m_outcome.restore = m_job->items();
+        m_outcome.restored = complete;
+        m_job.release()->deleteLater();
+        m_phase = Phase::Done;
+        emit finished(m_outcome);
+    });
+    m_job->start();
+}
+
+} // namespace vt::model
+
+namespace vt::dev {
+
+template<> std::optional<model::TestEnd> fromKey<model::TestEnd>(std::string_view text)
+{
+    using model::TestEnd;
+    constexpr std::array kEnds{TestEnd::Finished, TestEnd::Stopped,     TestEnd::WindowExceeded,
+                               TestEnd::Refused,  TestEnd::DeviceError, TestEnd::LinkLost};
+    return keyLookup<TestEnd>(kEnds, text);
+}
+
+} // namespace vt::dev

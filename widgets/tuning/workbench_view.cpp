@@ -1,0 +1,703 @@
+#include "workbench_view.h"
+
+#include "bode_plot.h"
+#include "dict/cooking.h"
+#include "dict/dictionary_loader.h"
+#include "model/monitor/set_value_step.h"
+#include "model/text_language.h"
+#include "model/tuning/workbench_rows.h"
+#include "response_plot.h"
+#include "signal_form.h"
+#include "widgets/actuator_confirm.h"
+#include "widgets/number_box.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QLocale>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace vt::ui {
+
+namespace {
+
+constexpr int kRedrawMs = 40; // ≤ 25 redraws/s (STYLE.md rule 10)
+
+QString num(double v, int decimals)
+{
+    return std::isfinite(v) ? QLocale().toString(v, 'f', decimals) : QStringLiteral("–");
+}
+
+QString rowText(const dev::ParamMeta &row)
+{
+    const QString label = QString::fromStdString(row.label.in(model::textLanguage()));
+    return label.isEmpty() ? QString::fromStdString(row.name)
+                           : QStringLiteral("%1 (%2)").arg(QString::fromStdString(row.name), label);
+}
+
+void setRow(QTableWidget *table, int row, const QStringList &cells)
+{
+    for (int c = 0; c < cells.size(); ++c) {
+        auto *item = new QTableWidgetItem(cells[c]);
+        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+        if (c > 0)
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table->setItem(row, c, item);
+    }
+}
+
+} // namespace
+
+WorkbenchView::WorkbenchView(QWidget *parent) : QWidget(parent)
+{
+    build();
+    m_redraw.setSingleShot(true);
+    connect(&m_redraw, &QTimer::timeout, this, &WorkbenchView::refreshLive);
+    auto *esc = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    esc->setContext(Qt::WindowShortcut);
+    connect(esc, &QShortcut::activated, this, [this] {
+        if (isRunning())
+            stop();
+    });
+    retranslate();
+    updateEnabled();
+}
+
+WorkbenchView::~WorkbenchView() = default;
+
+void WorkbenchView::build()
+{
+    auto *outer = new QHBoxLayout(this);
+    auto *splitter = new QSplitter(Qt::Horizontal, this);
+    outer->addWidget(splitter);
+
+    auto *left = new QWidget(splitter);
+    auto *column = new QVBoxLayout(left);
+    auto *target = new QFormLayout;
+    m_moduleLabel = new QLabel(left);
+    m_module = new QComboBox(left);
+    target->addRow(m_moduleLabel, m_module);
+    m_setValueLabel = new QLabel(left);
+    m_setValue = new QComboBox(left);
+    target->addRow(m_setValueLabel, m_setValue);
+    m_responseLabel = new QLabel(left);
+    m_responseLabel->setWordWrap(true);
+    target->addRow(m_responseLabel);
+    column->addLayout(target);
+    m_form = new SignalForm(left);
+    column->addWidget(m_form);
+    auto *limits = new QFormLayout;
+    m_rateLabel = new QLabel(left);
+    m_rate = new NumberBox(left);
+    m_rate->setDecimals(0);
+    m_rate->setRange(0, 1000);
+    m_rate->setValue(0);
+    limits->addRow(m_rateLabel, m_rate);
+    m_useWindow = new QCheckBox(left);
+    m_window = new NumberBox(left);
+    m_window->setDecimals(3);
+    m_window->setRange(0.001, 100);
+    m_window->setValue(1);
+    limits->addRow(m_useWindow, m_window);
+    column->addLayout(limits);
+    auto *buttons = new QHBoxLayout;
+    m_start = new QPushButton(left);
+    m_stop = new QPushButton(left);
+    buttons->addWidget(m_start);
+    buttons->addWidget(m_stop);
+    column->addLayout(buttons);
+    m_statusLabel = new QLabel(left);
+    m_statusLabel->setWordWrap(true);
+    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    column->addWidget(m_statusLabel);
+    m_runList = new QListWidget(left);
+    column->addWidget(m_runList, 1);
+    auto *files = new QHBoxLayout;
+    m_save = new QPushButton(left);
+    m_load = new QPushButton(left);
+    files->addWidget(m_save);
+    files->addWidget(m_load);
+    column->addLayout(files);
+
+    auto *right = new QSplitter(Qt::Vertical, splitter);
+    m_plots = new QStackedWidget(right);
+    m_response = new ResponsePlot(m_plots);
+    m_bode = new BodePlot(m_plots);
+    m_plots->addWidget(m_response);
+    m_plots->addWidget(m_bode);
+    m_tabs = new QTabWidget(right);
+    m_results = new QTableWidget(m_tabs);
+    m_differences = new QTableWidget(m_tabs);
+    for (QTableWidget *t : {m_results, m_differences}) {
+        t->verticalHeader()->setVisible(false);
+        t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    }
+    m_tabs->addTab(m_results, QString());
+    m_tabs->addTab(m_differences, QString());
+    right->setStretchFactor(0, 3);
+    right->setStretchFactor(1, 2);
+    splitter->setStretchFactor(0, 0);
+    splitter->setStretchFactor(1, 1);
+
+    connect(m_module, &QComboBox::currentIndexChanged, this, &WorkbenchView::moduleChosen);
+    connect(m_setValue, &QComboBox::currentIndexChanged, this, &WorkbenchView::setValueChosen);
+    connect(m_start, &QPushButton::clicked, this, &WorkbenchView::start);
+    connect(m_stop, &QPushButton::clicked, this, &WorkbenchView::stop);
+    connect(m_save, &QPushButton::clicked, this, &WorkbenchView::saveCurrent);
+    connect(m_load, &QPushButton::clicked, this, &WorkbenchView::loadRuns);
+    connect(m_useWindow, &QCheckBox::toggled, this, &WorkbenchView::updateEnabled);
+    connect(m_runList, &QListWidget::currentRowChanged, this, &WorkbenchView::showCurrent);
+    connect(m_runList, &QListWidget::itemChanged, this, &WorkbenchView::showCurrent);
+    connect(m_form, &SignalForm::changed, this, &WorkbenchView::updateEnabled);
+}
+
+void WorkbenchView::setConnection(model::DeviceAccess *access,
+                                  const std::vector<model::ModuleInfo> &modules)
+{
+    if (isRunning())
+        stop();
+    m_access = access;
+    m_modules.clear();
+    for (const model::ModuleInfo &m : modules)
+        if (m.dictionary && !model::testSetValueRows(*m.dictionary, m.identification.mode).empty())
+            m_modules.push_back(m);
+    const QSignalBlocker block(m_module);
+    m_module->clear();
+    for (const model::ModuleInfo &m : m_modules)
+        m_module->addItem(tr("Module %1 (%2)")
+                              .arg(m.address)
+                              .arg(QString::fromStdString(m.identification.family)),
+                          m.address);
+    moduleChosen();
+    updateEnabled();
+}
+
+void WorkbenchView::clearConnection()
+{
+    // A running test ends with its restore; the access goes with the connection, so the restore
+    // is tried now and the outcome says whether it arrived.
+    if (m_test && m_test->isRunning())
+        m_test->stop();
+    m_test.reset();
+    m_live.reset();
+    m_access = nullptr;
+    m_modules.clear();
+    const QSignalBlocker block(m_module);
+    m_module->clear();
+    m_setValue->clear();
+    updateEnabled();
+}
+
+bool WorkbenchView::selectTarget(int module, const QString &setValueRow)
+{
+    const int m = m_module->findData(module);
+    if (m < 0)
+        return false;
+    m_module->setCurrentIndex(m);
+    const int r = m_setValue->findData(setValueRow);
+    if (r < 0)
+        return false;
+    m_setValue->setCurrentIndex(r);
+    return true;
+}
+
+void WorkbenchView::setRate(double hz)
+{
+    m_rate->setValue(hz);
+}
+
+void WorkbenchView::setWindow(std::optional<double> window)
+{
+    m_useWindow->setChecked(window.has_value());
+    if (window)
+        m_window->setValue(*window);
+}
+
+const model::ModuleInfo *WorkbenchView::currentModule() const
+{
+    const int i = m_module->currentIndex();
+    return i >= 0 && i < static_cast<int>(m_modules.size())
+               ? &m_modules[static_cast<std::size_t>(i)]
+               : nullptr;
+}
+
+const dev::ParamMeta *WorkbenchView::currentSetValue() const
+{
+    const model::ModuleInfo *m = currentModule();
+    if (!m)
+        return nullptr;
+    return m->dictionary->find(m_setValue->currentData().toString().toStdString());
+}
+
+void WorkbenchView::moduleChosen()
+{
+    const QSignalBlocker block(m_setValue);
+    m_setValue->clear();
+    if (const model::ModuleInfo *m = currentModule())
+        for (const dev::ParamMeta *row :
+             model::testSetValueRows(*m->dictionary, m->identification.mode))
+            m_setValue->addItem(rowText(*row), QString::fromStdString(row->name));
+    setValueChosen();
+}
+
+void WorkbenchView::setValueChosen()
+{
+    const model::ModuleInfo *m = currentModule();
+    const dev::ParamMeta *row = currentSetValue();
+    if (m && row) {
+        const dev::Limits limits = dev::rowLimits(*row);
+        const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
+        m_form->setSetValue(QString::fromStdString(row->unit), row->scale.decimals,
+                            std::min(limits.min * f, limits.max * f),
+                            std::max(limits.min * f, limits.max * f));
+        const dev::ParamMeta *answer =
+            model::responseRow(*m->dictionary, m->identification.mode, *row);
+        m_responseLabel->setText(
+            answer ? tr("Response: %1").arg(rowText(*answer))
+                   : tr("The dictionary names no response for %1: the test records, "
+                        "but has nothing to analyse.")
+                         .arg(QString::fromStdString(row->name)));
+    } else {
+        m_responseLabel->setText(m_access ? tr("No module with a set value a test can drive.")
+                                          : tr("Connect to a device to run a test."));
+    }
+    updateEnabled();
+}
+
+void WorkbenchView::updateEnabled()
+{
+    const bool running = isRunning();
+    const bool ready = m_access && currentSetValue() && !running;
+    m_start->setEnabled(ready);
+    m_stop->setEnabled(running);
+    m_module->setEnabled(!running);
+    m_setValue->setEnabled(!running);
+    m_form->setEnabled(!running);
+    m_rate->setEnabled(!running);
+    m_useWindow->setEnabled(!running);
+    m_window->setEnabled(!running && m_useWindow->isChecked());
+    m_load->setEnabled(!running);
+    m_save->setEnabled(!running && m_runList->currentRow() >= 0);
+}
+
+bool WorkbenchView::isRunning() const
+{
+    return m_test && m_test->isRunning();
+}
+
+QString WorkbenchView::statusText() const
+{
+    return m_status;
+}
+
+void WorkbenchView::start()
+{
+    const model::ModuleInfo *module = currentModule();
+    const dev::ParamMeta *row = currentSetValue();
+    if (!m_access || !module || !row || isRunning())
+        return;
+    const auto spec = m_form->spec();
+    const auto fail = [this](const QString &text) {
+        m_status = text;
+        m_statusLabel->setText(text);
+    };
+    if (!spec)
+        return fail(m_form->refusal());
+    if (spec->kind == model::SignalKind::Step && spec->from == spec->to)
+        return fail(tr("A step needs different From and To values."));
+    if (spec->kind != model::SignalKind::Step && !(spec->amplitude > 0))
+        return fail(tr("The amplitude must be more than 0."));
+    if (spec->kind == model::SignalKind::Sweep && !(spec->toHz > spec->fromHz))
+        return fail(tr("A sweep needs a To frequency above its From frequency."));
+    std::string why;
+    const auto signal = model::TestSignal::make(*spec, &why);
+    if (!signal)
+        return fail(tr("This signal cannot be run: %1").arg(QString::fromStdString(why)));
+    model::TestRunSetup setup{*module, row, *signal, {}, {}, {}, m_rate->value(), false};
+    setup.channels = model::recordedRows(*module->dictionary, module->identification.mode, *row);
+    setup.actualRow = model::responseRow(*module->dictionary, module->identification.mode, *row);
+    if (m_useWindow->isChecked())
+        setup.window = m_window->value();
+    if (const QString problem = model::TestRun::rangeProblem(setup); !problem.isEmpty())
+        return fail(problem);
+
+    // The question names the module, the set value, the range the signal will drive it through
+    // and how long; the values go back afterwards.
+    const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
+    const auto before = m_access->image().value(module->address, row);
+    const dev::Language lang = model::textLanguage();
+    const QString rangeLine = actuatorWriteLine(
+        module->address, *row, before, dev::RawValue{std::round(signal->maximum() / f)}, lang);
+    const QStringList lines = {
+        rangeLine, tr("%1 test of %2 s between %3 and %4; afterwards %5 is written back.")
+                       .arg(m_form->kindText(), num(signal->duration(), 1),
+                            QString::fromStdString(
+                                dev::formatValue(*row, std::round(signal->minimum() / f), lang)),
+                            QString::fromStdString(
+                                dev::formatValue(*row, std::round(signal->maximum() / f), lang)),
+                            QString::fromStdString(row->name))};
+    confirmActuatorWrites(this, lines, [this, setup, guard = QPointer<WorkbenchView>(this)] {
+        if (guard)
+            begin(setup);
+    });
+}
+
+void WorkbenchView::begin(model::TestRunSetup setup)
+{
+    if (!m_access || isRunning())
+        return;
+    m_live = std::make_unique<model::TuningRun>();
+    m_live->number = m_nextNumber;
+    m_live->started = QDateTime::currentDateTime();
+    m_live->module = setup.module.address;
+    m_live->family = setup.module.identification.family;
+    m_live->mode = setup.module.identification.mode;
+    m_live->dictionary = setup.module.dictionary;
+    m_live->setValueRow = setup.setValueRow;
+    m_live->responseRow = setup.actualRow;
+    m_live->spec = setup.signal.spec();
+    m_live->settings = model::settingsSnapshot(m_access->image(), setup.module);
+    m_test = std::make_unique<model::TestRun>(*m_access, std::move(setup));
+    connect(m_test.get(), &model::TestRun::sampled, this, [this] {
+        if (!m_redraw.isActive())
+            m_redraw.start(kRedrawMs);
+    });
+    connect(m_test.get(), &model::TestRun::finished, this, &WorkbenchView::onFinished);
+    m_plots->setCurrentWidget(m_response);
+    m_status = tr("Running…");
+    m_statusLabel->setText(m_status);
+    m_test->start();
+    updateEnabled();
+}
+
+void WorkbenchView::stop()
+{
+    if (m_test)
+        m_test->stop();
+}
+
+void WorkbenchView::refreshLive()
+{
+    if (!m_test || !m_live)
+        return;
+    const model::TestRecording &r = m_test->recording();
+    m_response->showLive(*m_live, r);
+    m_status = tr("Running: %1 of %2 s; set value updated at %3 Hz, sampled at %4 Hz.")
+                   .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
+                        num(r.updateRateHz(), 1), num(r.sampleRateHz(), 1));
+    m_statusLabel->setText(m_status);
+}
+
+QString WorkbenchView::outcomeText(const model::TestOutcome &o) const
+{
+    QString what;
+    switch (o.end) {
+    case model::TestEnd::Finished: what = tr("The test ran to its end."); break;
+    case model::TestEnd::Stopped: what = tr("The test was stopped."); break;
+    case model::TestEnd::WindowExceeded:
+        what = tr("The travel window stopped the test: %1").arg(o.reason);
+        break;
+    case model::TestEnd::Refused: what = tr("Nothing was written: %1").arg(o.reason); break;
+    case model::TestEnd::DeviceError:
+        what = tr("The device stopped the test: %1").arg(o.reason);
+        break;
+    case model::TestEnd::LinkLost: what = tr("The link was lost: %1").arg(o.reason); break;
+    }
+    QStringList back;
+    for (const model::WriteItem &item : o.restore)
+        back << tr("%1 back to %2 (%3)")
+                    .arg(QString::fromStdString(item.row->name),
+                         QString::fromStdString(dev::formatValue(
+                             *item.row, dev::rawNumber(item.value), model::textLanguage())),
+                         model::writeStatusText(item.status));
+    if (!back.isEmpty())
+        what +=
+            QLatin1Char(' ') +
+            (o.restored
+                 ? tr("Restored: %1.").arg(back.join(QStringLiteral("; ")))
+                 : tr("NOT restored: %1. Check the valve.").arg(back.join(QStringLiteral("; "))));
+    return what;
+}
+
+void WorkbenchView::onFinished(const model::TestOutcome &outcome)
+{
+    m_redraw.stop();
+    // The engine emitted this from its own code: it goes later, its recording now.
+    model::TestRecording recording;
+    if (m_test) {
+        recording = m_test->recording();
+        m_test.release()->deleteLater();
+    }
+    if (outcome.end == model::TestEnd::Refused && outcome.needsSource && m_live) {
+        // The source differs: ask with the manual's reason, then run again switching it for the
+        // test (and back after).
+        const model::ModuleInfo *module = currentModule();
+        const dev::ParamMeta *row = currentSetValue();
+        m_status = outcome.reason;
+        m_statusLabel->setText(m_status);
+        if (!module || !row)
+            return;
+        const auto spec = m_live->spec;
+        const QStringList lines = {
+            outcome.reason,
+            tr("Switch the set-value source for the test and put it back afterwards?")};
+        confirmActuatorWrites(this, lines, [this, spec, guard = QPointer<WorkbenchView>(this)] {
+            if (!guard || !m_access)
+                return;
+            const model::ModuleInfo *m = currentModule();
+            const dev::ParamMeta *r = currentSetValue();
+            const auto signal = model::TestSignal::make(spec);
+            if (!m || !r || !signal)
+                return;
+            model::TestRunSetup again{*m, r, *signal, {}, {}, {}, m_rate->value(), true};
+            again.channels = model::recordedRows(*m->dictionary, m->identification.mode, *r);
+            again.actualRow = model::responseRow(*m->dictionary, m->identification.mode, *r);
+            if (m_useWindow->isChecked())
+                again.window = m_window->value();
+            begin(again);
+        });
+        updateEnabled();
+        return;
+    }
+    if (outcome.end == model::TestEnd::Refused || !m_live) {
+        m_status = outcomeText(outcome);
+        m_statusLabel->setText(m_status);
+        m_live.reset();
+        updateEnabled();
+        return;
+    }
+    std::unique_ptr<model::TuningRun> run = std::move(m_live);
+    run->recording = std::move(recording);
+    run->end = outcome.end;
+    run->restored = outcome.restored;
+    if (const auto signal = model::TestSignal::make(run->spec))
+        run->analysis =
+            model::analyseRun(*signal, run->recording, run->responseRow, run->setValueRow);
+    ++m_nextNumber;
+    m_status = outcomeText(outcome);
+    m_statusLabel->setText(m_status);
+    emit statusMessage(m_status);
+    if (!outcome.restore.empty())
+        emit written(run->module, outcome.restore);
+    addRun(std::move(run));
+    updateEnabled();
+}
+
+void WorkbenchView::addRun(std::unique_ptr<model::TuningRun> run)
+{
+    m_nextNumber = std::max(m_nextNumber, run->number + 1);
+    auto *item = new QListWidgetItem(model::runTitle(*run));
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(Qt::Unchecked);
+    m_runs.push_back(std::move(run));
+    const QSignalBlocker block(m_runList);
+    m_runList->addItem(item);
+    m_runList->setCurrentItem(item);
+    showCurrent();
+}
+
+std::vector<const model::TuningRun *> WorkbenchView::shownRuns() const
+{
+    std::vector<const model::TuningRun *> out;
+    const int current = m_runList->currentRow();
+    if (current < 0 || current >= static_cast<int>(m_runs.size()))
+        return out;
+    out.push_back(m_runs[static_cast<std::size_t>(current)].get());
+    for (int i = 0; i < m_runList->count(); ++i)
+        if (i != current && m_runList->item(i)->checkState() == Qt::Checked)
+            out.push_back(m_runs[static_cast<std::size_t>(i)].get());
+    return out;
+}
+
+void WorkbenchView::showCurrent()
+{
+    const auto runs = shownRuns();
+    updateEnabled();
+    if (runs.empty() || isRunning())
+        return;
+    const bool frequency = !runs.front()->analysis.points.empty() &&
+                           runs.front()->spec.kind != model::SignalKind::Square;
+    if (frequency) {
+        m_bode->showRuns(runs);
+        m_plots->setCurrentWidget(m_bode);
+    } else {
+        m_response->showRuns(runs);
+        m_plots->setCurrentWidget(m_response);
+    }
+    fillResults(*runs.front());
+    fillDifferences();
+}
+
+void WorkbenchView::fillResults(const model::TuningRun &run)
+{
+    m_results->clear();
+    const model::RunAnalysis &a = run.analysis;
+    const QString unit =
+        run.setValueRow ? QString::fromStdString(run.setValueRow->unit) : QString();
+    if (!a.hasResponse) {
+        m_results->setRowCount(0);
+        m_results->setColumnCount(1);
+        m_results->setHorizontalHeaderLabels(
+            {tr("No response row was recorded: nothing to analyse.")});
+        return;
+    }
+    if (!a.points.empty() && run.spec.kind != model::SignalKind::Square) {
+        m_results->setColumnCount(5);
+        m_results->setHorizontalHeaderLabels(
+            {tr("Frequency (Hz)"), tr("Gain (dB)"), tr("Phase (°)"), tr("Quality"), tr("Valid")});
+        m_results->setRowCount(static_cast<int>(a.points.size()) + 2);
+        int r = 0;
+        for (const model::FrequencyPoint &p : a.points)
+            setRow(m_results, r++,
+                   {num(p.frequencyHz, 3), num(p.gainDb, 2), num(p.phaseDeg, 1), num(p.quality, 3),
+                    p.valid ? tr("yes")
+                            : tr("no: %1").arg(QString::fromLatin1(
+                                  model::frequencyProblemKey(p.problem).data()))});
+        setRow(m_results, r++,
+               {tr("−3 dB at"), a.f3dB ? num(*a.f3dB, 2) + tr(" Hz") : tr("not reached")});
+        setRow(m_results, r++,
+               {tr("−90° at"), a.f90deg ? num(*a.f90deg, 2) + tr(" Hz") : tr("not reached")});
+        return;
+    }
+    m_results->setColumnCount(9);
+    m_results->setHorizontalHeaderLabels(
+        {tr("Step"), tr("Dead time (s)"), tr("Rise time (s)"), tr("Overshoot (%)"),
+         tr("Peak time (s)"), tr("Settling 2 % (s)"), tr("Settling 5 % (s)"),
+         tr("Steady-state error (%1)").arg(unit), tr("Final value")});
+    m_results->setRowCount(static_cast<int>(a.steps.size()));
+    int r = 0;
+    for (const model::StepResult &s : a.steps) {
+        const QString step = tr("%1 → %2").arg(num(s.edge.from, 3), num(s.edge.to, 3));
+        if (!s.metrics) {
+            setRow(m_results, r++,
+                   {step, tr("no figures: %1")
+                              .arg(s.problem ? QString::fromLatin1(
+                                                   model::stepProblemKey(*s.problem).data())
+                                             : QString())});
+            continue;
+        }
+        const model::StepMetrics &m = *s.metrics;
+        setRow(m_results, r++,
+               {step, num(m.deadTime, 3), num(m.riseTime, 3), num(m.overshootPct, 1),
+                num(m.peakTime, 3), num(m.settlingTime2, 3), num(m.settlingTime5, 3),
+                num(m.steadyStateError, 3), num(m.finalValue, 3)});
+    }
+}
+
+void WorkbenchView::fillDifferences()
+{
+    m_differences->clear();
+    const auto runs = shownRuns();
+    m_differences->setColumnCount(3);
+    if (runs.size() < 2) {
+        m_differences->setRowCount(0);
+        m_differences->setHorizontalHeaderLabels(
+            {tr("Tick a second run to compare its settings"), QString(), QString()});
+        return;
+    }
+    const model::TuningRun &a = *runs[0];
+    const model::TuningRun &b = *runs[1];
+    m_differences->setHorizontalHeaderLabels(
+        {tr("Parameter"), tr("Run %1").arg(a.number), tr("Run %1").arg(b.number)});
+    const auto diffs = model::settingDifferences(a, b);
+    m_differences->setRowCount(static_cast<int>(diffs.size()));
+    const auto text = [](const model::TuningRun &run, const std::string &name,
+                         const std::optional<double> &raw) {
+        if (!raw)
+            return tr("not read");
+        const dev::ParamMeta *row = run.dictionary ? run.dictionary->find(name) : nullptr;
+        return row ? QString::fromStdString(dev::formatValue(*row, *raw, model::textLanguage()))
+                   : QString::number(*raw);
+    };
+    int r = 0;
+    for (const model::SettingDifference &d : diffs)
+        setRow(m_differences, r++,
+               {QString::fromStdString(d.name), text(a, d.name, d.a), text(b, d.name, d.b)});
+}
+
+void WorkbenchView::saveCurrent()
+{
+    const auto runs = shownRuns();
+    if (runs.empty())
+        return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Run"),
+                                                      tr("run-%1.csv").arg(runs.front()->number),
+                                                      tr("Run recordings (*.csv)"));
+    if (path.isEmpty())
+        return;
+    const QString error = model::saveRun(*runs.front(), path);
+    m_status = error.isEmpty() ? tr("Saved %1 and its .json.").arg(path) : error;
+    m_statusLabel->setText(m_status);
+}
+
+void WorkbenchView::loadRuns()
+{
+    const QStringList paths =
+        QFileDialog::getOpenFileNames(this, tr("Load Runs"), QString(), tr("Runs (*.json *.csv)"));
+    QStringList problems;
+    for (const QString &path : paths) {
+        QString why;
+        auto run = model::loadRun(path, *dev::builtinDictionaries(), &why);
+        if (!run) {
+            problems << why;
+            continue;
+        }
+        addRun(std::make_unique<model::TuningRun>(std::move(*run)));
+    }
+    if (!problems.isEmpty()) {
+        m_status = problems.join(QLatin1Char('\n'));
+        m_statusLabel->setText(m_status);
+    }
+}
+
+void WorkbenchView::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void WorkbenchView::retranslate()
+{
+    m_moduleLabel->setText(tr("Module"));
+    m_setValueLabel->setText(tr("Set value"));
+    m_rateLabel->setText(tr("Cycles per second (0: as fast as the link allows)"));
+    m_useWindow->setText(tr("Travel window"));
+    m_window->setToolTip(tr("Stop the test when the actual value leaves the signal's range by "
+                            "more than this."));
+    m_start->setText(tr("Start Test"));
+    m_stop->setText(tr("Stop (Esc)"));
+    m_save->setText(tr("Save Run…"));
+    m_load->setText(tr("Load Runs…"));
+    m_tabs->setTabText(0, tr("Results"));
+    m_tabs->setTabText(1, tr("Setting differences"));
+    m_runList->setToolTip(tr("The current run is drawn with its marks; tick others to overlay "
+                             "them and to compare their settings."));
+    for (int i = 0; i < m_runList->count() && i < static_cast<int>(m_runs.size()); ++i)
+        m_runList->item(i)->setText(model::runTitle(*m_runs[static_cast<std::size_t>(i)]));
+    for (int i = 0; i < m_module->count() && i < static_cast<int>(m_modules.size()); ++i) {
+        const model::ModuleInfo &m = m_modules[static_cast<std::size_t>(i)];
+        m_module->setItemText(i, tr("Module %1 (%2)")
+                                     .arg(m.address)
+                                     .arg(QString::fromStdString(m.identification.family)));
+    }
+    setValueChosen();
+    if (!m_runs.empty() && !isRunning())
+        showCurrent();
+}
+
+} // namespace vt::ui
