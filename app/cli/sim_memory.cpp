@@ -27,7 +27,7 @@ std::string keyOf(const model::SimSpec &spec)
 {
     const std::string protocol = spec.protocol ? dev::key(*spec.protocol) : "";
     return spec.family + ':' + std::to_string(spec.modules) + ':' + protocol + ':' +
-           std::to_string(spec.mode);
+           std::to_string(spec.mode) + (spec.factory ? ":factory" : "");
 }
 
 } // namespace

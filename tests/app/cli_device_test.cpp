@@ -5,6 +5,7 @@
 #include "app/cli/device_output.h"
 #include "app/cli/exit_codes.h"
 #include "cli_device_fixture.h"
+#include "dict/dictionary_loader.h"
 #include "sim_process.h"
 
 #include <QCoreApplication>
@@ -105,6 +106,34 @@ TEST_F(CliDevice, SetThenGetShowsTheValueInDisplayUnits)
         (nlohmann::json{{"name", "C1.07"}, {"raw", 1000}, {"display", "1.000 V"}, {"unit", "V"}}));
     EXPECT_EQ(values[1]["name"], "E00");
     EXPECT_EQ(values[1]["raw"], 3);
+}
+
+// `--sim` starts a commissioned machine (docs/SIMULATOR.md "Commissioned preset": bus set values
+// only, a 0 … 10 V position sensor, KP1 2.00); `--factory` the dictionary defaults.
+TEST_F(CliDevice, SimStartsCommissionedUnlessFactory)
+{
+    const CliRun commissioned =
+        cli({"--json", "get", "--sim", "dma-pn-v51", "E17", "C1.09", "C1.13"});
+    ASSERT_EQ(commissioned.code, kExitOk) << what(commissioned);
+    const auto c = commissioned.json()["values"];
+    EXPECT_EQ(c[0]["raw"], 2);
+    EXPECT_EQ(c[1]["raw"], 4);
+    EXPECT_EQ(c[2]["raw"], 200);
+
+    const CliRun factory =
+        cli({"--json", "get", "--sim", "dma-pn-v51", "--factory", "E17", "C1.09", "C1.13"});
+    ASSERT_EQ(factory.code, kExitOk) << what(factory);
+    const auto f = factory.json()["values"];
+    const dev::Dictionary &dict = *dev::builtinDictionaries()->find("dma-pn-v51");
+    for (std::size_t i = 0; i < 3; ++i) {
+        const dev::ParamMeta *row = dict.find(f[i]["name"].get<std::string>());
+        ASSERT_TRUE(row && row->defaultValue);
+        EXPECT_EQ(f[i]["raw"], *row->defaultValue) << row->name;
+    }
+
+    const CliRun alone = cli({"get", "--tcp", "127.0.0.1:1", "--factory", "E17"});
+    EXPECT_EQ(alone.code, kExitUsage) << what(alone);
+    EXPECT_NE(alone.err.find("--factory goes with --sim"), std::string::npos) << alone.err;
 }
 
 TEST_F(CliDevice, SetJsonRecordsEveryParameterAndSkipsUnchangedValues)
@@ -277,6 +306,7 @@ TEST_F(CliDevice, ConnectionUsageErrors)
                   0u)
             << help.out;
         EXPECT_TRUE(help.says("--sim FAMILY[:MODULES]")) << help.out;
+        EXPECT_TRUE(help.says("[--factory]")) << help.out;
     }
     const CliRun refused = cli({"info", "--tcp", "127.0.0.1:1"});
     EXPECT_EQ(refused.code, kExitConnection) << what(refused);
