@@ -192,6 +192,10 @@ vt::model::SummaryOptions InspectorView::summaryOptions() const
     o.language = model::textLanguage();
     o.dictionary = dictionaryFor(-1);
     o.family = familyFor(-1);
+    if (m_connection) {
+        o.dsp408 = m_connection->spec().dsp408.layout;
+        o.registerBytes = m_connection->spec().dsp408.gateway.byteOrder;
+    }
     return o;
 }
 
@@ -353,6 +357,10 @@ void InspectorView::onCurrentRowChanged()
     o.family = familyFor(r->module);
     o.direction = r->direction;
     o.dictionary = dictionaryFor(r->module);
+    // The ED1's frames as the link lays them out (--register-bytes, --pzd-words, --ind-byte).
+    const vt::model::SummaryOptions layout = summaryOptions();
+    o.dsp408 = layout.dsp408;
+    o.registerBytes = layout.registerBytes;
     // An answer to a block read names its words after the request's first ID.
     std::optional<std::uint16_t> firstId;
     if (r->direction == vt::dev::Direction::Response && m_log) {

@@ -1,5 +1,8 @@
 #include "channel_chooser.h"
 
+#include "dict/identify.h"
+#include "model/text_language.h"
+
 #include <QDialogButtonBox>
 #include <QEvent>
 #include <QHeaderView>
@@ -40,7 +43,9 @@ ChannelChooser::ChannelChooser(const std::vector<model::ModuleInfo> &modules,
         top->setData(0, kModuleRole, module.address);
         top->setText(0, QString::number(module.address));
         top->setText(1, QString::fromStdString(module.identification.family));
-        top->setText(2, QString::fromStdString(module.identification.version));
+        top->setText(
+            2, QString::fromStdString(
+                   dev::versionText(module.identification.version).in(model::textLanguage())));
         const auto chosen = selected.find(module.address);
         for (const dev::ParamMeta *row : it->second) {
             auto *child = new QTreeWidgetItem(top);
