@@ -128,6 +128,21 @@ TEST_P(FamilyGui, MonitorsTheFamilysDefaultChannelsAndSeesTheSetValueStep)
         const auto activation = written.last().at(1).value<std::vector<model::WriteItem>>();
         ASSERT_TRUE(!activation.empty() && model::isOnDevice(activation.front().status))
             << step.statusText().toStdString();
+        // The device takes a control word in its own time (a cycle; not before its self test
+        // ends, ED1/SD1 and HART-7 manual §4.2.2 TR_1): the status word reports the state.
+        if (activation.front().row->name == "db_ControlWord") {
+            const dev::ParamMeta *status = module.dictionary->find("db_StatusWord");
+            ASSERT_TRUE(status);
+            ASSERT_TRUE(test::waitUntil(
+                [&] {
+                    const auto word =
+                        window->workspace().deviceImage().value(module.address, status);
+                    return word && dev::dsp408::stateOfStatusWord(
+                                       static_cast<std::uint16_t>(dev::rawNumber(*word))) ==
+                                       dev::dsp408::State::DeviceModeActive;
+                },
+                kWaitMs));
+        }
     }
     ASSERT_TRUE(stepped) << step.statusText().toStdString();
     ASSERT_FALSE(written.isEmpty());

@@ -192,11 +192,20 @@ vt::model::SummaryOptions InspectorView::summaryOptions() const
     o.language = model::textLanguage();
     o.dictionary = dictionaryFor(-1);
     o.family = familyFor(-1);
-    if (m_connection) {
-        o.dsp408 = m_connection->spec().dsp408.layout;
-        o.registerBytes = m_connection->spec().dsp408.gateway.byteOrder;
-    }
+    const vt::dev::inspect::ImageLayout layout = imageLayout();
+    o.dsp408 = layout.dsp408;
+    o.registerBytes = layout.registerBytes;
     return o;
+}
+
+vt::dev::inspect::ImageLayout InspectorView::imageLayout() const
+{
+    vt::dev::inspect::ImageLayout layout;
+    if (m_connection) {
+        layout.dsp408 = m_connection->spec().dsp408.layout;
+        layout.registerBytes = m_connection->spec().dsp408.gateway.byteOrder;
+    }
+    return layout;
 }
 
 void InspectorView::rebuildModuleFilter()
@@ -284,7 +293,8 @@ QStringList InspectorView::parametersOfCurrent() const
     const vt::dev::Dictionary *dict = dictionaryFor(r->module);
     if (!dict)
         return {};
-    return vt::model::parametersOfRecord(*m_log, r->seq, *dict, familyFor(r->module));
+    return vt::model::parametersOfRecord(*m_log, r->seq, *dict, familyFor(r->module),
+                                         imageLayout());
 }
 
 bool InspectorView::activateParameterOfCurrent()
@@ -306,8 +316,8 @@ void InspectorView::showFramesFor(int module, const QString &parameterName)
     const vt::dev::Dictionary *dict = dictionaryFor(module);
     if (!dict)
         return;
-    const QList<quint64> seqs =
-        vt::model::lastFramesFor(*m_log, module, parameterName, *dict, familyFor(module));
+    const QList<quint64> seqs = vt::model::lastFramesFor(*m_log, module, parameterName, *dict,
+                                                         familyFor(module), imageLayout());
     m_table->clearSelection();
     if (seqs.isEmpty())
         return;
@@ -358,7 +368,7 @@ void InspectorView::onCurrentRowChanged()
     o.direction = r->direction;
     o.dictionary = dictionaryFor(r->module);
     // The ED1's frames as the link lays them out (--register-bytes, --pzd-words, --ind-byte).
-    const vt::model::SummaryOptions layout = summaryOptions();
+    const vt::dev::inspect::ImageLayout layout = imageLayout();
     o.dsp408 = layout.dsp408;
     o.registerBytes = layout.registerBytes;
     // An answer to a block read names its words after the request's first ID.
@@ -368,7 +378,7 @@ void InspectorView::onCurrentRowChanged()
         const vt::model::TelegramRecord *q = request ? m_log->find(*request) : nullptr;
         if (q && q->protocol == r->protocol && r->linkProtocol()) {
             const auto carried = vt::dev::inspect::carriedBy(
-                *r->linkProtocol(), vt::link::byteSpan(q->bytes), q->direction, o.family);
+                *r->linkProtocol(), vt::link::byteSpan(q->bytes), q->direction, o.family, layout);
             if (!carried.ids.empty())
                 firstId = carried.ids.front();
         }

@@ -125,6 +125,18 @@ TEST(Dsp408Gateway, TheInspectorDecodesWithTheLinksRegisterByteOrder)
     const auto wrong = inspect::describeLogged(LinkProtocol::Dsp408Gateway, swapped, o);
     ASSERT_TRUE(wrong.ok());
     EXPECT_NE(field(*wrong, "pkw.pnu"), "73");
+
+    // "Go to parameter" names the parameter the device saw: PNU 73, IND 3.
+    inspect::ImageLayout layout;
+    layout.registerBytes = dsp408::RegisterByteOrder::FirstByteLow;
+    const auto carried = inspect::carriedBy(LinkProtocol::Dsp408Gateway, swapped,
+                                            Direction::Request, hcs::Family::Dma, layout);
+    ASSERT_TRUE(carried.indPnu);
+    EXPECT_EQ(carried.indPnu->pnu, 73);
+    EXPECT_EQ(carried.indPnu->ind, 3);
+    const auto unswapped =
+        inspect::carriedBy(LinkProtocol::Dsp408Gateway, swapped, Direction::Request);
+    EXPECT_TRUE(!unswapped.indPnu || unswapped.indPnu->pnu != 73);
 }
 
 TEST(Dsp408Gateway, AFrameNamesTheParameterItCarries)
