@@ -371,14 +371,42 @@ TEST_F(CliDevice, InfoShowsTheSd7Texts)
     EXPECT_TRUE(set.says("hart_Tag       \"WAGSD733\" -> \"PUMP 7\"  verified\n")) << set.out;
     EXPECT_TRUE(set.says("hart_Message   \"\" -> \"CHECKED\"  verified\n")) << set.out;
 
+    // The next command finds what the set left (the simulator is a bench device).
     const CliRun json = cli({"--json", "info", "--sim", "wandfluh-sd7"});
     ASSERT_EQ(json.code, kExitOk) << what(json);
     const auto doc = json.json();
     const auto &texts = doc["modules"][0]["texts"];
-    EXPECT_EQ(texts["tag"], "WAGSD733");
+    EXPECT_EQ(texts["tag"], "PUMP 7");
+    EXPECT_EQ(texts["message"], "CHECKED");
     EXPECT_EQ(texts["descriptor"], "WAG ELECTRONIC");
     EXPECT_EQ(texts["date"], "2024-03-15");
     EXPECT_EQ(texts["long_tag"], "Wandfluh AG - SD733");
+}
+
+// The built-in simulator is a bench device for every family: what one command set, the next
+// command's connection to the same simulator reads — the SD7's IND/PNU rows and its HART texts
+// (HART-7 manual §5.1.15, §5.2) and the ED1/SD1's rows, as for the HCS modules above.
+TEST_F(CliDevice, TheWandfluhSimulatorsKeepWhatASetWroteForTheNextCommand)
+{
+    const CliRun set =
+        cli({"set", "--sim", "wandfluh-sd7", "--yes", "dcol_RampAUp=250", "hart_Tag=PUMP 7"});
+    ASSERT_EQ(set.code, kExitOk) << what(set);
+    const CliRun get = cli({"get", "--sim", "wandfluh-sd7", "dcol_RampAUp", "hart_Tag"});
+    ASSERT_EQ(get.code, kExitOk) << what(get);
+    EXPECT_TRUE(get.says("dcol_RampAUp   250 ms\n")) << get.out;
+    EXPECT_TRUE(get.says("hart_Tag       \"PUMP 7\"\n")) << get.out;
+
+    const CliRun ed1 = cli({"set", "--sim", "wandfluh-ed1", "--yes", "dpc_PropFact1=25"});
+    ASSERT_EQ(ed1.code, kExitOk) << what(ed1);
+    const CliRun back = cli({"get", "--sim", "wandfluh-ed1", "dpc_PropFact1"});
+    ASSERT_EQ(back.code, kExitOk) << what(back);
+    EXPECT_TRUE(back.says("dpc_PropFact1  25\n")) << back.out;
+
+    // Another test's simulator starts fresh.
+    cli::forgetSimulators();
+    const CliRun fresh = cli({"get", "--sim", "wandfluh-sd7", "dcol_RampAUp"});
+    ASSERT_EQ(fresh.code, kExitOk) << what(fresh);
+    EXPECT_TRUE(fresh.says("dcol_RampAUp   0 ms\n")) << fresh.out;
 }
 
 } // namespace

@@ -190,7 +190,8 @@ TEST(SessionLinks, Ed1OverCanopenIdentifiesByDeviceTypeAndNamesTheCapability)
     EXPECT_EQ(id.module.dictionary->family, "wandfluh-ed1");
     EXPECT_NE(id.module.identification.version.find("0x00130000"), std::string::npos);
     EXPECT_NE(id.deviceText.en.find("profile 408"), std::string::npos) << id.deviceText.en;
-    EXPECT_TRUE(id.module.identityText.contains(QStringLiteral("profile 408")));
+    EXPECT_TRUE(
+        QString::fromStdString(id.module.identityText.en).contains(QStringLiteral("profile 408")));
 }
 
 // The ED1's PROFIBUS image over loopback TCP, both mappings: identify by db_Capability, read all

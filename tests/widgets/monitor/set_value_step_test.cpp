@@ -38,8 +38,12 @@ TEST(SetValueStep, OffersTheSetValuesTheFamilysDictionaryNames)
         return out;
     };
     EXPECT_EQ(rules("dma-pb-v32", "3"), (QStringList{"E17=2"}));
-    // HART-7 manual §4.2.1 bus mode, §5.2.3 "1: Command value from fieldbus".
-    EXPECT_EQ(rules("wandfluh-sd7", ""), (QStringList{"db_Local=0", "db_DeviceMode=1"}));
+    // HART-7 manual §4.2.1 bus mode, §5.2.3 "1: Command value from fieldbus", §4.2.2 the state
+    // DEVICE_MODE_ACTIVE read from the status word (written as control word 0x0007).
+    EXPECT_EQ(rules("wandfluh-sd7", ""),
+              (QStringList{"db_Local=0", "db_DeviceMode=1", "db_StatusWord=7"}));
+    EXPECT_EQ(rules("wandfluh-ed1", ""),
+              (QStringList{"db_Local=0", "db_DeviceMode=1", "db_StatusWord=7"}));
 }
 
 TEST(SetValueStep, RefusedWhileE17IsNotTwoThenWrittenAfterE17IsSet)
