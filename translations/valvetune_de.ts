@@ -374,10 +374,6 @@
         <translation>Nicht zurückgesetzt (Verbindung weg): %1. Achse prüfen.</translation>
     </message>
     <message>
-        <source>Before quitting:</source>
-        <translation>Vor dem Beenden:</translation>
-    </message>
-    <message>
         <source>The monitor was stopped:</source>
         <translation>Der Monitor wurde angehalten:</translation>
     </message>
@@ -403,6 +399,95 @@
     <message>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>Workbench</source>
+        <translation>Werkbank</translation>
+    </message>
+</context>
+<context>
+    <name>vt::app::QuitController</name>
+    <message>
+        <source>Save, Put Back and Quit</source>
+        <translation>Speichern, zurücksetzen und beenden</translation>
+    </message>
+    <message>
+        <source>Save and Quit</source>
+        <translation>Speichern und beenden</translation>
+    </message>
+    <message>
+        <source>Put Back, Quit Without Saving</source>
+        <translation>Zurücksetzen, ohne Speichern beenden</translation>
+    </message>
+    <message>
+        <source>Put Back and Quit</source>
+        <translation>Zurücksetzen und beenden</translation>
+    </message>
+    <message>
+        <source>Quit Without Saving or Putting Back</source>
+        <translation>Ohne Speichern und Zurücksetzen beenden</translation>
+    </message>
+    <message>
+        <source>Quit Without Putting Back</source>
+        <translation>Ohne Zurücksetzen beenden</translation>
+    </message>
+    <message>
+        <source>Quit Without Saving</source>
+        <translation>Ohne Speichern beenden</translation>
+    </message>
+    <message>
+        <source>Stop the Test and Quit</source>
+        <translation>Test stoppen und beenden</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>The parameters have unsaved edits. They are lost unless you save them.</source>
+        <translation>Die Parameter enthalten ungespeicherte Änderungen. Sie gehen verloren, wenn Sie sie nicht speichern.</translation>
+    </message>
+    <message>
+        <source>The parameters in %1 have unsaved edits. They are lost unless you save them.</source>
+        <translation>Die Parameter in %1 enthalten ungespeicherte Änderungen. Sie gehen verloren, wenn Sie sie nicht speichern.</translation>
+    </message>
+    <message>
+        <source>A workbench test is running. It is stopped first and puts back the set value it drives, whatever you choose.</source>
+        <translation>Ein Test der Werkbank läuft. Er wird zuerst gestoppt und setzt den Sollwert, den er vorgibt, in jedem Fall zurück.</translation>
+    </message>
+    <message>
+        <source>A set value step of the monitor is being written. ValveTune lets the write end first.</source>
+        <translation>Ein Sollwertsprung des Monitors wird gerade geschrieben. ValveTune lässt das Schreiben zuerst zu Ende gehen.</translation>
+    </message>
+    <message>
+        <source>ValveTune changed values that drive the actuator:
+%1</source>
+        <translation>ValveTune hat Werte geändert, die den Antrieb steuern:
+%1</translation>
+    </message>
+    <message>
+        <source>Before ValveTune quits:
+
+%1</source>
+        <translation>Bevor ValveTune beendet wird:
+
+%1</translation>
+    </message>
+    <message>
+        <source>Quit ValveTune</source>
+        <translation>ValveTune beenden</translation>
+    </message>
+    <message>
+        <source>Not quit: the parameters were not saved.</source>
+        <translation>Nicht beendet: Die Parameter wurden nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>Stopping the workbench test before quitting…</source>
+        <translation>Der Test der Werkbank wird vor dem Beenden gestoppt …</translation>
     </message>
 </context>
 <context>

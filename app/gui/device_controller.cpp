@@ -74,68 +74,87 @@ void DeviceController::disconnectFromDevice()
 
 void DeviceController::offerRestore(const QString &when, std::function<void()> then)
 {
-    model::ActuatorLedger &ledger = m_workspace.actuatorLedger();
     m_lastRestore.clear();
-    if (!m_workspace.isConnected() || ledger.empty() || m_restore) {
-        if (!m_restore)
-            then();
+    if (m_restore) // a put-back is on its way: this one would ask about the same rows
+        return;
+    const QStringList lines = restoreLines();
+    if (lines.isEmpty()) {
+        then();
         return;
     }
-    const dev::Language lang = m_workspace.document().language();
+    ui::askRestoreActuators(m_window, when, lines, [this, then](bool yes) {
+        if (yes)
+            putBack(then);
+        else
+            then();
+    });
+}
+
+QStringList DeviceController::restoreLines() const
+{
     QStringList lines;
-    for (const model::ActuatorChange &c : ledger.changes())
+    if (!m_workspace.isConnected())
+        return lines;
+    const dev::Language lang = m_workspace.document().language();
+    for (const model::ActuatorChange &c : m_workspace.actuatorLedger().changes())
         lines << (c.original ? ui::actuatorWriteLine(c.module, *c.row, c.now, *c.original, lang)
                              : tr("Module %1: %2 cannot be put back: its value before the change "
                                   "was never read.")
                                    .arg(c.module)
                                    .arg(QString::fromStdString(c.row->name)));
-    ui::askRestoreActuators(m_window, when, lines, [this, then](bool putBack) {
-        if (!putBack || !m_workspace.isConnected()) {
-            then();
-            return;
+    return lines;
+}
+
+void DeviceController::putBack(std::function<void()> then)
+{
+    if (m_restore) {
+        connect(m_restore, &model::ActuatorRestore::finished, this, [then](bool) { then(); });
+        return;
+    }
+    m_lastRestore.clear();
+    if (!m_workspace.isConnected() || m_workspace.actuatorLedger().empty()) {
+        then();
+        return;
+    }
+    std::map<int, const dev::Dictionary *> dictionaries;
+    for (const model::ModuleInfo &info : m_workspace.modules())
+        dictionaries[info.address] = info.dictionary;
+    m_restore = new model::ActuatorRestore(m_workspace.connection()->access(),
+                                           m_workspace.actuatorLedger().restorePlan(),
+                                           std::move(dictionaries), this);
+    connect(m_restore, &model::ActuatorRestore::finished, this, [this, then](bool) {
+        const dev::Language now = m_workspace.document().language();
+        QStringList back, notBack;
+        std::map<int, std::vector<model::WriteItem>> byModule;
+        for (const model::RestoredRow &r : m_restore->results()) {
+            byModule[r.module].push_back(r.item);
+            const QString name =
+                tr("%1 on module %2").arg(QString::fromStdString(r.item.row->name)).arg(r.module);
+            if (model::isOnDevice(r.item.status))
+                back << name;
+            else
+                notBack << tr("%1 (%2)").arg(name, model::writeReasonText(r.item, now).isEmpty()
+                                                       ? model::writeStatusText(r.item.status)
+                                                       : model::writeReasonText(r.item, now));
         }
-        std::map<int, const dev::Dictionary *> dictionaries;
-        for (const model::ModuleInfo &info : m_workspace.modules())
-            dictionaries[info.address] = info.dictionary;
-        m_restore = new model::ActuatorRestore(m_workspace.connection()->access(),
-                                               m_workspace.actuatorLedger().restorePlan(),
-                                               std::move(dictionaries), this);
-        connect(m_restore, &model::ActuatorRestore::finished, this, [this, then](bool) {
-            const dev::Language now = m_workspace.document().language();
-            QStringList back, notBack;
-            std::map<int, std::vector<model::WriteItem>> byModule;
-            for (const model::RestoredRow &r : m_restore->results()) {
-                byModule[r.module].push_back(r.item);
-                const QString name = tr("%1 on module %2")
-                                         .arg(QString::fromStdString(r.item.row->name))
-                                         .arg(r.module);
-                if (model::isOnDevice(r.item.status))
-                    back << name;
-                else
-                    notBack << tr("%1 (%2)").arg(name, model::writeReasonText(r.item, now).isEmpty()
-                                                           ? model::writeStatusText(r.item.status)
-                                                           : model::writeReasonText(r.item, now));
-            }
-            for (const model::ActuatorChange &c : m_workspace.actuatorLedger().unrestorable())
-                notBack << tr("%1 on module %2 (value before unknown)")
-                               .arg(QString::fromStdString(c.row->name))
-                               .arg(c.module);
-            for (const auto &[module, items] : byModule)
-                emit written(module, items);
-            m_restore->deleteLater();
-            m_restore = nullptr;
-            QString text = back.isEmpty()
-                               ? QString()
-                               : tr("Put back: %1.").arg(back.join(QStringLiteral(", ")));
-            if (!notBack.isEmpty())
-                text += (text.isEmpty() ? QString() : QStringLiteral(" ")) +
-                        tr("Not put back: %1.").arg(notBack.join(QStringLiteral(", ")));
-            m_lastRestore = text;
-            emit statusMessage(text);
-            then();
-        });
-        m_restore->start();
+        for (const model::ActuatorChange &c : m_workspace.actuatorLedger().unrestorable())
+            notBack << tr("%1 on module %2 (value before unknown)")
+                           .arg(QString::fromStdString(c.row->name))
+                           .arg(c.module);
+        for (const auto &[module, items] : byModule)
+            emit written(module, items);
+        m_restore->deleteLater();
+        m_restore = nullptr;
+        QString text =
+            back.isEmpty() ? QString() : tr("Put back: %1.").arg(back.join(QStringLiteral(", ")));
+        if (!notBack.isEmpty())
+            text += (text.isEmpty() ? QString() : QStringLiteral(" ")) +
+                    tr("Not put back: %1.").arg(notBack.join(QStringLiteral(", ")));
+        m_lastRestore = text;
+        emit statusMessage(text);
+        then();
     });
+    m_restore->start();
 }
 
 void DeviceController::scan()

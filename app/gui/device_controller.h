@@ -48,6 +48,13 @@ public:
     // reports what is back and what is not; then `then()`. `when`: the sentence that says why
     // ("Before disconnecting:"). Without such changes `then()` runs at once.
     void offerRestore(const QString &when, std::function<void()> then);
+    // What offerRestore() would ask about, one line per change ("Module 1: A1.01 (…) 2.000 V →
+    // 0.000 V", or why a change cannot be put back); empty when offline or nothing changed.
+    QStringList restoreLines() const;
+    // Puts back what the ledger holds, without asking; reports it (lastRestore(),
+    // statusMessage()), then `then()` — at once when offline or nothing is to be put back, after
+    // the running put-back when one is on its way.
+    void putBack(std::function<void()> then);
     void scan();
     void readAll();
     // Opens the write confirmation. Rows whose device value is not known now are read first

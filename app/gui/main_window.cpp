@@ -10,6 +10,7 @@
 #include "model/curve/lcurve_table_model.h"
 #include "model/params/curve_binding.h"
 #include "model/recent_files.h"
+#include "quit_controller.h"
 #include "transports/link.h"
 #include "welcome_page.h"
 #include "widgets/about_dialog.h"
@@ -61,6 +62,9 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     createActions();
     createMenus();
     createDocks();
+    m_quitController = new QuitController(*m_workspace, *m_files, *m_device, m_workbench,
+                                          m_monitor->stepControl(), this);
+    connect(m_quitController, &QuitController::statusMessage, this, &MainWindow::showStatus);
 
     // Link, device identity and the error / retry counters, live.
     m_linkStatus = new ui::LinkStatusWidget(this);
@@ -499,16 +503,9 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    // Set values the tool changed are offered back first (the safe side, whatever is answered
-    // to saving next); the window closes after.
-    if (!m_restoreOffered && m_workspace->isConnected() && !m_workspace->actuatorLedger().empty()) {
-        event->ignore();
-        m_restoreOffered = true;
-        m_device->offerRestore(tr("Before quitting:"), [this] { close(); });
-        return;
-    }
-    m_restoreOffered = false;
-    if (!m_files->maybeSave()) {
+    // One question for all that is pending; once its answer is carried out (test stopped, values
+    // put back), the QuitController closes the window again.
+    if (!m_quitController->mayClose()) {
         event->ignore();
         return;
     }

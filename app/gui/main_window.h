@@ -42,6 +42,7 @@ class AppSettings;
 class DeviceController;
 class FileController;
 class Language;
+class QuitController;
 class WelcomePage;
 class Workspace;
 
@@ -56,6 +57,8 @@ public:
     Workspace &workspace() const { return *m_workspace; }
     FileController &files() const { return *m_files; }
     DeviceController &device() const { return *m_device; }
+    // The one question before the window closes, and what follows the answer.
+    QuitController &quitController() const { return *m_quitController; }
     ui::ParameterEditor *editor() const { return m_editor; }
     WelcomePage *welcomePage() const { return m_welcome; }
     QDockWidget *nodeDock() const { return m_nodeDock; }
@@ -101,6 +104,7 @@ private:
     Workspace *m_workspace = nullptr;
     FileController *m_files = nullptr;
     DeviceController *m_device = nullptr;
+    QuitController *m_quitController = nullptr;
     model::RecentFiles *m_recent = nullptr;
     ui::ParameterEditor *m_editor = nullptr;
     WelcomePage *m_welcome = nullptr;
@@ -112,7 +116,6 @@ private:
     ui::InspectorView *m_inspector = nullptr;
     ui::MonitorView *m_monitor = nullptr;
     QPointer<ui::FoldWizard> m_wizard;
-    bool m_restoreOffered = false; // closing: the put-back question was asked
     bool m_viewLayoutRestored = false;
 
     QMenu *m_fileMenu = nullptr;

@@ -1,10 +1,8 @@
 // MainWindow's docks: the node view, the monitor, the workbench, the telegrams and the
 // linearisation, and how they are wired to each other and to the workspace (main_window.h).
-#include "main_window.h"
-
 #include "device_controller.h"
 #include "device_state_control.h"
-#include "workspace.h"
+#include "main_window.h"
 #include "model/curve/lcurve_table_model.h"
 #include "model/params/curve_binding.h"
 #include "widgets/curve/lcurve_editor.h"
@@ -14,9 +12,11 @@
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/tuning/workbench_view.h"
+#include "workspace.h"
 
 #include <QDockWidget>
 #include <QMenu>
+#include <QScrollArea>
 
 namespace vt::app {
 
@@ -80,7 +80,15 @@ void MainWindow::createDocks()
     m_curveDock = dock("dockCurve", m_curveEditor, Qt::BottomDockWidgetArea);
     // The tuning workbench: test signals on a set value, step and frequency response, runs.
     m_workbench = new ui::WorkbenchView(this);
-    m_workbenchDock = dock("dockWorkbench", m_workbench, Qt::BottomDockWidgetArea);
+    // In a scroll area: the workbench's column of controls is taller than the bottom area of a
+    // 1366 × 768 laptop leaves, and the docks tabbed with it would otherwise all take its
+    // height from the editor.
+    auto *workbenchScroll = new QScrollArea(this);
+    workbenchScroll->setObjectName(QStringLiteral("workbenchScroll"));
+    workbenchScroll->setWidgetResizable(true);
+    workbenchScroll->setFrameShape(QFrame::NoFrame);
+    workbenchScroll->setWidget(m_workbench);
+    m_workbenchDock = dock("dockWorkbench", workbenchScroll, Qt::BottomDockWidgetArea);
     connect(m_workbench, &ui::WorkbenchView::written, m_monitor, &ui::MonitorView::journalWrites);
     connect(m_workbench, &ui::WorkbenchView::statusMessage, this, &MainWindow::showStatus);
     // The editor keeps the full width; monitor, workbench, telegrams and curves share the bottom

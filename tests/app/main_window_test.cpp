@@ -77,7 +77,7 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
                            "Compare with De&vice…", "&Live Display Values", "&Scan Node",
                            "&Fold Wizard…"}));
     EXPECT_EQ(actionTexts(w, "menuView"),
-              (QStringList{"Node", "Monitor", "Telegrams", "Linearisation"}));
+              (QStringList{"Node", "Monitor", "Telegrams", "Linearisation", "Workbench"}));
     EXPECT_EQ(actionTexts(w, "menuLanguage"), (QStringList{"English", "Deutsch"}));
 
     for (QDockWidget *d : {w.nodeDock(), w.monitorDock(), w.telegramsDock()}) {
@@ -89,6 +89,17 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
     EXPECT_TRUE(w.findChild<QAction *>("actionConnect")->isEnabled());
     EXPECT_FALSE(w.findChild<QAction *>("actionReadAll")->isEnabled());
     EXPECT_FALSE(w.findChild<QAction *>("actionSave")->isEnabled());
+}
+
+// Every bottom dock is tabbed with the others, so the tallest one's minimum sets the height of
+// them all: at the default size for a 1366 × 768 laptop the editor keeps the larger part.
+TEST_F(Fixture, TheBottomDocksLeaveTheEditorMostOfTheDefaultWindow)
+{
+    MainWindow w(settings, language);
+    w.show();
+    QCoreApplication::processEvents();
+    ASSERT_LE(w.height(), 768);
+    EXPECT_LT(w.monitorDock()->height(), w.height() / 2) << w.monitorDock()->height();
 }
 
 // "valvetune FILE", as the desktop entry (Exec=valvetune %f) starts it for a double-clicked file:

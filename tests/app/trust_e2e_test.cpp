@@ -2,14 +2,18 @@
 // is what is on the device after a step from the monitor; New and Open while connected keep the
 // Device column and Write Changes offers exactly what differs, never "(unknown)", never a bus set
 // value; a step, "Set E17 = 2" and a Write of E17 are asked first (unless the step is armed); what
-// the tool changed is offered back on disconnect and quit. Each test failed on the first version.
+// the tool changed is offered back on disconnect, and quitting asks one question for everything
+// pending (edits, values to put back, a running workbench test). Each test failed on the first
+// version.
 #include "app/gui/app_settings.h"
 #include "app/gui/device_controller.h"
 #include "app/gui/file_controller.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "app/gui/quit_controller.h"
 #include "app/gui/workspace.h"
 #include "model/params/compare_model.h"
+#include "model/params/param_file_io.h"
 #include "model/params/parameter_tree_model.h"
 #include "sim_rig.h"
 #include "widgets/actuator_confirm.h"
@@ -18,7 +22,10 @@
 #include "widgets/editor/write_dialog.h"
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/monitor/step_control.h"
+#include "widgets/tuning/signal_form.h"
+#include "widgets/tuning/workbench_view.h"
 
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -101,6 +108,57 @@ struct TrustE2E : ::testing::Test
         ASSERT_TRUE(waitUntil([&] { return written.count() == 2; }))
             << step()->statusText().toStdString();
         ASSERT_TRUE(written.at(1).at(2).toBool()) << step()->statusText().toStdString();
+    }
+
+    // The quit question, answered `choice` each time; what was pending and offered is kept.
+    QList<app::QuitPending> quits;
+    QList<QList<app::QuitOption>> offered;
+    void answerQuit(app::QuitOption choice)
+    {
+        window->quitController().setAnswerHook(
+            [this, choice](const app::QuitPending &p, const QList<app::QuitOption> &options) {
+                quits << p;
+                offered << options;
+                return choice;
+            });
+    }
+
+    // A1.01 and E17 on the simulator just before the quitting window disconnects.
+    std::optional<std::pair<double, double>> disconnectValues;
+    QObject disconnectWatch;
+    void closeAndWait()
+    {
+        QObject::connect(&window->workspace(), &app::Workspace::aboutToDisconnect, &disconnectWatch,
+                         [this] {
+                             disconnectValues = {storedRaw(simModule(), *row("A1.01")),
+                                                 storedRaw(simModule(), *row("E17"))};
+                         });
+        QSignalSpy disconnected(&window->workspace(), &app::Workspace::disconnected);
+        window->close();
+        ASSERT_TRUE(disconnected.count() == 1 || disconnected.wait(kWaitMs));
+    }
+
+    // A step test on A1.01 in the workbench, long enough to be running when the window closes;
+    // both its questions (the step, and the source when E17 differs) answered yes.
+    void startWorkbenchTest()
+    {
+        answer = true;
+        ui::WorkbenchView *bench = window->workbench();
+        ASSERT_TRUE(bench->selectTarget(1, QStringLiteral("A1.01")));
+        model::SignalSpec spec;
+        spec.kind = model::SignalKind::Step;
+        spec.from = 3;
+        spec.to = 5;
+        spec.hold = 10;
+        bench->signalForm()->setSpec(spec);
+        bench->start();
+        const model::ActuatorLedger &ledger = window->workspace().actuatorLedger();
+        ASSERT_TRUE(waitUntil([&] {
+            return bench->isRunning() &&
+                   std::any_of(
+                       ledger.changes().begin(), ledger.changes().end(),
+                       [&](const model::ActuatorChange &c) { return c.row == row("A1.01"); });
+        })) << bench->statusText().toStdString();
     }
 
     // Write Changes, with the pre-read when one is needed.
@@ -274,18 +332,132 @@ TEST_F(TrustE2E, DisconnectOffersToPutBackWhatTheToolChanged)
         << window->device().lastRestore().toStdString();
 }
 
-TEST_F(TrustE2E, QuittingWithAStepActiveAsksToPutItBack)
+TEST_F(TrustE2E, QuittingWithAStepActiveAsksOnceAndPutsItBack)
+{
+    connectSimulator();
+    const double e17Before = storedRaw(simModule(), *row("E17"));
+    ASSERT_NO_FATAL_FAILURE(stepTo2V());
+    const qsizetype before = asked.size();
+    answerQuit(app::QuitOption::PutBack);
+    ASSERT_NO_FATAL_FAILURE(closeAndWait());
+    ASSERT_EQ(quits.size(), 1);
+    EXPECT_EQ(quits.front().putBack.size(), 2);
+    EXPECT_EQ(offered.front(),
+              (QList<app::QuitOption>{app::QuitOption::PutBack, app::QuitOption::Leave,
+                                      app::QuitOption::Cancel}));
+    EXPECT_EQ(asked.size(), before); // no second question
+    EXPECT_TRUE(window->device().lastRestore().startsWith("Put back"))
+        << window->device().lastRestore().toStdString();
+    ASSERT_TRUE(disconnectValues);
+    EXPECT_EQ(disconnectValues->first, 0.0);        // A1.01
+    EXPECT_EQ(disconnectValues->second, e17Before); // E17
+}
+
+TEST_F(TrustE2E, QuittingWithEditsAndAChangedSetValueAsksOnceAndPutsBack)
+{
+    connectSimulator();
+    const double e17Before = storedRaw(simModule(), *row("E17"));
+    ASSERT_NO_FATAL_FAILURE(stepTo2V());
+    ASSERT_FALSE(doc().edit(0, row("C1.07"), dev::RawValue{1234.0}));
+    ASSERT_TRUE(doc().isModified());
+    int saveAsked = 0;
+    window->files().setPromptHook([&] {
+        ++saveAsked;
+        return QMessageBox::Cancel;
+    });
+    const qsizetype before = asked.size();
+    answerQuit(app::QuitOption::PutBack);
+    ASSERT_NO_FATAL_FAILURE(closeAndWait());
+    ASSERT_EQ(quits.size(), 1);
+    EXPECT_TRUE(quits.front().unsavedEdits);
+    EXPECT_EQ(offered.front(),
+              (QList<app::QuitOption>{app::QuitOption::Save, app::QuitOption::PutBack,
+                                      app::QuitOption::Leave, app::QuitOption::Cancel}));
+    const QString lines = quits.front().putBack.join('\n');
+    EXPECT_TRUE(lines.contains("A1.01") && lines.contains("E17")) << lines.toStdString();
+    EXPECT_EQ(saveAsked, 0); // the edits were in the one question
+    EXPECT_EQ(asked.size(), before);
+    ASSERT_TRUE(disconnectValues);
+    EXPECT_EQ(disconnectValues->first, 0.0);
+    EXPECT_EQ(disconnectValues->second, e17Before);
+    EXPECT_FALSE(window->isVisible());
+}
+
+TEST_F(TrustE2E, SaveAndQuitSavesTheEditsThenPutsBack)
+{
+    connectSimulator();
+    const QString path = dir.filePath("quit.vtpar");
+    ASSERT_TRUE(window->files().saveTo(path));
+    ASSERT_NO_FATAL_FAILURE(stepTo2V());
+    ASSERT_FALSE(doc().edit(0, row("C1.07"), dev::RawValue{1234.0}));
+    answerQuit(app::QuitOption::Save);
+    ASSERT_NO_FATAL_FAILURE(closeAndWait());
+    ASSERT_EQ(quits.size(), 1);
+    EXPECT_FALSE(doc().isModified());
+    auto saved = model::readParamFile(path, dev::Language::English);
+    ASSERT_TRUE(saved.ok()) << saved.error().toStdString();
+    ASSERT_FALSE(saved->modules.empty());
+    const dev::files::ValueRow *c107 = saved->modules.front().find("C1.07");
+    ASSERT_NE(c107, nullptr);
+    EXPECT_EQ(c107->raw, dev::RawValue{1234.0});
+    ASSERT_TRUE(disconnectValues);
+    EXPECT_EQ(disconnectValues->first, 0.0);
+    EXPECT_TRUE(window->device().lastRestore().contains("A1.01"))
+        << window->device().lastRestore().toStdString();
+}
+
+TEST_F(TrustE2E, QuittingDuringAWorkbenchTestStopsItAndRestoresWhateverIsAnswered)
+{
+    connectSimulator();
+    const double e17Before = storedRaw(simModule(), *row("E17"));
+    ASSERT_NE(e17Before, 2.0); // the test switches the source and must put it back
+    ASSERT_NO_FATAL_FAILURE(startWorkbenchTest());
+    answerQuit(app::QuitOption::Leave); // even so, the test puts back what it drives
+    ASSERT_NO_FATAL_FAILURE(closeAndWait());
+    ASSERT_EQ(quits.size(), 1);
+    EXPECT_TRUE(quits.front().testRunning);
+    ASSERT_TRUE(disconnectValues);
+    EXPECT_EQ(disconnectValues->first, 0.0);
+    EXPECT_EQ(disconnectValues->second, e17Before);
+    ASSERT_EQ(window->workbench()->runs().size(), 1u);
+    EXPECT_EQ(window->workbench()->runs().front()->end, model::TestEnd::Stopped);
+    EXPECT_TRUE(window->workbench()->runs().front()->restored);
+}
+
+TEST_F(TrustE2E, CancellingTheQuitQuestionKeepsTheWindowAndChangesNothing)
 {
     connectSimulator();
     ASSERT_NO_FATAL_FAILURE(stepTo2V());
+    ASSERT_NO_FATAL_FAILURE(startWorkbenchTest());
+    ASSERT_FALSE(doc().edit(0, row("C1.07"), dev::RawValue{1234.0}));
     const qsizetype before = asked.size();
-    answer = true;
-    QSignalSpy disconnected(&window->workspace(), &app::Workspace::disconnected);
-    window->close();
-    ASSERT_TRUE(disconnected.count() == 1 || disconnected.wait(kWaitMs));
-    EXPECT_EQ(asked.size(), before + 1);
-    EXPECT_TRUE(window->device().lastRestore().startsWith("Put back"))
-        << window->device().lastRestore().toStdString();
+    const std::size_t changes = window->workspace().actuatorLedger().changes().size();
+    window->close(); // the real question, no hook
+    auto *box = window->findChild<QMessageBox *>(QStringLiteral("quitQuestion"));
+    ASSERT_NE(box, nullptr);
+    QStringList texts;
+    QPushButton *cancel = nullptr;
+    for (QAbstractButton *b : box->buttons()) {
+        texts << b->text();
+        if (b->text() == "Cancel")
+            cancel = qobject_cast<QPushButton *>(b);
+    }
+    EXPECT_EQ(texts.size(), 4) << texts.join(" | ").toStdString();
+    EXPECT_TRUE(texts.contains("Save, Put Back and Quit")) << texts.join(" | ").toStdString();
+    EXPECT_TRUE(box->text().contains("workbench test")) << box->text().toStdString();
+    EXPECT_TRUE(box->text().contains("A1.01")) << box->text().toStdString();
+    ASSERT_NE(cancel, nullptr);
+    cancel->click();
+    spinFor(100); // the window of "nothing happens"
+    EXPECT_TRUE(window->isVisible());
+    EXPECT_TRUE(window->isEnabled());
+    EXPECT_TRUE(window->workspace().isConnected());
+    EXPECT_TRUE(window->workbench()->isRunning());
+    EXPECT_TRUE(doc().isModified());
+    EXPECT_EQ(window->workspace().actuatorLedger().changes().size(), changes);
+    EXPECT_EQ(storedRaw(simModule(), *row("E17")), 2.0);
+    EXPECT_EQ(asked.size(), before);
+    EXPECT_FALSE(window->quitController().isQuitting());
 }
 
 TEST_F(TrustE2E, StoppingTheMonitorOffersToPutTheStepBack)
