@@ -312,9 +312,10 @@ int runTest(const QStringList &argsIn, Context &ctx)
                             (reason.in(run.lang()).empty() ? "" : ": " + reason.in(run.lang())) +
                             "; nothing was sent");
     }
-    model::TestRunSetup setup{*module, setValue, *signal, {}, {}, p.window, p.rate, true};
-    setup.channels = model::recordedRows(dict, mode, *setValue);
-    setup.actualRow = model::responseRow(dict, mode, *setValue);
+    model::TestRunSetup setup = model::TestRun::setupFor(*module, *setValue, *signal);
+    setup.window = p.window;
+    setup.rateHz = p.rate;
+    setup.switchSource = true; // the confirmation below lists the source rows
     if (const QString problem = model::TestRun::rangeProblem(setup); !problem.isEmpty())
         return ctx.fail(kExitUsage, str(problem) + "; nothing was sent");
 

@@ -4,6 +4,7 @@
 #include "dict/cooking.h"
 #include "model/monitor/set_value_step.h"
 #include "model/text_language.h"
+#include "model/tuning/workbench_rows.h"
 
 #include <QLocale>
 #include <array>
@@ -105,6 +106,22 @@ double TestRun::raw(double display) const
     const double factor =
         m_setup.setValueRow->scale.factor != 0 ? m_setup.setValueRow->scale.factor : 1.0;
     return std::round(display / factor);
+}
+
+TestRunSetup TestRun::setupFor(const ModuleInfo &module, const dev::ParamMeta &setValue,
+                               const TestSignal &signal)
+{
+    TestRunSetup setup{module, &setValue, signal, {}, nullptr, std::nullopt, 0, false, nullptr, 0, 0};
+    const dev::Dictionary &dict = *module.dictionary;
+    const std::string &mode = module.identification.mode;
+    setup.channels = recordedRows(dict, mode, setValue);
+    setup.actualRow = responseRow(dict, mode, setValue);
+    if (const dev::FaultRow *fault = faultCheck(dict, mode)) {
+        setup.faultRow = dict.find(fault->row);
+        setup.faultMask = fault->mask;
+        setup.faultOk = fault->ok;
+    }
+    return setup;
 }
 
 QString TestRun::rangeProblem(const TestRunSetup &setup)
@@ -280,7 +297,10 @@ void TestRun::cycle()
 
 void TestRun::readChannels()
 {
+    // The channels, the fault row and the set value itself, in one read.
     std::vector<const dev::ParamMeta *> rows = m_setup.channels;
+    if (m_setup.faultRow)
+        rows.push_back(m_setup.faultRow);
     rows.push_back(m_setup.setValueRow);
     const auto alive = m_alive;
     m_read = m_access.read(
@@ -300,7 +320,8 @@ void TestRun::readChannels()
             const double t = now() - m_recording.sessionStart;
             ++m_recording.cycles;
             std::optional<double> actual;
-            for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+            const std::size_t channels = m_setup.channels.size();
+            for (std::size_t i = 0; i < channels; ++i) {
                 const double v = dev::toDisplay(*rows[i], dev::rawNumber(result.values[i].value));
                 m_recording.channels[i].t.push_back(t);
                 m_recording.channels[i].y.push_back(v);
@@ -308,11 +329,22 @@ void TestRun::readChannels()
                     actual = v;
             }
             emit sampled();
+            if (m_setup.faultRow) {
+                const double fault = dev::rawNumber(result.values[channels].value);
+                const auto bits = static_cast<std::uint32_t>(static_cast<std::int64_t>(fault));
+                if ((bits & m_setup.faultMask) != m_setup.faultOk) {
+                    end(TestEnd::DeviceError,
+                        tr("The module reports an error: %1 = %2.")
+                            .arg(rowName(*m_setup.faultRow), displayText(*m_setup.faultRow, fault)));
+                    return;
+                }
+            }
             const double held = dev::rawNumber(result.values.back().value);
             if (m_lastRaw && held != *m_lastRaw) {
                 end(TestEnd::DeviceError,
                     tr("%1 holds %2, not the %3 written: something else writes the set value.")
-                        .arg(rowName(*m_setup.setValueRow), displayText(*m_setup.setValueRow, held),
+                        .arg(rowName(*m_setup.setValueRow),
+                             displayText(*m_setup.setValueRow, held),
                              displayText(*m_setup.setValueRow, *m_lastRaw)));
                 return;
             }
@@ -322,8 +354,8 @@ void TestRun::readChannels()
                 if (*actual < low || *actual > high) {
                     end(TestEnd::WindowExceeded,
                         tr("%1 = %2 left the travel window %3 … %4.")
-                            .arg(rowName(*m_setup.actualRow), numberText(*actual), numberText(low),
-                                 numberText(high)));
+                            .arg(rowName(*m_setup.actualRow), numberText(*actual),
+                                 numberText(low), numberText(high)));
                     return;
                 }
             }

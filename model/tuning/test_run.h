@@ -39,6 +39,11 @@ struct TestRunSetup
     // Cycles (write + read) per second; 0: as fast as the link allows. At most kMaxRateHz.
     double rateHz = 0;
     bool switchSource = false; // write the activation rows for the test, restore them after
+    // Read each cycle: while (value & faultMask) differs from faultOk the module is in error and
+    // the test stops.
+    const dev::ParamMeta *faultRow = nullptr;
+    std::uint32_t faultMask = 0;
+    std::uint32_t faultOk = 0;
 };
 
 enum class TestEnd {
@@ -73,6 +78,10 @@ public:
     // Seconds of the signal done (0 before the first acknowledgement).
     double elapsed() const;
 
+    // A setup with the rows the dictionary names for `setValue` in the module's mode: the
+    // recorded channels, the response (the actual value) and the fault row (workbench_rows.h).
+    static TestRunSetup setupFor(const ModuleInfo &module, const dev::ParamMeta &setValue,
+                                 const TestSignal &signal);
     // The range check of the signal against the row's limits and the window (empty: fine).
     static QString rangeProblem(const TestRunSetup &setup);
 

@@ -327,9 +327,8 @@ void WorkbenchView::start()
     const auto signal = model::TestSignal::make(*spec, &why);
     if (!signal)
         return fail(tr("This signal cannot be run: %1").arg(QString::fromStdString(why)));
-    model::TestRunSetup setup{*module, row, *signal, {}, {}, {}, m_rate->value(), false};
-    setup.channels = model::recordedRows(*module->dictionary, module->identification.mode, *row);
-    setup.actualRow = model::responseRow(*module->dictionary, module->identification.mode, *row);
+    model::TestRunSetup setup = model::TestRun::setupFor(*module, *row, *signal);
+    setup.rateHz = m_rate->value();
     if (m_useWindow->isChecked())
         setup.window = m_window->value();
     if (const QString problem = model::TestRun::rangeProblem(setup); !problem.isEmpty())
@@ -463,9 +462,9 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
             const auto signal = model::TestSignal::make(spec);
             if (!m || !r || !signal)
                 return;
-            model::TestRunSetup again{*m, r, *signal, {}, {}, {}, m_rate->value(), true};
-            again.channels = model::recordedRows(*m->dictionary, m->identification.mode, *r);
-            again.actualRow = model::responseRow(*m->dictionary, m->identification.mode, *r);
+            model::TestRunSetup again = model::TestRun::setupFor(*m, *r, *signal);
+            again.rateHz = m_rate->value();
+            again.switchSource = true;
             if (m_useWindow->isChecked())
                 again.window = m_window->value();
             begin(again);

@@ -47,10 +47,7 @@ struct Bench
 
     TestRunSetup setup(const SignalSpec &spec)
     {
-        TestRunSetup s{rig->module(), &rig->row("A1.01"), *TestSignal::make(spec), {}, {}, {}, 0,
-                       false};
-        s.channels = {&rig->row("d1.10"), &rig->row("d1.11")};
-        s.actualRow = &rig->row("d1.11");
+        TestRunSetup s = TestRun::setupFor(rig->module(), rig->row("A1.01"), *TestSignal::make(spec));
         return s;
     }
 
@@ -206,6 +203,32 @@ TEST(TestRun, TheTravelWindowStopsATest)
     EXPECT_TRUE(outcome.restored);
     EXPECT_LT(test.recording().cycles, 3);
     EXPECT_DOUBLE_EQ(b.read("A1.01"), 0);
+}
+
+// DMA Profinet manual §4.5.1.1: a short circuit latches the error (0xB0 bit 11 "Error") and
+// switches the outputs off; the test stops on it and still puts the set value back.
+TEST(TestRun, AModuleErrorStopsTheTest)
+{
+    Bench b;
+    ASSERT_TRUE(b.rig);
+    ASSERT_TRUE(b.write("E17", 2));
+    ASSERT_TRUE(b.write("A1.01", 100));
+    TestRunSetup setup = b.setup(upStep(3, 5, 5));
+    ASSERT_TRUE(setup.faultRow);
+    TestRun test(b.rig->access(), setup);
+    QObject::connect(&test, &TestRun::sampled, &test, [&] {
+        if (test.recording().cycles == 3) {
+            dev::sim::ClosedLoopPlant *plant = b.rig->simModule().closedLoop(1);
+            ASSERT_TRUE(plant);
+            plant->setSolenoidFault(false, dev::sim::SolenoidFault::ShortCircuit);
+        }
+    });
+    const TestOutcome outcome = b.run(test);
+    EXPECT_EQ(outcome.end, TestEnd::DeviceError) << key(outcome.end);
+    EXPECT_TRUE(outcome.reason.contains(QStringLiteral("0xB0"))) << outcome.reason.toStdString();
+    EXPECT_LT(test.recording().channels[0].t.back(), 4.0);
+    EXPECT_TRUE(outcome.restored);
+    EXPECT_DOUBLE_EQ(b.read("A1.01"), 100);
 }
 
 TEST(TestRun, ALostLinkEndsTheTestAndSaysTheSetValueIsNotBack)
