@@ -121,20 +121,20 @@
 <context>
     <name>vt::app::DeviceStateControl</name>
     <message>
-        <source>Module %1 has no DSP-408 control word.</source>
-        <translation>Modul %1 hat kein DSP-408-Steuerwort.</translation>
+        <source>Module %1 has no writable %2.</source>
+        <translation>Modul %1 hat kein schreibbares %2.</translation>
     </message>
     <message>
-        <source>A control word is still being written.</source>
-        <translation>Ein Steuerwort wird noch geschrieben.</translation>
+        <source>A device state write is still running.</source>
+        <translation>Ein Schreibvorgang für den Gerätezustand läuft noch.</translation>
     </message>
     <message>
-        <source>Control word %1 written to module %2.</source>
-        <translation>Steuerwort %1 an Modul %2 geschrieben.</translation>
+        <source>%1 = %2 written to module %3 (%4).</source>
+        <translation>%1 = %2 in Modul %3 geschrieben (%4).</translation>
     </message>
     <message>
-        <source>Control word %1 not written to module %2: %3</source>
-        <translation>Steuerwort %1 nicht an Modul %2 geschrieben: %3</translation>
+        <source>%1 = %2 not written to module %3: %4</source>
+        <translation>%1 = %2 nicht in Modul %3 geschrieben: %4</translation>
     </message>
 </context>
 <context>
@@ -2173,6 +2173,10 @@
         <source>Reading %1 failed: %2</source>
         <translation>Lesen von %1 fehlgeschlagen: %2</translation>
     </message>
+    <message>
+        <source>The device is in state %1 (%2), so the bus set value %3 does not drive the valve. The manual: %4 Switch it to %5 first (%6 = 0x%7).</source>
+        <translation>Das Gerät ist im Zustand %1 (%2), daher steuert der Bus-Sollwert %3 das Ventil nicht. Das Handbuch: %4 Schalten Sie es zuerst in den Zustand %5 (%6 = 0x%7).</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::SimEndpoint</name>
@@ -4009,6 +4013,14 @@ Senden?</translation>
         <source>Reset fault</source>
         <translation>Fehler quittieren</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Device local and device mode change only in INIT or DISABLED; the device is in %1.</source>
+        <translation>Steuerhoheit (Device local) und Sollwertvorgabe (Device mode) lassen sich nur in INIT oder DISABLED ändern; das Gerät ist in %1.</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::ParameterEditor</name>
@@ -4250,6 +4262,18 @@ Senden?</translation>
     <message>
         <source>Module %1</source>
         <translation>Modul %1</translation>
+    </message>
+    <message>
+        <source>(typed %1, rounded to the device resolution)</source>
+        <translation>(eingegeben %1, auf die Auflösung des Geräts gerundet)</translation>
+    </message>
+    <message>
+        <source>%1 → %2 (device resolution)</source>
+        <translation>%1 → %2 (Auflösung des Geräts)</translation>
+    </message>
+    <message>
+        <source>Switch to %1 (%2 = %3)</source>
+        <translation>In %1 schalten (%2 = %3)</translation>
     </message>
 </context>
 <context>

@@ -3,7 +3,8 @@
 // its parameters (the writable rows), as a device on the bench would between two tool runs. Each
 // valvetune-cli process starts with fresh simulators; the golden tests run commands in sequence
 // in one process (set, then get) and forget the simulators between tests.
-// CLI thread only (not thread-safe).
+// The HCS modules, the ED1/SD1 and the SD7 (with its HART texts) alike. CLI thread only (not
+// thread-safe).
 #pragma once
 
 namespace vt::model {

@@ -15,7 +15,7 @@ _valvetune_cli()
     local cur=${COMP_WORDS[COMP_CWORD]}
     local prev=${COMP_WORDS[COMP_CWORD - 1]}
     local commands="decode encode dictionary info scan read get set write diff monitor test fold"
-    local connection="--sim --port --baud --parity --stop --tcp --protocol --can --node --hart
+    local connection="--sim --factory --port --baud --parity --stop --tcp --protocol --can --node --hart
         --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
         --module --fault --product --turnaround --lang --json --help"
 

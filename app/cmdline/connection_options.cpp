@@ -14,6 +14,7 @@ const char kConnectionSynopsis[] =
     "connection (one of):\n"
     "  --sim FAMILY[:MODULES] [--protocol modbus-rtu|modbus-tcp|node-image|dsp408-image|"
     "dsp408-gateway]\n"
+    "       [--factory] (the simulator starts from the dictionary defaults, not commissioned)\n"
     "  --port PATH [--baud B] [--parity none|even|odd] [--stop 1|2]\n"
     "  --tcp HOST:PORT [--protocol modbus-tcp|node-image|dsp408-image|dsp408-gateway]\n"
     "  --can IFACE --node N\n"
@@ -67,6 +68,7 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
     const auto fault = takeOption(args, "--fault", &missing);
     const auto product = takeOption(args, "--product", &missing);
     const auto turnaround = takeOption(args, "--turnaround", &missing);
+    const bool factory = takeFlag(args, "--factory");
     std::vector<std::pair<QString, QString>> dsp408;
     for (const char *option : kDsp408Options)
         if (const auto value = takeOption(args, option, &missing))
@@ -87,6 +89,8 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
         return Error("--node goes with --can");
     if (protocol && !sim && !tcp)
         return Error("--protocol goes with --sim or --tcp");
+    if (factory && !sim)
+        return Error("--factory goes with --sim");
 
     if (sim) {
         spec.kind = model::ConnectionKind::Sim;
@@ -94,6 +98,7 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
         if (!parsed.ok())
             return Error("--sim: " + text(parsed.error()));
         spec.sim = *parsed;
+        spec.sim.factory = factory;
         if (protocol) {
             const auto p = dev::fromKey<dev::LinkProtocol>(protocol->toStdString());
             if (!p || *p == dev::LinkProtocol::Hart || *p == dev::LinkProtocol::Canopen)

@@ -43,7 +43,11 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
     const QCommandLineOption connectOption(
         QStringList{QStringLiteral("connect")},
         QStringLiteral("Connect at start-up, with valvetune-cli's connection options (below)."));
-    parser.addOptions({lang, simulate, open, connectOption});
+    const QCommandLineOption factory(
+        QStringList{QStringLiteral("factory")},
+        QStringLiteral("With --simulate: start the simulator from the bare dictionary defaults "
+                       "instead of a commissioned machine."));
+    parser.addOptions({lang, simulate, factory, open, connectOption});
     // A file manager and the desktop entry (Exec=valvetune %f) pass the file as the argument.
     parser.addPositionalArgument(
         QStringLiteral("FILE"),
@@ -104,6 +108,9 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
             return out;
         }
     }
+    out.factory = parser.isSet(factory);
+    if (out.factory && out.simulate.isEmpty())
+        return usageError(QStringLiteral("--factory goes with --simulate (or --connect --sim)"));
     if (parser.isSet(open))
         out.openFile = parser.value(open);
     else if (!files.isEmpty())

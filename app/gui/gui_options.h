@@ -1,4 +1,4 @@
-// GuiOptions: the valvetune command line (--simulate FAMILY[:MODULES], --connect with
+// GuiOptions: the valvetune command line (--simulate FAMILY[:MODULES] [--factory], --connect with
 // valvetune-cli's connection options, --lang en|de, --open FILE or just FILE), parsed into a
 // plain struct that main() acts on (startup.h): QCommandLineParser for the GUI's own options,
 // app/cmdline for the connection.
@@ -14,9 +14,10 @@ namespace vt::app {
 
 struct GuiOptions
 {
-    QString language; // "en", "de" or empty (settings / system locale decide)
-    QString simulate; // family id, optionally ":MODULES"
-    QString openFile; // --open FILE or the positional FILE
+    QString language;     // "en", "de" or empty (settings / system locale decide)
+    QString simulate;     // family id, optionally ":MODULES"
+    bool factory = false; // --factory: the simulator starts from the dictionary defaults
+    QString openFile;     // --open FILE or the positional FILE
     // --connect: the link to open at start-up (--tcp, --port, --can, --hart, --sim and their
     // settings, as valvetune-cli takes them).
     std::optional<model::ConnectionSpec> connection;

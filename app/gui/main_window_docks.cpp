@@ -42,6 +42,7 @@ void MainWindow::createDocks()
     auto *state = new DeviceStateControl(*m_workspace, this);
     connect(m_nodeView, &ui::NodeView::controlWordRequested, state, &DeviceStateControl::request);
     connect(m_nodeView, &ui::NodeView::resetFaultRequested, state, &DeviceStateControl::resetFault);
+    connect(m_nodeView, &ui::NodeView::valueRequested, state, &DeviceStateControl::requestValue);
     connect(state, &DeviceStateControl::written, m_monitor, &ui::MonitorView::journalWrites);
     connect(state, &DeviceStateControl::statusMessage, this, &MainWindow::showStatus);
     // Every frame in and out of the connection (Workspace's TelegramRecorder fills the log).
@@ -88,7 +89,8 @@ void MainWindow::createDocks()
     tabifyDockWidget(m_monitorDock, m_telegramsDock);
     tabifyDockWidget(m_monitorDock, m_curveDock);
     m_monitorDock->raise();
-    resizeDocks({m_nodeDock}, {230}, Qt::Horizontal);
+    // Wide enough for a module's lines ("Source of the control word  Control word acting is …").
+    resizeDocks({m_nodeDock}, {420}, Qt::Horizontal);
     resizeDocks({m_monitorDock}, {300}, Qt::Vertical);
     connect(m_nodeView, &ui::NodeView::moduleActivated, this, [this](int module) {
         const auto &m = m_workspace->document().module(module);

@@ -19,6 +19,7 @@ void startFromOptions(MainWindow &window, const GuiOptions &options)
         model::ConnectionSpec spec;
         spec.kind = model::ConnectionKind::Sim;
         spec.sim = *model::parseSimSpec(options.simulate); // checked by parseGuiOptions
+        spec.sim.factory = options.factory;
         window.device().connectTo(spec);
     }
     if (options.connection)

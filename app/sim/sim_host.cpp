@@ -47,6 +47,7 @@ dev::Result<QString, HostError> SimHost::start()
     spec.family = m_options.family;
     spec.modules = m_options.modules;
     spec.mode = m_options.mode;
+    spec.factory = m_options.factory;
     spec.protocol = m_options.protocol;
     spec.canNode = m_options.node;
     spec.dsp408 = m_options.dsp408;

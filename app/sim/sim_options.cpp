@@ -170,6 +170,10 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
     const QCommandLineOption modules(QStringLiteral("modules"),
                                      QStringLiteral("HCS modules of the node (default 1)."),
                                      QStringLiteral("N"));
+    const QCommandLineOption factory(
+        QStringLiteral("factory"),
+        QStringLiteral("HCS: start every module from the bare dictionary defaults instead of a "
+                       "commissioned machine (docs/SIMULATOR.md)."));
     const QCommandLineOption pty(
         QStringLiteral("pty"),
         QStringLiteral("Serve on a new pseudo terminal (its path is printed)."));
@@ -223,8 +227,8 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
                                     QStringLiteral("P"));
     const QCommandLineOption verbose(QStringList{QStringLiteral("v"), QStringLiteral("verbose")},
                                      QStringLiteral("Log every frame in and out on stderr."));
-    p.addOptions({device, mode, modules, pty, serial, tcp, can, canFd, node, protocol, unit, fault,
-                  seed, baud, parity, verbose});
+    p.addOptions({device, mode, modules, factory, pty, serial, tcp, can, canFd, node, protocol,
+                  unit, fault, seed, baud, parity, verbose});
     p.addOptions(dsp408);
     const QCommandLineOption help = p.addHelpOption();
     // Not addVersionOption(): its -v would clash with --verbose.
@@ -305,6 +309,8 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
             return usage("--modules '" + p.value(modules).toStdString() + "': expected 1 or more");
         o.modules = n;
     }
+
+    o.factory = p.isSet(factory);
 
     const auto &set = dev::builtinDictionaries();
     if (!set.ok())

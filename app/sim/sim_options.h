@@ -25,6 +25,7 @@ struct SimOptions
     std::string family;      // dictionary family id: an HCS family or "wandfluh-sd7"
     int mode = 0;            // HCS: E00 of every module; 0 = the family's first mode
     std::size_t modules = 1; // HCS: modules of the node
+    bool factory = false;    // HCS: dictionary defaults instead of the commissioned preset
     Endpoint endpoint = Endpoint::Pty;
     QString serialPath;                            // --serial
     QString tcpHost = QStringLiteral("127.0.0.1"); // --tcp: loopback unless told otherwise

@@ -150,8 +150,9 @@ Reply CanopenAdapter::sdoReply(const canopen::Sdo &sdo, const Transaction &t) co
     if (sdo.command == canopen::SdoCommand::Abort && t.kind == TransactionKind::Identify &&
         m_profile == CanopenProfile::Dsp408 && t.step == 1) {
         // No capability object: the device type alone identifies (identifyDsp408 says so).
-        reply.identity.text =
-            "no capability object 0x605F (abort " + std::to_string(sdo.abortCode) + ")";
+        reply.identity.text = {
+            "no capability object 0x605F (abort " + std::to_string(sdo.abortCode) + ")",
+            "kein Fähigkeitenobjekt 0x605F (Abbruch " + std::to_string(sdo.abortCode) + ")"};
         return reply;
     }
     if (sdo.command == canopen::SdoCommand::Abort) {
@@ -195,8 +196,10 @@ Reply CanopenAdapter::sdoReply(const canopen::Sdo &sdo, const Transaction &t) co
     if (t.kind == TransactionKind::Identify) {
         if (m_profile == CanopenProfile::Dsp408 && t.step == 0) {
             reply.identity.deviceProfile = static_cast<std::uint16_t>(bits & 0xFFFFu);
-            reply.identity.text = "CiA 301 device type " + std::to_string(bits) + ", profile " +
-                                  std::to_string(bits & 0xFFFFu);
+            reply.identity.text = {"CiA 301 device type " + std::to_string(bits) + ", profile " +
+                                       std::to_string(bits & 0xFFFFu),
+                                   "CiA-301-Gerätetyp " + std::to_string(bits) + ", Profil " +
+                                       std::to_string(bits & 0xFFFFu)};
         } else if (m_profile == CanopenProfile::Dsp408) {
             reply.identity.capability = bits;
         } else {

@@ -216,7 +216,7 @@ Reply Dsp408Adapter::answerOf(const Pkw &response, const Transaction &t) const
         reply.identity.capability = bits;
         char hex[16];
         std::snprintf(hex, sizeof hex, "0x%08X", bits);
-        reply.identity.text = std::string("DSP-408 db_Capability ") + hex;
+        reply.identity.text = same(std::string("DSP-408 db_Capability ") + hex);
         return reply;
     }
     const ParamMeta &row = *t.rows.front();

@@ -300,7 +300,7 @@ Reply HartAdapter::universalReply(const hart::Frame &frame, const Transaction &t
     for (const ParamMeta *row : t.rows) {
         const auto f = universalField(*row);
         // A write's answer echoes the whole record, so the field sits where the read finds it.
-        auto value = f ? decodeUniversalField(*f, frame.data) : std::nullopt;
+        auto value = f ? decodeUniversalField(*f, frame.data, frame.deviceStatus) : std::nullopt;
         if (!value)
             return frame.responseCode == 0 ? mismatch() : exceptionReply(frame.responseCode);
         reply.values.push_back(std::move(*value));
@@ -344,10 +344,14 @@ Reply HartAdapter::identityReply(const hart::Frame &frame, const Transaction &t)
     reply.identity.manufacturer = id->manufacturerId;
     reply.identity.expandedDeviceType = id->expandedDeviceType;
     reply.identity.deviceId = id->deviceId;
-    reply.identity.text = "HART rev " + std::to_string(id->hartRevision) + ", manufacturer " +
-                          std::to_string(id->manufacturerId) + ", device type " +
-                          std::to_string(id->expandedDeviceType) + ", device id " +
-                          hexText(id->deviceId, 6);
+    // HART-7 manual §5.1.1 command 0: revision, manufacturer, device type and unique id.
+    reply.identity.text = {
+        "HART rev " + std::to_string(id->hartRevision) + ", manufacturer " +
+            std::to_string(id->manufacturerId) + ", device type " +
+            std::to_string(id->expandedDeviceType) + ", device id " + hexText(id->deviceId, 6),
+        "HART-Revision " + std::to_string(id->hartRevision) + ", Hersteller " +
+            std::to_string(id->manufacturerId) + ", Gerätetyp " +
+            std::to_string(id->expandedDeviceType) + ", Geräte-ID " + hexText(id->deviceId, 6)};
     // From now on the device is addressed by its unique id (§2.3 long frame).
     m_devices[t.module] =
         Device{id->address(m_options.primaryMaster), id->minRequestPreambles, {}, {}};

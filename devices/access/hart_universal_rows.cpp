@@ -77,6 +77,8 @@ const std::map<std::string, UniversalField> &fields()
         {"hart_PvChannelFlags", {15, 17, 1, E::UInt8, std::nullopt}},
         // §5.1.22 command 48: device specific status bytes 0-5 (the first four here).
         {"hart_DeviceSpecificStatus", {48, 0, 4, E::UInt32, std::nullopt}},
+        // §4.4.1 status byte 2, carried by every answer: read with command 48's.
+        {"hart_FieldDeviceStatus", {48, 0, 0, E::DeviceStatusByte, std::nullopt}},
     };
     return kFields;
 }
@@ -102,8 +104,11 @@ std::optional<UniversalField> universalField(const ParamMeta &row)
 }
 
 std::optional<RawValue> decodeUniversalField(const UniversalField &field,
-                                             std::span<const std::uint8_t> data)
+                                             std::span<const std::uint8_t> data,
+                                             std::uint8_t deviceStatus)
 {
+    if (field.encoding == E::DeviceStatusByte)
+        return RawValue{double(deviceStatus)};
     if (data.size() < field.offset + field.width)
         return std::nullopt;
     const auto bytes = data.subspan(field.offset, field.width);
@@ -112,6 +117,7 @@ std::optional<RawValue> decodeUniversalField(const UniversalField &field,
     case E::Latin1: return RawValue{hart::latin1ToUtf8(bytes)};
     case E::Float: return RawValue{double(hart::floatFromBits(bigEndian(bytes)))};
     case E::HighFiveBits: return RawValue{double(bytes[0] >> 3)}; // §5.1.1 byte 7: bits 7..3
+    case E::DeviceStatusByte: break;
     case E::UInt8:
     case E::UInt16:
     case E::UInt24:
@@ -150,7 +156,8 @@ bool encodeUniversalField(const UniversalField &field, const RawValue &value, By
         break;
     }
     case E::Float:
-    case E::HighFiveBits: return false; // read-only fields
+    case E::HighFiveBits:
+    case E::DeviceStatusByte: return false; // read-only fields
     }
     std::copy(bytes.begin(), bytes.end(), record.begin() + std::ptrdiff_t(field.offset));
     return true;

@@ -23,7 +23,10 @@ enum class UniversalEncoding {
     UInt24,
     UInt32,
     Float,
-    HighFiveBits
+    HighFiveBits,
+    // Not in the data: the response's second status byte, "field device status" (HART-7 manual
+    // §4.4.1), which every answer carries; read with the command the field names.
+    DeviceStatusByte
 };
 
 struct UniversalField
@@ -35,13 +38,14 @@ struct UniversalField
     std::optional<std::uint8_t> writeCommand; // none: read only over HART
 };
 
-// The field of a `hart` row; nullopt for other rows and for values no command returns as data
-// (the field device status is the second status byte of every answer).
+// The field of a `hart` row; nullopt for other rows.
 std::optional<UniversalField> universalField(const ParamMeta &row);
 
-// The row's value from a response's data; nullopt when the data is too short.
+// The row's value from a response's data and its second status byte; nullopt when the data is
+// too short.
 std::optional<RawValue> decodeUniversalField(const UniversalField &field,
-                                             std::span<const std::uint8_t> data);
+                                             std::span<const std::uint8_t> data,
+                                             std::uint8_t deviceStatus);
 
 // Writes `value` into `record` (the command's whole data, e.g. the 21 bytes of command 18) at
 // the field's place; false when the value does not fit the encoding.

@@ -72,7 +72,7 @@ struct Identity
     std::uint32_t deviceId = 0;           // HART command 0
     std::uint32_t capability = 0;         // DSP-408 db_Capability (ED1/SD1 manual §4.8.7)
     std::uint16_t deviceProfile = 0;      // CANopen 0x1000 bits 15..0 (CiA 301): 408 = DSP-408
-    std::string text;                     // free text for people ("HART rev 7, device id 0x000123")
+    LocalText text; // for people, in both languages ("HART rev 7, … device id 0x000123")
 };
 
 struct Reply

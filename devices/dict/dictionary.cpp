@@ -20,6 +20,15 @@ const ParamMeta *Dictionary::findIndPnu(int ind, int pnu, int instance) const
     return it == m_byIndPnu.end() ? nullptr : &params[it->second];
 }
 
+const ParamMeta *Dictionary::stateControlWord() const
+{
+    if (protocol != DeviceProtocol::Dsp408 && protocol != DeviceProtocol::Hart)
+        return nullptr;
+    const ParamMeta *control = find("db_ControlWord");
+    const ParamMeta *status = find("db_StatusWord");
+    return control && control->writable() && status && status->readable() ? control : nullptr;
+}
+
 void Dictionary::buildIndex()
 {
     m_byName.clear();

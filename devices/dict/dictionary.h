@@ -36,6 +36,10 @@ struct Dictionary
     const ParamMeta *find(const std::string &name) const;
     const ParamMeta *findId(int id) const;
     const ParamMeta *findIndPnu(int ind, int pnu, int instance = 0) const;
+    // The DSP-408 device state machine (ED1/SD1 manual and HART-7 manual §4.2.2), which both
+    // Wandfluh profiles command through db_ControlWord and report in db_StatusWord: the control
+    // word row, or null for a family without that machine.
+    const ParamMeta *stateControlWord() const;
     void buildIndex();
 
 private:

@@ -4,9 +4,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <string_view>
 
 namespace vt::dev {
 namespace {
+
+// The version strings identifyDsp408 and identifyHart write (versionText reads them back).
+constexpr const char *kCapability = "capability ";
+constexpr const char *kNotReported = " (manual; not reported)";
+constexpr const char *kDeviceType = "device type ";
 
 bool productMatches(const Dictionary &d, HcsProduct product)
 {
@@ -75,6 +81,23 @@ Result<Identification, LocalText> identifyHcs(const DictionarySet &set, int vers
     return id;
 }
 
+LocalText versionText(const std::string &version)
+{
+    const auto starts = [&](std::string_view prefix) { return version.starts_with(prefix); };
+    if (starts(kCapability)) {
+        std::string rest = version.substr(std::string_view(kCapability).size());
+        std::string de = "Fähigkeiten " + rest;
+        if (rest.ends_with(kNotReported))
+            de = "Fähigkeiten " +
+                 rest.substr(0, rest.size() - std::string_view(kNotReported).size()) +
+                 " (Handbuch; nicht gemeldet)";
+        return {version, de};
+    }
+    if (starts(kDeviceType))
+        return {version, "Gerätetyp " + version.substr(std::string_view(kDeviceType).size())};
+    return same(version);
+}
+
 Result<Identification, LocalText> identifyDsp408(const DictionarySet &set, std::uint32_t capability)
 {
     if (!set.find("wandfluh-ed1"))
@@ -82,7 +105,7 @@ Result<Identification, LocalText> identifyDsp408(const DictionarySet &set, std::
     Identification id{"wandfluh-ed1", {}, {}, true, {}};
     if (capability == 0) {
         // CANopen without a capability object: device type 408 (CiA 301 0x1000) alone.
-        id.version = "capability 0x00130000 (manual; not reported)";
+        id.version = std::string(kCapability) + "0x00130000" + kNotReported;
         id.exact = false;
         id.warning = {"the device reports profile 408 but no capability; using wandfluh-ed1, "
                       "whose manual gives 0x00130000 (hydraulic drive, open loop movement and "
@@ -94,7 +117,7 @@ Result<Identification, LocalText> identifyDsp408(const DictionarySet &set, std::
     }
     char hex[16];
     std::snprintf(hex, sizeof hex, "0x%08X", capability);
-    id.version = std::string("capability ") + hex;
+    id.version = std::string(kCapability) + hex;
     if (capability != 0x00130000u) {
         id.exact = false;
         id.warning = {
@@ -116,7 +139,7 @@ Result<Identification, LocalText> identifyHart(const DictionarySet &set, std::ui
     if (!set.find("wandfluh-sd7"))
         return LocalText{"the SD7 dictionary is missing", "das SD7-Wörterbuch fehlt"};
     Identification id{
-        "wandfluh-sd7", "device type " + std::to_string(expandedDeviceType), {}, true, {}};
+        "wandfluh-sd7", kDeviceType + std::to_string(expandedDeviceType), {}, true, {}};
     if (expandedDeviceType != 58352 && expandedDeviceType != 58353) {
         id.exact = false;
         id.warning = {

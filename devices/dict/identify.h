@@ -42,4 +42,9 @@ Result<Identification, LocalText> identifyHart(const DictionarySet &set, std::ui
 
 inline constexpr std::uint16_t kWandfluhHartManufacturer = 24835;
 
+// A version as identifyDsp408 / identifyHart write it ("capability 0x00130000", "device type
+// 58352"), in both languages for people; the string itself stays the key that files and
+// dictionaries compare. Any other version (HCS "51.02") is the same in both.
+LocalText versionText(const std::string &version);
+
 } // namespace vt::dev

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/local_text.h"
+#include "dsp408/state_machine.h"
 
 #include <cstdint>
 #include <map>
@@ -16,11 +17,21 @@ namespace vt::dev {
 
 // A row whose value must be `value` before a bus set value drives the valve alone (HCS E17 = 2;
 // SD7 db_Local = 0 and db_DeviceMode = 1 "Command value from fieldbus"), and the manual's reason.
+// A state rule asks instead for a DSP-408 device state (ED1/SD1 manual and HART-7 manual §4.2.2:
+// only DEVICE_MODE_ACTIVE "the device functions are enabled"): `row` is then the status word that
+// reports it and `writeRow` = `value` the control word that commands it.
 struct SetValueActivation
 {
     std::string row;
     double value = 0;
     LocalText reason; // the manual's words, shown when the step is refused
+    std::optional<dsp408::State> state;
+    std::string writeRow; // empty: `row` itself is written
+
+    // The row written to meet the rule.
+    const std::string &written() const { return writeRow.empty() ? row : writeRow; }
+    // Whether `held` (the raw value read from `row`) meets the rule.
+    bool holds(double held) const;
 };
 
 // A row whose value says the module is in error (OPAT ERR "0 = no error present"; DMA 0xB0 bit

@@ -101,19 +101,19 @@ private:
 
     std::optional<SetValueActivation> activation(const Json &a, const std::string &mode)
     {
+        if (a.is_object() && a.contains("state"))
+            return stateActivation(a, mode);
         if (!a.is_object() || !a.contains("value") || !a["value"].is_number() ||
             !a.contains("row") || !a["row"].is_string()) {
             fail("\"monitor\".\"activation\" entries need \"row\", a numeric \"value\" and "
-                 "\"reason\"");
+                 "\"reason\", or a \"state\" and \"reason\"");
             return std::nullopt;
         }
         SetValueActivation act;
         act.row = a["row"].get<std::string>();
         act.value = a["value"].get<double>();
-        act.reason = text(a.value("reason", Json()));
-        if (!act.reason.complete())
-            fail("\"monitor\".\"activation\" '" + act.row +
-                 "' needs a \"reason\" in English and German");
+        if (!reason(a, act))
+            return std::nullopt;
         const ParamMeta *p = row(act.row, mode, "activation");
         if (!p)
             return std::nullopt;
@@ -122,6 +122,50 @@ private:
                  "' must be readable, writable and marked moves_actuator");
         if (act.value < p->min || act.value > p->max)
             fail("\"monitor\" activation value is outside the range of '" + act.row + "'");
+        return act;
+    }
+
+    bool reason(const Json &a, SetValueActivation &act)
+    {
+        act.reason = text(a.value("reason", Json()));
+        if (act.reason.complete())
+            return true;
+        fail("\"monitor\".\"activation\" '" + (act.row.empty() ? act.written() : act.row) +
+             "' needs a \"reason\" in English and German");
+        return false;
+    }
+
+    // {"state": "DEVICE_MODE_ACTIVE", "reason": …}: the DSP-408 state machine (ED1/SD1 manual
+    // and HART-7 manual §4.2.2), read from db_StatusWord, commanded through db_ControlWord.
+    std::optional<SetValueActivation> stateActivation(const Json &a, const std::string &mode)
+    {
+        static const std::set<std::string> kKeys = {"state", "reason"};
+        for (const auto &[key, value] : a.items())
+            if (!kKeys.count(key))
+                fail("\"monitor\" state activation has an unknown key '" + key + "'");
+        const auto state = a["state"].is_string()
+                               ? dsp408::stateFromName(a["state"].get<std::string>())
+                               : std::nullopt;
+        const auto word = state ? dsp408::controlWordFor(*state) : std::nullopt;
+        if (!word) {
+            fail("\"monitor\" activation \"state\" must name a state a control word commands "
+                 "(INIT, DISABLED, HOLD, DEVICE_MODE_ACTIVE)");
+            return std::nullopt;
+        }
+        SetValueActivation act;
+        act.state = state;
+        act.row = "db_StatusWord";
+        act.writeRow = "db_ControlWord";
+        act.value = *word;
+        if (!reason(a, act))
+            return std::nullopt;
+        const ParamMeta *status = row(act.row, mode, "state activation");
+        const ParamMeta *control = row(act.writeRow, mode, "state activation");
+        if (!status || !control)
+            return std::nullopt;
+        if (!status->readable() || !control->writable() || !control->movesActuator)
+            fail("\"monitor\" state activation needs a readable db_StatusWord and a writable "
+                 "db_ControlWord marked moves_actuator");
         return act;
     }
 

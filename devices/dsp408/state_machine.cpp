@@ -10,6 +10,10 @@ bool has(std::uint16_t word, std::uint16_t bit)
     return (word & bit) != 0;
 }
 
+constexpr State kStates[] = {
+    State::NotReady,         State::Init,          State::Disabled,  State::Hold,
+    State::DeviceModeActive, State::FaultReaction, State::FaultHold, State::Fault};
+
 } // namespace
 
 Step powerOn()
@@ -115,10 +119,27 @@ std::uint16_t statusBits(State state)
 
 std::optional<State> stateOfStatusWord(std::uint16_t statusWord)
 {
-    for (State state :
-         {State::NotReady, State::Init, State::Disabled, State::Hold, State::DeviceModeActive,
-          State::FaultReaction, State::FaultHold, State::Fault})
+    for (State state : kStates)
         if (statusBits(state) == (statusWord & 0x0Fu))
+            return state;
+    return std::nullopt;
+}
+
+std::optional<std::uint16_t> controlWordFor(State state)
+{
+    switch (state) {
+    case State::Init: return kControlInit;
+    case State::Disabled: return kControlDisabled;
+    case State::Hold: return kControlHold;
+    case State::DeviceModeActive: return kControlActive;
+    default: return std::nullopt;
+    }
+}
+
+std::optional<State> stateFromName(std::string_view name)
+{
+    for (State state : kStates)
+        if (name == stateName(state))
             return state;
     return std::nullopt;
 }

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace vt::dev::dsp408 {
@@ -97,6 +98,12 @@ inline constexpr std::uint16_t kControlInit = 0x0000;
 inline constexpr std::uint16_t kControlDisabled = 0x0001;
 inline constexpr std::uint16_t kControlHold = 0x0003;
 inline constexpr std::uint16_t kControlActive = 0x0007;
+
+// The control word that commands `state` (INIT, DISABLED, HOLD, DEVICE_MODE_ACTIVE); nullopt for
+// the states only the device enters (NOT_READY, the fault states).
+std::optional<std::uint16_t> controlWordFor(State state);
+// The state named as stateName() gives it ("DEVICE_MODE_ACTIVE"); nullopt for any other text.
+std::optional<State> stateFromName(std::string_view name);
 
 // Texts (texts.cpp).
 const char *stateName(State state); // "DEVICE_MODE_ACTIVE"

@@ -78,7 +78,7 @@ Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes
     }
     case FrameFormat::Pkw:
     case FrameFormat::Pzd: {
-        dsp408::Options o;
+        dsp408::Options o = options.dsp408;
         o.direction = options.direction;
         return options.protocol == FrameFormat::Pkw ? dsp408::describePkw(bytes, o)
                                                     : dsp408::describeTelegram(bytes, o);
@@ -91,9 +91,9 @@ Result<Description, std::string> describeAny(std::span<const std::uint8_t> bytes
         return canopen::describeSdo(bytes, o);
     }
     case FrameFormat::Dsp408Gateway: {
-        dsp408::Options o;
+        dsp408::Options o = options.dsp408;
         o.direction = options.direction;
-        return dsp408::describeGatewayAdu(bytes, o);
+        return dsp408::describeGatewayAdu(bytes, o, options.registerBytes);
     }
     }
     return std::string("unknown protocol");

@@ -9,6 +9,8 @@
 #include "core/link_protocol.h"
 #include "core/result.h"
 #include "dict/dictionary.h"
+#include "dsp408/gateway.h"
+#include "dsp408/options.h"
 #include "hcs/types.h"
 
 #include <array>
@@ -59,6 +61,11 @@ struct AnyOptions
     std::optional<std::uint32_t> cobId; // CANopen: the frame's COB-ID (decides the direction)
     // HCS parameter names and cooked values ("ID 0x0030 (C1.07 …)", "1.000 V"); nullptr = raw.
     const Dictionary *dictionary = nullptr;
+    // PKW / PZD / dsp408-gateway: the IND byte and PZD word order and the gateway's register byte
+    // order the link was configured with (ARCHITECTURE.md "Byte order"); the direction is
+    // `direction` above.
+    dsp408::Options dsp408;
+    dsp408::RegisterByteOrder registerBytes = dsp408::RegisterByteOrder::FirstByteHigh;
 };
 
 // Fails only for options that make no sense (an unknown CMD 15 profile key); a frame that does

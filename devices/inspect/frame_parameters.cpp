@@ -33,15 +33,19 @@ void fromModbusPdu(CarriedParameters &out, const modbus::RequestPdu &pdu)
         out.ids.push_back(w->address);
 }
 
-void fromPkw(CarriedParameters &out, std::span<const std::uint8_t> pkwBytes)
+void fromPkw(CarriedParameters &out, std::span<const std::uint8_t> pkwBytes,
+             const ImageLayout &layout)
 {
-    const auto pkw = dsp408::decodePkw(pkwBytes, dsp408::Options{});
+    dsp408::Options options = layout.dsp408;
+    options.direction = Direction::Request;
+    const auto pkw = dsp408::decodePkw(pkwBytes, options);
     if (pkw && pkw->ak != static_cast<std::uint8_t>(dsp408::RequestId::None))
         out.indPnu = CarriedParameters::IndPnu{pkw->ind, pkw->pnu, 0};
 }
 
 // A gateway write of the PKW words (4 registers) or the whole output image (7).
-void fromGatewayAdu(CarriedParameters &out, std::span<const std::uint8_t> adu)
+void fromGatewayAdu(CarriedParameters &out, std::span<const std::uint8_t> adu,
+                    const ImageLayout &layout)
 {
     const auto cut = modbus::cutAdu(adu);
     if (!cut.ok() || !*cut)
@@ -51,9 +55,8 @@ void fromGatewayAdu(CarriedParameters &out, std::span<const std::uint8_t> adu)
     if (!write || (write->values.size() != dsp408::kPkwRegisters &&
                    write->values.size() != dsp408::kImageRegisters))
         return;
-    const Bytes bytes =
-        dsp408::fromRegisters(write->values, dsp408::RegisterByteOrder::FirstByteHigh);
-    fromPkw(out, std::span<const std::uint8_t>(bytes).first(dsp408::kPkwSize));
+    const Bytes bytes = dsp408::fromRegisters(write->values, layout.registerBytes);
+    fromPkw(out, std::span<const std::uint8_t>(bytes).first(dsp408::kPkwSize), layout);
 }
 
 void fromSdo(CarriedParameters &out, std::span<const std::uint8_t> data)
@@ -67,7 +70,7 @@ void fromSdo(CarriedParameters &out, std::span<const std::uint8_t> data)
 } // namespace
 
 CarriedParameters carriedBy(LinkProtocol link, std::span<const std::uint8_t> bytes,
-                            Direction direction, hcs::Family family)
+                            Direction direction, hcs::Family family, const ImageLayout &layout)
 {
     CarriedParameters out;
     if (direction != Direction::Request)
@@ -102,9 +105,9 @@ CarriedParameters carriedBy(LinkProtocol link, std::span<const std::uint8_t> byt
     }
     case LinkProtocol::Dsp408Image:
         if (bytes.size() == dsp408::kTelegram1Size)
-            fromPkw(out, bytes.first(dsp408::kPkwSize));
+            fromPkw(out, bytes.first(dsp408::kPkwSize), layout);
         break;
-    case LinkProtocol::Dsp408Gateway: fromGatewayAdu(out, bytes); break;
+    case LinkProtocol::Dsp408Gateway: fromGatewayAdu(out, bytes, layout); break;
     case LinkProtocol::Canopen:
         if (bytes.size() == canopen::kSocketCanFrameSize) {
             const auto frame = canopen::fromSocketCan(bytes);

@@ -58,10 +58,14 @@ void PressureAxis::step(double flow, double dt)
     m_pressure = std::clamp(target + (m_pressure - target) * a, 0.0, m_c.relief);
 }
 
+bool isPressureBranch(int mode, int branch)
+{
+    return mode == 4 || mode == 8 || (mode == 6 && branch == 2);
+}
+
 std::unique_ptr<AxisModel> makeAxisForMode(int mode, int branch)
 {
-    const bool pressure = mode == 4 || mode == 8 || (mode == 6 && branch == 2);
-    if (pressure)
+    if (isPressureBranch(mode, branch))
         return std::make_unique<PressureAxis>();
     return std::make_unique<CylinderAxis>();
 }

@@ -98,5 +98,7 @@ private:
 // Mode 3 = position (cylinder), mode 4 = pressure; OPAT mode 6: branch 1 valve/position, branch 2
 // process (pressure); mode 8: both processes. Unknown modes get a cylinder.
 std::unique_ptr<AxisModel> makeAxisForMode(int mode, int branch);
+// Whether makeAxisForMode gives branch `branch` of `mode` a pressure (else a cylinder).
+bool isPressureBranch(int mode, int branch);
 
 } // namespace vt::dev::sim

@@ -102,6 +102,28 @@ public:
     const Dsp408ParamStore &params() const { return m_params; }
     Dsp408Drive &drive() { return m_drive; }
 
+    // What commands 17, 18, 19 and 22 write (HART-7 manual §5.1), as the device holds it: kept
+    // in non-volatile memory, so a bench device still has it at the next connection.
+    struct Texts
+    {
+        std::string tag, longTag, descriptor, message;
+        hart::Date date;
+        std::uint32_t finalAssemblyNumber = 0;
+    };
+    Texts texts() const
+    {
+        return {m_tag, m_longTag, m_descriptor, m_message, m_date, m_finalAssembly};
+    }
+    void setTexts(const Texts &texts)
+    {
+        m_tag = texts.tag;
+        m_longTag = texts.longTag;
+        m_descriptor = texts.descriptor;
+        m_message = texts.message;
+        m_date = texts.date;
+        m_finalAssembly = texts.finalAssemblyNumber;
+    }
+
     // Analog input 3: the 4..20 mA loop current the HART signal rides on (HART-7 manual §3.2).
     void setLoopCurrent(float mA) { m_loopCurrentMa = mA; }
     // Fault injection: error present → FAULT, "device malfunction" and "more status available".

@@ -3,6 +3,7 @@
 #include "dict/dictionary.h"
 #include "sim/canopen_dsp408_objects.h"
 #include "sim/canopen_sdo_server.h"
+#include "sim/commissioned_preset.h"
 #include "sim/dsp408_device.h"
 #include "sim/dsp408_gateway_server.h"
 #include "sim/dsp408_server.h"
@@ -127,6 +128,9 @@ std::optional<SimBuildError> SimDevice::buildHcs(const DictionarySet &dictionari
     if (!node.ok())
         return SimBuildError{SimBuildErrc::BadNode, node.error()};
     m_node = std::move(node).value();
+    if (!m_spec.factory)
+        for (std::size_t i = 0; i < m_node->moduleCount(); ++i)
+            applyCommissionedPreset(m_node->module(i));
     switch (protocol()) {
     case LinkProtocol::ModbusRtu: {
         ModbusUnitOptions units;

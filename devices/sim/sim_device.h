@@ -42,6 +42,9 @@ struct SimDeviceSpec
     std::string family;      // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
     std::size_t modules = 1; // HCS node size
     int mode = 0;            // HCS: E00 of every module; 0: the family's first mode
+    // HCS: false starts every module commissioned (sim/commissioned_preset.h); true leaves the
+    // bare dictionary defaults (`--factory`).
+    bool factory = false;
     std::optional<LinkProtocol> protocol; // nullopt: defaultSimProtocol
     std::uint8_t canNode = 1;             // CANopen node id (SDO 0x600 + node / 0x580 + node)
     // ED1 over its PROFIBUS image (Dsp408Image, Dsp408Gateway): image layout, gateway registers,

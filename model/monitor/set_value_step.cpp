@@ -25,7 +25,8 @@ SetValueStep::activationRules(const dev::Dictionary &dictionary, const std::stri
     std::vector<const dev::SetValueActivation *> rules;
     for (const dev::SetValueActivation &rule : dictionary.monitor.forMode(mode).activation) {
         const dev::ParamMeta *row = ruleRow(dictionary, rule);
-        if (row && row->readable() && row->writable())
+        const dev::ParamMeta *written = ruleWriteRow(dictionary, rule);
+        if (row && row->readable() && written && written->writable())
             rules.push_back(&rule);
     }
     return rules;
@@ -35,6 +36,12 @@ const dev::ParamMeta *SetValueStep::ruleRow(const dev::Dictionary &dictionary,
                                             const dev::SetValueActivation &rule)
 {
     return dictionary.find(rule.row);
+}
+
+const dev::ParamMeta *SetValueStep::ruleWriteRow(const dev::Dictionary &dictionary,
+                                                 const dev::SetValueActivation &rule)
+{
+    return dictionary.find(rule.written());
 }
 
 dev::LocalText SetValueStep::noStepReason(const dev::Dictionary &dictionary,
@@ -68,6 +75,21 @@ QString SetValueStep::refusalText(const dev::ParamMeta &setValueRow,
                                   const dev::SetValueActivation &rule, double value,
                                   dev::Language lang)
 {
+    if (rule.state) {
+        const auto now = dev::dsp408::stateOfStatusWord(
+            static_cast<std::uint16_t>(static_cast<std::int64_t>(value)));
+        const QString state = now ? QString::fromLatin1(dev::dsp408::stateName(*now))
+                                  : QStringLiteral("0x%1").arg(static_cast<std::int64_t>(value), 4,
+                                                               16, QLatin1Char('0'));
+        return tr("The device is in state %1 (%2), so the bus set value %3 does not drive the "
+                  "valve. The manual: %4 Switch it to %5 first (%6 = 0x%7).")
+            .arg(state, QString::fromStdString(activationRow.name),
+                 QString::fromStdString(setValueRow.name),
+                 QString::fromStdString(rule.reason.in(lang)),
+                 QString::fromLatin1(dev::dsp408::stateName(*rule.state)),
+                 QString::fromStdString(rule.written()))
+            .arg(static_cast<std::int64_t>(rule.value), 4, 16, QLatin1Char('0'));
+    }
     const QString now = QString::fromStdString(dev::formatValue(activationRow, value, lang));
     const QString wanted =
         QString::fromStdString(dev::formatValue(activationRow, rule.value, lang));
@@ -112,7 +134,7 @@ void SetValueStep::step(const dev::ParamMeta &row, double raw)
             m_activation.reset();
             for (std::size_t i = 0; i < rules.size(); ++i) {
                 const double held = dev::rawNumber(result.values[i].value);
-                if (held != rules[i]->value) {
+                if (!rules[i]->holds(held)) {
                     m_busy = false;
                     m_pending = rules[i];
                     m_activation = held;
@@ -138,14 +160,14 @@ void SetValueStep::enableBusSetValue()
             return;
         m_pending = rules.front();
     }
-    const dev::ParamMeta *row = ruleRow(*m_module.dictionary, *m_pending);
+    const dev::ParamMeta *row = ruleWriteRow(*m_module.dictionary, *m_pending);
     if (!row)
         return;
     m_busy = true;
     WriteItem item;
     item.row = row;
     item.value = m_pending->value;
-    if (m_activation)
+    if (m_activation && !m_pending->state) // a state rule read the status word, not this row
         item.before = *m_activation;
     runJob({item});
 }
@@ -159,7 +181,8 @@ void SetValueStep::runJob(std::vector<WriteItem> items)
         const std::vector<WriteItem> done = m_job->items();
         for (const WriteItem &item : done) {
             // The refused rule now holds its value: the next step checks the next rule.
-            if (m_pending && item.row && item.row == ruleRow(*m_module.dictionary, *m_pending) &&
+            if (m_pending && item.row &&
+                item.row == ruleWriteRow(*m_module.dictionary, *m_pending) &&
                 isOnDevice(item.status)) {
                 m_pending = nullptr;
                 m_activation.reset();

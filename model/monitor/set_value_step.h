@@ -3,7 +3,8 @@
 // controller answer. The set value drives the valve alone only while the activation row holds
 // its value (HCS E17 = 2, DMA Profinet manual ID 0x1F: "For switching off of the analogue
 // set-value, set E17 = 2"; SD7 db_DeviceMode = 1, HART-7 manual §5.2.3 "Command value from
-// fieldbus"), so that row is read first and the step refused while it differs. Every write goes
+// fieldbus"; ED1/SD1 and SD7 the device state DEVICE_MODE_ACTIVE, ED1/SD1 manual and HART-7
+// manual §4.2.2), so that row is read first and the step refused while it differs. Every write goes
 // through WriteJob (range check, pacing, read back).
 // Owner: the monitor view; GUI thread, same as the DeviceAccess, which must outlive it.
 #pragma once
@@ -29,9 +30,12 @@ public:
     // SD7 db_Local = 0, db_DeviceMode = 1), in the order they are checked.
     static std::vector<const dev::SetValueActivation *>
     activationRules(const dev::Dictionary &dictionary, const std::string &mode);
-    // The row of a rule (null when the dictionary lacks it).
+    // The row a rule reads, and the row written to meet it (the same but for a state rule: the
+    // status word is read, the control word written); null when the dictionary lacks it.
     static const dev::ParamMeta *ruleRow(const dev::Dictionary &dictionary,
                                          const dev::SetValueActivation &rule);
+    static const dev::ParamMeta *ruleWriteRow(const dev::Dictionary &dictionary,
+                                              const dev::SetValueActivation &rule);
     // Why `mode` of the family has no step (the dictionary's words).
     static dev::LocalText noStepReason(const dev::Dictionary &dictionary, const std::string &mode);
 

@@ -23,12 +23,13 @@ struct ParamModule
 {
     int address = 0;
     const dev::Dictionary *dictionary = nullptr;
-    std::string version;      // "51.02"; chooses the applicable rows
-    std::string mode;         // HCS E00, "3"
-    QString identity;         // for people: "dma-pn-v51 51.02, mode 3"
-    bool identityOwn = false; // identity is ours (a tr() sentence), not the device's own words
-    QString label;            // the user's name for the module, from the file
-    bool online = false;      // paired with a module identified on the connected node
+    std::string version;           // "51.02"; chooses the applicable rows
+    std::string mode;              // HCS E00, "3"
+    QString identity;              // for people: "dma-pn-v51 51.02, mode 3"
+    bool identityOwn = false;      // identity is ours (a tr() sentence), not the device's own words
+    dev::LocalText identityDevice; // the device's identity in both languages (identity shows one)
+    QString label;                 // the user's name for the module, from the file
+    bool online = false;           // paired with a module identified on the connected node
     // Paired with the device module at `address` on this or an earlier connection: the Device
     // column shows the image's values (not current after a disconnect). A file opened or a New
     // document is not paired until the device is attached again.

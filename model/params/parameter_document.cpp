@@ -2,6 +2,7 @@
 
 #include "access/hart_universal_rows.h"
 #include "dict/cooking.h"
+#include "dict/identify.h"
 #include "value_commands.h"
 
 #include <QCoreApplication>
@@ -13,10 +14,10 @@ namespace {
 
 // "opat 51.03, mode 3": the family, version and mode as one sentence of the language shown.
 QString moduleIdentity(const dev::Dictionary &dict, const std::string &version,
-                       const std::string &mode)
+                       const std::string &mode, dev::Language lang)
 {
     const QString family = QString::fromStdString(dict.family);
-    const QString v = QString::fromStdString(version);
+    const QString v = QString::fromStdString(dev::versionText(version).in(lang));
     const QString m = QString::fromStdString(mode);
     if (mode.empty())
         return version.empty() ? family : QStringLiteral("%1 %2").arg(family, v);
@@ -66,7 +67,10 @@ void ParameterDocument::setLanguage(dev::Language language)
     for (std::size_t i = 0; i < m_modules.size(); ++i) {
         ParamModule &m = m_modules[i];
         if (m.identityOwn && m.dictionary) {
-            m.identity = moduleIdentity(*m.dictionary, m.version, m.mode);
+            m.identity = moduleIdentity(*m.dictionary, m.version, m.mode, m_language);
+            emit moduleChanged(static_cast<int>(i));
+        } else if (!m.identityDevice.en.empty()) {
+            m.identity = QString::fromStdString(m.identityDevice.in(m_language));
             emit moduleChanged(static_cast<int>(i));
         }
     }
@@ -156,7 +160,7 @@ QStringList ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos
                           .arg(info.address)
                           .arg(it->identity,
                                moduleIdentity(*info.dictionary, info.identification.version,
-                                              info.identification.mode));
+                                              info.identification.mode, m_language));
         }
         pairedNow[static_cast<std::size_t>(it - modules.begin())] = true;
         it->online = true;
@@ -164,10 +168,11 @@ QStringList ParameterDocument::attachDevice(const std::vector<ModuleInfo> &infos
         it->version = info.identification.version;
         it->mode = info.identification.mode;
         it->versRaw = info.versRaw;
-        it->identity = info.identityText.isEmpty()
-                           ? moduleIdentity(*info.dictionary, it->version, it->mode)
-                           : info.identityText;
-        it->identityOwn = info.identityText.isEmpty();
+        it->identityDevice = info.identityText;
+        it->identityOwn = info.identityText.en.empty();
+        it->identity = it->identityOwn
+                           ? moduleIdentity(*info.dictionary, it->version, it->mode, m_language)
+                           : QString::fromStdString(info.identityText.in(m_language));
     }
     for (std::size_t i = 0; i < modules.size(); ++i) {
         if (pairedNow[i])
@@ -253,7 +258,7 @@ void ParameterDocument::loadFile(const dev::files::ParamFile &file,
         m.version = record.version;
         m.mode = record.mode;
         m.label = QString::fromStdString(record.label);
-        m.identity = moduleIdentity(*dict, record.version, record.mode);
+        m.identity = moduleIdentity(*dict, record.version, record.mode, m_language);
         m.identityOwn = true;
         m.record = record;
         m.mapReport = dev::files::mapModule(record, *dict);

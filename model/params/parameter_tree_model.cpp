@@ -67,8 +67,8 @@ QString stateWordText(const ParameterDocument &document, int moduleIndex)
         if (!value)
             return {};
         const QString word = qs(row.name) + QStringLiteral(" = ") + formatRaw(row, *value, lang);
-        // ED1/SD1 manual §4.2.2 / §4.8.3: the device state the bits R M H D report.
-        if (module.dictionary->protocol != dev::DeviceProtocol::Dsp408)
+        // ED1/SD1 manual and HART-7 manual §4.2.2: the device state the bits R M H D report.
+        if (!module.dictionary->stateControlWord())
             return word;
         const auto state = dev::dsp408::stateOfStatusWord(
             static_cast<std::uint16_t>(static_cast<std::int64_t>(dev::rawNumber(*value))));

@@ -49,8 +49,12 @@ void merge(dev::access::Identity &into, const dev::access::Identity &from)
         into.capability = from.capability;
     if (from.deviceProfile)
         into.deviceProfile = from.deviceProfile;
-    if (!from.text.empty())
-        into.text = into.text.empty() ? from.text : into.text + "; " + from.text;
+    if (!from.text.en.empty())
+        into.text = into.text.en.empty()
+                        ? from.text
+                        : dev::LocalText{into.text.en + "; " + from.text.en,
+                                         into.text.in(dev::Language::German) + "; " +
+                                             from.text.in(dev::Language::German)};
 }
 
 } // namespace
@@ -105,7 +109,7 @@ void DeviceAccess::identify(int module, std::function<void(const IdentifyResult 
         result.module.dictionary = m_dictionaries.find(found->family);
         result.module.versRaw = id.versRaw;
         result.module.mode = id.mode;
-        result.module.identityText = QString::fromStdString(id.text);
+        result.module.identityText = id.text;
         if (!found->exact)
             result.deviceText = found->warning;
         done(result);

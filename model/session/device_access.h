@@ -25,7 +25,7 @@ struct ModuleInfo
     const dev::Dictionary *dictionary = nullptr; // from the DictionarySet; outlives the access
     int versRaw = -1;                            // HCS Vers (ID 0)
     int mode = -1;                               // HCS E00
-    QString identityText;                        // HART/DSP-408 identity for people
+    dev::LocalText identityText;                 // HART/DSP-408 identity for people
 };
 
 struct IdentifyResult

@@ -113,6 +113,7 @@ dev::Result<std::unique_ptr<link::SimLink>, QString> makeSimLink(const SimSpec &
     deviceSpec.family = spec.family;
     deviceSpec.modules = spec.modules;
     deviceSpec.mode = spec.mode;
+    deviceSpec.factory = spec.factory;
     deviceSpec.protocol = spec.protocol;
     deviceSpec.dsp408 = spec.dsp408;
     auto device = dev::sim::SimDevice::build(endpoint->m_clock, *set, deviceSpec);

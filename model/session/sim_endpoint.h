@@ -42,6 +42,9 @@ struct SimSpec
     std::string family;      // dictionary family: "opat", "dma-pn-v51", "wandfluh-sd7" …
     std::size_t modules = 1; // HCS node size
     int mode = 0;            // E00; 0: the family's first mode
+    // HCS: false starts a commissioned machine (dev::sim commissioned_preset.h), true the bare
+    // dictionary defaults (`--factory`).
+    bool factory = false;
     // Modbus RTU, Modbus TCP, the node image, HART (the SD7's only one), dsp408-image or
     // dsp408-gateway (the ED1); nullopt: the family's default (dev::sim::defaultSimProtocol).
     std::optional<dev::LinkProtocol> protocol;

@@ -216,6 +216,8 @@ QString TelegramLog::summary(const TelegramRecord &r, const SummaryOptions &opti
     any.family = options.family;
     any.direction = r.direction;
     any.dictionary = options.dictionary;
+    any.dsp408 = options.dsp408;
+    any.registerBytes = options.registerBytes;
     const auto described =
         vt::dev::inspect::describeLogged(*link, vt::link::byteSpan(r.bytes), any);
     if (!described)

@@ -6,6 +6,8 @@
 #include "core/direction.h"
 #include "core/link_protocol.h"
 #include "core/local_text.h"
+#include "dsp408/gateway.h"
+#include "dsp408/options.h"
 #include "hcs/types.h"
 
 #include <QByteArray>
@@ -72,6 +74,10 @@ struct SummaryOptions
     vt::dev::Language language = vt::dev::Language::English;
     vt::dev::hcs::Family family = vt::dev::hcs::Family::Dma; // Modbus / gateway exception texts
     const vt::dev::Dictionary *dictionary = nullptr;         // not owned; nullptr = raw IDs
+    // The ED1's image layout and gateway register byte order as the link is configured.
+    vt::dev::dsp408::Options dsp408;
+    vt::dev::dsp408::RegisterByteOrder registerBytes =
+        vt::dev::dsp408::RegisterByteOrder::FirstByteHigh;
 };
 
 class TelegramLog : public QObject

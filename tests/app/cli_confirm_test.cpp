@@ -45,7 +45,9 @@ protected:
         return path;
     }
 
-    const QStringList m_sim{"--sim", "dma-pn-v51"};
+    // At the factory defaults (E17 = 0): the commissioned simulator already has E17 = 2, so
+    // setting it would be "unchanged" and ask nothing.
+    const QStringList m_sim{"--sim", "dma-pn-v51", "--factory"};
     QTemporaryDir m_dir;
 };
 

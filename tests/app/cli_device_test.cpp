@@ -5,6 +5,7 @@
 #include "app/cli/device_output.h"
 #include "app/cli/exit_codes.h"
 #include "cli_device_fixture.h"
+#include "dict/dictionary_loader.h"
 #include "sim_process.h"
 
 #include <QCoreApplication>
@@ -105,6 +106,34 @@ TEST_F(CliDevice, SetThenGetShowsTheValueInDisplayUnits)
         (nlohmann::json{{"name", "C1.07"}, {"raw", 1000}, {"display", "1.000 V"}, {"unit", "V"}}));
     EXPECT_EQ(values[1]["name"], "E00");
     EXPECT_EQ(values[1]["raw"], 3);
+}
+
+// `--sim` starts a commissioned machine (docs/SIMULATOR.md "Commissioned preset": bus set values
+// only, a 0 … 10 V position sensor, KP1 2.00); `--factory` the dictionary defaults.
+TEST_F(CliDevice, SimStartsCommissionedUnlessFactory)
+{
+    const CliRun commissioned =
+        cli({"--json", "get", "--sim", "dma-pn-v51", "E17", "C1.09", "C1.13"});
+    ASSERT_EQ(commissioned.code, kExitOk) << what(commissioned);
+    const auto c = commissioned.json()["values"];
+    EXPECT_EQ(c[0]["raw"], 2);
+    EXPECT_EQ(c[1]["raw"], 4);
+    EXPECT_EQ(c[2]["raw"], 200);
+
+    const CliRun factory =
+        cli({"--json", "get", "--sim", "dma-pn-v51", "--factory", "E17", "C1.09", "C1.13"});
+    ASSERT_EQ(factory.code, kExitOk) << what(factory);
+    const auto f = factory.json()["values"];
+    const dev::Dictionary &dict = *dev::builtinDictionaries()->find("dma-pn-v51");
+    for (std::size_t i = 0; i < 3; ++i) {
+        const dev::ParamMeta *row = dict.find(f[i]["name"].get<std::string>());
+        ASSERT_TRUE(row && row->defaultValue);
+        EXPECT_EQ(f[i]["raw"], *row->defaultValue) << row->name;
+    }
+
+    const CliRun alone = cli({"get", "--tcp", "127.0.0.1:1", "--factory", "E17"});
+    EXPECT_EQ(alone.code, kExitUsage) << what(alone);
+    EXPECT_NE(alone.err.find("--factory goes with --sim"), std::string::npos) << alone.err;
 }
 
 TEST_F(CliDevice, SetJsonRecordsEveryParameterAndSkipsUnchangedValues)
@@ -277,6 +306,7 @@ TEST_F(CliDevice, ConnectionUsageErrors)
                   0u)
             << help.out;
         EXPECT_TRUE(help.says("--sim FAMILY[:MODULES]")) << help.out;
+        EXPECT_TRUE(help.says("[--factory]")) << help.out;
     }
     const CliRun refused = cli({"info", "--tcp", "127.0.0.1:1"});
     EXPECT_EQ(refused.code, kExitConnection) << what(refused);
@@ -341,14 +371,42 @@ TEST_F(CliDevice, InfoShowsTheSd7Texts)
     EXPECT_TRUE(set.says("hart_Tag       \"WAGSD733\" -> \"PUMP 7\"  verified\n")) << set.out;
     EXPECT_TRUE(set.says("hart_Message   \"\" -> \"CHECKED\"  verified\n")) << set.out;
 
+    // The next command finds what the set left (the simulator is a bench device).
     const CliRun json = cli({"--json", "info", "--sim", "wandfluh-sd7"});
     ASSERT_EQ(json.code, kExitOk) << what(json);
     const auto doc = json.json();
     const auto &texts = doc["modules"][0]["texts"];
-    EXPECT_EQ(texts["tag"], "WAGSD733");
+    EXPECT_EQ(texts["tag"], "PUMP 7");
+    EXPECT_EQ(texts["message"], "CHECKED");
     EXPECT_EQ(texts["descriptor"], "WAG ELECTRONIC");
     EXPECT_EQ(texts["date"], "2024-03-15");
     EXPECT_EQ(texts["long_tag"], "Wandfluh AG - SD733");
+}
+
+// The built-in simulator is a bench device for every family: what one command set, the next
+// command's connection to the same simulator reads — the SD7's IND/PNU rows and its HART texts
+// (HART-7 manual §5.1.15, §5.2) and the ED1/SD1's rows, as for the HCS modules above.
+TEST_F(CliDevice, TheWandfluhSimulatorsKeepWhatASetWroteForTheNextCommand)
+{
+    const CliRun set =
+        cli({"set", "--sim", "wandfluh-sd7", "--yes", "dcol_RampAUp=250", "hart_Tag=PUMP 7"});
+    ASSERT_EQ(set.code, kExitOk) << what(set);
+    const CliRun get = cli({"get", "--sim", "wandfluh-sd7", "dcol_RampAUp", "hart_Tag"});
+    ASSERT_EQ(get.code, kExitOk) << what(get);
+    EXPECT_TRUE(get.says("dcol_RampAUp   250 ms\n")) << get.out;
+    EXPECT_TRUE(get.says("hart_Tag       \"PUMP 7\"\n")) << get.out;
+
+    const CliRun ed1 = cli({"set", "--sim", "wandfluh-ed1", "--yes", "dpc_PropFact1=25"});
+    ASSERT_EQ(ed1.code, kExitOk) << what(ed1);
+    const CliRun back = cli({"get", "--sim", "wandfluh-ed1", "dpc_PropFact1"});
+    ASSERT_EQ(back.code, kExitOk) << what(back);
+    EXPECT_TRUE(back.says("dpc_PropFact1  25\n")) << back.out;
+
+    // Another test's simulator starts fresh.
+    cli::forgetSimulators();
+    const CliRun fresh = cli({"get", "--sim", "wandfluh-sd7", "dcol_RampAUp"});
+    ASSERT_EQ(fresh.code, kExitOk) << what(fresh);
+    EXPECT_TRUE(fresh.says("dcol_RampAUp   0 ms\n")) << fresh.out;
 }
 
 } // namespace

@@ -44,7 +44,8 @@ struct DeviceImageCli : ::testing::Test
     {
         ASSERT_TRUE(language.setLanguage("en"));
         sim = std::make_unique<simtest::Sim>(
-            QStringList{"--device", "dma-pn-v51", "--tcp", "127.0.0.1:0"});
+            // --factory: E17 = 0, so "Set E17 = 2" is a change the disconnect puts back.
+            QStringList{"--device", "dma-pn-v51", "--factory", "--tcp", "127.0.0.1:0"});
         where = sim->listening();
         ASSERT_TRUE(where.startsWith("127.0.0.1:")) << sim->stderrText().toStdString();
         window = std::make_unique<app::MainWindow>(settings, language);

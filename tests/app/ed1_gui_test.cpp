@@ -16,6 +16,8 @@
 #include "sim_rig.h"
 #include "widgets/editor/node_view.h"
 #include "widgets/editor/parameter_editor.h"
+#include "widgets/monitor/monitor_view.h"
+#include "widgets/monitor/step_control.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -121,6 +123,72 @@ TEST_P(Ed1Gui, TheNodeViewShowsTheStateAndAChosenStateIsAskedWrittenAndJournalle
     // Back to INIT, as the put-back on disconnect would offer.
     emit window->nodeView()->controlWordRequested(0, dev::dsp408::kControlInit);
     ASSERT_TRUE(waitUntil([&] { return device().state() == dev::dsp408::State::Init; }));
+}
+
+// The monitor's step drives dpc_SetpointVal through the PZD, but only DEVICE_MODE_ACTIVE makes
+// the set value act (ED1/SD1 manual §4.2.2): in INIT the step is refused with the manual's words
+// and a confirmed switch is offered; a typed 10 mm is said to be sent as the 9.961 mm the raw
+// grid holds (0.09765625 mm per raw step).
+TEST_P(Ed1Gui, TheStepChecksTheDeviceStateAndSaysTheRoundedValue)
+{
+    ASSERT_TRUE(waitUntil([&] { return device().state() == dev::dsp408::State::Init; }));
+    ui::StepControl &step = *window->monitor()->stepControl();
+    ASSERT_TRUE(step.selectTarget(doc().module(0).address, QStringLiteral("dpc_SetpointVal")));
+    step.setStepValue(10.0);
+    answer.answer = true;
+    step.writeStep();
+    ASSERT_EQ(answer.asked.size(), 1);
+    EXPECT_TRUE(answer.asked[0][0].contains(QStringLiteral("9.961 mm")))
+        << answer.asked[0][0].toStdString();
+    EXPECT_TRUE(answer.asked[0][0].contains(
+        QStringLiteral("(typed 10.000 mm, rounded to the device resolution)")))
+        << answer.asked[0][0].toStdString();
+    EXPECT_TRUE(
+        step.statusText().contains(QStringLiteral("10.000 mm → 9.961 mm (device resolution)")))
+        << step.statusText().toStdString();
+
+    // Refused in INIT: nothing reaches the set value.
+    ASSERT_TRUE(waitUntil([&] { return step.activationOffered(); }))
+        << step.statusText().toStdString();
+    EXPECT_TRUE(step.statusText().contains(QStringLiteral("The device is in state INIT")))
+        << step.statusText().toStdString();
+    EXPECT_TRUE(step.statusText().contains(QStringLiteral("Switch it to DEVICE_MODE_ACTIVE")))
+        << step.statusText().toStdString();
+    const dev::ParamMeta *setpoint = doc().module(0).dictionary->find("dpc_SetpointVal");
+    EXPECT_EQ(device().params().value(*setpoint), 0);
+
+    // The offered switch is asked for as the control word, then written.
+    QSignalSpy written(&step, &ui::StepControl::written);
+    step.enableBusSetValue();
+    ASSERT_EQ(answer.asked.size(), 2);
+    EXPECT_TRUE(answer.asked[1][0].contains(QStringLiteral("db_ControlWord")))
+        << answer.asked[1][0].toStdString();
+    ASSERT_TRUE(written.wait(kWaitMs)) << step.statusText().toStdString();
+    ASSERT_TRUE(
+        waitUntil([&] { return device().state() == dev::dsp408::State::DeviceModeActive; }));
+
+    // Now the step goes through, read back, and still says it was rounded.
+    written.clear();
+    step.writeStep();
+    ASSERT_TRUE(written.wait(kWaitMs)) << step.statusText().toStdString();
+    const auto items = written.last().at(1).value<std::vector<model::WriteItem>>();
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items.front().row, setpoint);
+    EXPECT_EQ(items.front().status, model::WriteStatus::Verified)
+        << step.statusText().toStdString();
+    EXPECT_EQ(device().params().value(*setpoint), 102); // 9.961 mm / 0.09765625 mm
+    EXPECT_TRUE(step.statusText().contains(QStringLiteral("→ 9.961 mm (device resolution)")))
+        << step.statusText().toStdString();
+
+    // The shown value of a raw step is sent as typed: nothing is said to be rounded.
+    step.setStepValue(9.961);
+    written.clear();
+    step.writeStep();
+    ASSERT_TRUE(written.wait(kWaitMs)) << step.statusText().toStdString();
+    EXPECT_FALSE(answer.asked.back()[0].contains(QStringLiteral("typed")))
+        << answer.asked.back()[0].toStdString();
+    EXPECT_FALSE(step.statusText().contains(QStringLiteral("device resolution")))
+        << step.statusText().toStdString();
 }
 
 INSTANTIATE_TEST_SUITE_P(Mappings, Ed1Gui,

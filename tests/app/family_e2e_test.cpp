@@ -12,15 +12,20 @@
 #include "app/gui/workspace.h"
 #include "model/monitor/sample_store.h"
 #include "model/monitor/set_value_step.h"
+#include "model/session/connection.h"
+#include "model/session/sim_endpoint.h"
+#include "sim/hart_device.h"
 #include "test_wait.h"
 #include "widgets/curve/lcurve_editor.h"
 #include "widgets/editor/node_view.h"
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/monitor/step_control.h"
 
+#include <QAction>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTreeWidgetItem>
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -104,10 +109,11 @@ TEST_P(FamilyGui, MonitorsTheFamilysDefaultChannelsAndSeesTheSetValueStep)
     ASSERT_TRUE(step.selectTarget(module.address, QString::fromStdString(setValues.front()->name)));
     step.setStepValue(GetParam().stepDisplay);
     QSignalSpy written(&step, &ui::StepControl::written);
-    // Each activation rule the module refuses for (E17 = 2; SD7 db_Local = 0, db_DeviceMode = 1)
-    // is written through the offered button, then the step again.
+    // Each activation rule the module refuses for (E17 = 2; SD7 db_Local = 0, db_DeviceMode = 1;
+    // ED1/SD1 and SD7 the state DEVICE_MODE_ACTIVE) is written through the offered button, then
+    // the step again.
     bool stepped = false;
-    for (int round = 0; round < 4 && !stepped; ++round) {
+    for (int round = 0; round < 6 && !stepped; ++round) {
         written.clear();
         step.writeStep();
         ASSERT_TRUE(test::waitUntil([&] { return !written.isEmpty() || step.activationOffered(); },
@@ -122,12 +128,29 @@ TEST_P(FamilyGui, MonitorsTheFamilysDefaultChannelsAndSeesTheSetValueStep)
         const auto activation = written.last().at(1).value<std::vector<model::WriteItem>>();
         ASSERT_TRUE(!activation.empty() && model::isOnDevice(activation.front().status))
             << step.statusText().toStdString();
+        // The device takes a control word in its own time (a cycle; not before its self test
+        // ends, ED1/SD1 and HART-7 manual §4.2.2 TR_1): the status word reports the state.
+        if (activation.front().row->name == "db_ControlWord") {
+            const dev::ParamMeta *status = module.dictionary->find("db_StatusWord");
+            ASSERT_TRUE(status);
+            ASSERT_TRUE(test::waitUntil(
+                [&] {
+                    const auto word =
+                        window->workspace().deviceImage().value(module.address, status);
+                    return word && dev::dsp408::stateOfStatusWord(
+                                       static_cast<std::uint16_t>(dev::rawNumber(*word))) ==
+                                       dev::dsp408::State::DeviceModeActive;
+                },
+                kWaitMs));
+        }
     }
     ASSERT_TRUE(stepped) << step.statusText().toStdString();
     ASSERT_FALSE(written.isEmpty());
     const auto items = written.last().at(1).value<std::vector<model::WriteItem>>();
     ASSERT_FALSE(items.empty());
-    EXPECT_TRUE(model::isOnDevice(items.front().status)) << step.statusText().toStdString();
+    // Written and read back (the set value is readable in every family).
+    EXPECT_EQ(items.front().status, model::WriteStatus::Verified)
+        << step.statusText().toStdString();
 
     monitor.setRate(50);
     monitor.start();
@@ -158,7 +181,8 @@ INSTANTIATE_TEST_SUITE_P(
         FamilyCase{"dma-pn-v51", 4, 1.0, true}, FamilyCase{"dma-pb-v15", 1, 1.0, false},
         FamilyCase{"dma-pb-v22", 2, 1.0, false}, FamilyCase{"dma-pb-v32", 3, 1.0, false},
         FamilyCase{"dma-pb-v32", 4, 1.0, false}, FamilyCase{"dma-pb-v32", 6, 1.0, false},
-        FamilyCase{"dma-pb-v32", 8, 1.0, false}, FamilyCase{"wandfluh-sd7", 0, 2000, false}),
+        FamilyCase{"dma-pb-v32", 8, 1.0, false}, FamilyCase{"wandfluh-sd7", 0, 2000, false},
+        FamilyCase{"wandfluh-ed1", 0, 20.0, false}),
     [](const ::testing::TestParamInfo<FamilyCase> &param) {
         std::string name =
             std::string(param.param.family) + "_mode" + std::to_string(param.param.mode);
@@ -193,6 +217,114 @@ TEST(FamilyGuiSd7, TheNodeViewShowsTheDeviceTexts)
     EXPECT_TRUE(lines.contains("Long tag: Wandfluh AG - SD733")) << lines.join(" | ").toStdString();
     EXPECT_TRUE(lines.contains("Descriptor: WAG ELECTRONIC")) << lines.join(" | ").toStdString();
     EXPECT_TRUE(lines.contains("Date: 2024-03-15")) << lines.join(" | ").toStdString();
+}
+
+struct NodeWindow
+{
+    QTemporaryDir dir;
+    app::AppSettings settings{dir.filePath("settings.ini")};
+    app::Language language;
+    std::unique_ptr<app::MainWindow> window;
+
+    bool open(const char *lang, const char *family)
+    {
+        if (!language.setLanguage(lang))
+            return false;
+        window = std::make_unique<app::MainWindow>(settings, language);
+        window->show();
+        model::ConnectionSpec spec;
+        spec.kind = model::ConnectionKind::Sim;
+        spec.sim.family = family;
+        QSignalSpy read(&window->device(), &app::DeviceController::readFinished);
+        window->device().connectTo(spec);
+        return read.wait(kWaitMs) && read.at(0).at(0).toBool();
+    }
+    QStringList lines() const
+    {
+        QStringList out;
+        for (QTreeWidgetItemIterator it(window->nodeView()); *it; ++it)
+            out.append((*it)->text(0) + ": " + (*it)->text(1));
+        return out;
+    }
+    QTreeWidgetItem *module() const { return window->nodeView()->topLevelItem(0)->child(0); }
+};
+
+// The SD7's state machine (HART-7 manual §4.2.2) and where it takes its control word and set
+// value from ("Device local" §5.2.5, "Device mode" §5.2.3) in the node view, each changed there
+// through the confirmation, written, read back and journalled for the put-back.
+TEST(FamilyGuiSd7, TheNodeViewShowsAndDrivesTheStateDeviceLocalAndDeviceMode)
+{
+    NodeWindow w;
+    ASSERT_TRUE(w.open("en", "wandfluh-sd7"));
+    dev::sim::HartDevice &sd7 = *w.window->workspace().connection()->simEndpoint()->hart();
+    // Delivery state: local mode (§4.3 "active after switch on"), set value from the bus.
+    EXPECT_TRUE(w.lines().contains("Device local: control word local"))
+        << w.lines().join(" | ").toStdString();
+    EXPECT_TRUE(w.lines().contains("Device mode: Command value from fieldbus"))
+        << w.lines().join(" | ").toStdString();
+    ASSERT_TRUE(test::waitUntil([&] { return w.module()->text(4).startsWith("INIT: "); }))
+        << w.module()->text(4).toStdString();
+
+    // Refused: nothing is written.
+    test::ActuatorAnswer answer(false);
+    emit w.window->nodeView()->valueRequested(0, "db_Local", 0);
+    ASSERT_EQ(answer.asked.size(), 1);
+    EXPECT_TRUE(answer.asked[0][0].contains("db_Local")) << answer.asked[0][0].toStdString();
+    EXPECT_EQ(sd7.params().value("db_Local"), 1);
+
+    // Agreed: bus mode, read back, shown.
+    answer.answer = true;
+    emit w.window->nodeView()->valueRequested(0, "db_Local", 0);
+    ASSERT_TRUE(test::waitUntil([&] {
+        return w.lines().contains("Device local: control word via fieldbus");
+    })) << w.lines().join(" | ").toStdString();
+    EXPECT_EQ(sd7.params().value("db_Local"), 0);
+
+    // D + H + M: DEVICE_MODE_ACTIVE, reported back by the status word in the state column.
+    emit w.window->nodeView()->controlWordRequested(0, dev::dsp408::kControlActive);
+    ASSERT_EQ(answer.asked.size(), 3);
+    EXPECT_TRUE(answer.asked[2][0].contains("db_ControlWord")) << answer.asked[2][0].toStdString();
+    ASSERT_TRUE(test::waitUntil([&] {
+        return w.module()->text(4).startsWith("DEVICE_MODE_ACTIVE: ");
+    })) << w.module()->text(4).toStdString();
+    EXPECT_EQ(sd7.drive().state(), dev::dsp408::State::DeviceModeActive);
+
+    // Both writes are journalled for the put-back.
+    const auto &changes = w.window->workspace().actuatorLedger().changes();
+    ASSERT_TRUE(test::waitUntil([&] { return changes.size() == 2u; }));
+    std::vector<std::string> rows;
+    for (const auto &change : changes)
+        rows.push_back(change.row->name);
+    EXPECT_NE(std::find(rows.begin(), rows.end(), "db_Local"), rows.end());
+    EXPECT_NE(std::find(rows.begin(), rows.end(), "db_ControlWord"), rows.end());
+    answer.answer = false; // nothing is put back while the window closes
+    w.window.reset();
+}
+
+// The device's identity and the ED1's capability version in the language of the UI, and again
+// after a run-time switch.
+TEST(FamilyGuiLanguage, IdentityAndVersionTextsFollowTheLanguage)
+{
+    NodeWindow sd7;
+    ASSERT_TRUE(sd7.open("de", "wandfluh-sd7"));
+    EXPECT_TRUE(sd7.module()->toolTip(1).contains(QStringLiteral("Geräte-ID")))
+        << sd7.module()->toolTip(1).toStdString();
+    EXPECT_TRUE(sd7.module()->text(2).startsWith(QStringLiteral("Gerätetyp ")))
+        << sd7.module()->text(2).toStdString();
+    sd7.window->findChild<QAction *>("actionEnglish")->trigger();
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(sd7.module()->toolTip(1).contains(QStringLiteral("device id")))
+        << sd7.module()->toolTip(1).toStdString();
+    EXPECT_TRUE(sd7.module()->text(2).startsWith(QStringLiteral("device type ")))
+        << sd7.module()->text(2).toStdString();
+    sd7.window.reset();
+
+    NodeWindow ed1;
+    ASSERT_TRUE(ed1.open("de", "wandfluh-ed1"));
+    EXPECT_EQ(ed1.module()->text(2), QStringLiteral("Fähigkeiten 0x00130000"));
+    ed1.window->findChild<QAction *>("actionEnglish")->trigger();
+    QCoreApplication::processEvents();
+    EXPECT_EQ(ed1.module()->text(2), QStringLiteral("capability 0x00130000"));
 }
 
 } // namespace

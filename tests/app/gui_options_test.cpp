@@ -47,6 +47,27 @@ TEST(GuiOptions, SimulateAndOpenAreTakenAndCheckedForNonsense)
     }
 }
 
+// --factory: the built-in simulator from the dictionary defaults instead of the commissioned
+// machine; it goes with --simulate (or with --connect --sim, the CLI's connection options).
+TEST(GuiOptions, FactoryGoesWithTheSimulator)
+{
+    auto commissioned = parseGuiOptions({"valvetune", "--simulate", "dma-pn-v51:3"});
+    EXPECT_FALSE(commissioned.factory);
+    auto factory = parseGuiOptions({"valvetune", "--simulate", "dma-pn-v51:3", "--factory"});
+    ASSERT_FALSE(factory.exitNow) << factory.error.toStdString();
+    EXPECT_TRUE(factory.factory);
+    auto alone = parseGuiOptions({"valvetune", "--factory"});
+    EXPECT_EQ(alone.exitCode, 2);
+    EXPECT_TRUE(alone.error.contains("--factory goes with --simulate"))
+        << alone.error.toStdString();
+    auto connect = parseGuiOptions({"valvetune", "--connect", "--sim", "opat", "--factory"});
+    ASSERT_TRUE(connect.connection.has_value()) << connect.error.toStdString();
+    EXPECT_TRUE(connect.connection->sim.factory);
+    auto tcp = parseGuiOptions({"valvetune", "--connect", "--tcp", "h:1", "--factory"});
+    EXPECT_EQ(tcp.exitCode, 2);
+    EXPECT_TRUE(tcp.error.contains("--factory goes with --sim")) << tcp.error.toStdString();
+}
+
 // The desktop entry starts "valvetune %f": a file manager passes the file as the one argument.
 TEST(GuiOptions, AFileArgumentIsOpenedAsOpenDoes)
 {

@@ -285,6 +285,7 @@ TEST(NoEnglishLeft, EveryWindowIsGermanAfterARunTimeSwitch)
     spec.kind = model::ConnectionKind::Sim;
     spec.sim.family = "dma-pn-v51";
     spec.sim.modules = 3;
+    spec.sim.factory = true; // E17 = 0: the step asks for E17 first
     w.device().connectTo(spec);
     ASSERT_TRUE(read.wait(kWaitMs));
 
@@ -392,6 +393,7 @@ TEST(NoEnglishLeft, TheE17HintQuotesTheManualInTheUiLanguage)
     model::ConnectionSpec spec;
     spec.kind = model::ConnectionKind::Sim;
     spec.sim.family = "dma-pn-v51";
+    spec.sim.factory = true; // E17 = 0: the hint is shown
     w.device().connectTo(spec);
     ASSERT_TRUE(read.wait(kWaitMs));
     ui::StepControl *step = w.monitor()->stepControl();

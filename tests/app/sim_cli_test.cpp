@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <map>
 #include <poll.h>
 #include <termios.h>
 #include <unistd.h>
@@ -21,12 +22,13 @@
 using namespace vt::simtest;
 
 // Modbus RTU over the pty: IDs 0..3 of an OPAT master (point-to-point, unit 1) read their
-// defaults (Vers = 3400). -P none: a pty takes any parity, the simulator does not insist on 8E1.
+// defaults (Vers = 3400; --factory: the display values of a commissioned loop would move).
+// -P none: a pty takes any parity, the simulator does not insist on 8E1.
 TEST(SimCli, MbpollReadsOpatOverPty)
 {
     if (mbpoll().isEmpty())
         GTEST_SKIP() << "mbpoll is not installed (scripts/deps test installs it)";
-    Sim sim({"--device", "opat", "--modules", "1", "--pty"});
+    Sim sim({"--device", "opat", "--modules", "1", "--factory", "--pty"});
     const QString pty = sim.listening();
     ASSERT_TRUE(pty.startsWith("/dev/")) << sim.stderrText().toStdString();
     const ProcessRun r = run(mbpoll(), {"-m", "rtu", "-b", "19200", "-P", "none", "-a", "1", "-r",
@@ -74,6 +76,41 @@ TEST(SimCli, MbpollOverTcpReadsAndGetsIllegalDataValue)
     EXPECT_TRUE(log.contains(QRegularExpression(R"(\] <- 00 01 00 00 00 06 01 03 00 30 00 01)")))
         << log.toStdString();
     EXPECT_TRUE(log.contains(QRegularExpression(R"(\] -> .* 01 86 03)"))) << log.toStdString();
+}
+
+// The modules start commissioned (docs/SIMULATOR.md "Commissioned preset"): E17 = 2 and the
+// position sensor C1.09 = 4 (0 … 10 V); --factory starts them at the dictionary defaults.
+TEST(SimCli, CommissionedUnlessFactory)
+{
+    if (mbpoll().isEmpty())
+        GTEST_SKIP() << "mbpoll is not installed (scripts/deps test installs it)";
+    const int e17 = paramId("dma-pn-v51", "E17");
+    const int c109 = paramId("dma-pn-v51", "C1.09");
+    ASSERT_GT(e17, 0);
+    ASSERT_GT(c109, 0);
+    const auto readBoth = [&](const QStringList &extra) {
+        Sim sim(QStringList{"--device", "dma-pn-v51", "--tcp", "127.0.0.1:0"} + extra);
+        const QString where = sim.listening();
+        EXPECT_TRUE(where.startsWith("127.0.0.1:")) << sim.stderrText().toStdString();
+        std::map<int, int> out;
+        for (int id : {e17, c109}) {
+            const ProcessRun r =
+                run(mbpoll(), {"-m", "tcp", "-p", where.section(':', -1), "-a", "1", "-r",
+                               QString::number(id), "-c", "1", "-1", "-0", "-o", "2", "127.0.0.1"});
+            EXPECT_EQ(r.code, 0) << r.out.toStdString() << r.err.toStdString();
+            const auto values = registers(r.out);
+            if (values.count(id))
+                out[id] = values.at(id);
+        }
+        return out;
+    };
+    const auto commissioned = readBoth({});
+    EXPECT_EQ(commissioned.at(e17), 2);  // only digital set values
+    EXPECT_EQ(commissioned.at(c109), 4); // 0 … 10 V position sensor
+    const auto factory = readBoth({"--factory"});
+    EXPECT_EQ(factory.at(e17), freshWord("dma-pn-v51", 1, 0, e17));
+    EXPECT_EQ(factory.at(c109), freshWord("dma-pn-v51", 1, 0, c109));
+    EXPECT_EQ(factory.at(e17), 0);
 }
 
 // Modbus TCP writes: C1.07 (dead band A, 0..9999) of the DMA-2 with E22 = 2 takes a new value

@@ -66,6 +66,7 @@ struct TrustE2E : ::testing::Test
         spec.kind = model::ConnectionKind::Sim;
         spec.sim.family = "dma-pn-v51";
         spec.sim.modules = modules;
+        spec.sim.factory = true;          // E17 = 0: the step asks for "Set E17 = 2" first
         window->device().connectTo(spec); // reads all once connected
         ASSERT_TRUE(read.wait(kWaitMs));
         ASSERT_TRUE(read.at(0).at(0).toBool());

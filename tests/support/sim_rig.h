@@ -38,6 +38,9 @@ struct SimSetup
     std::string protocol;    // a dev::LinkProtocol key; "" = the simulator's default for the family
     std::optional<link::FaultSpec> fault;         // the link behind a FaultLink
     std::optional<model::SessionOptions> options; // instead of those the connection picks
+    // The bare dictionary defaults instead of the commissioned machine (`--factory`), for the
+    // tests about a module's defaults (E17 = 0, C1.09 = 0 …).
+    bool factory = false;
 };
 
 struct SimRig
@@ -114,6 +117,7 @@ inline std::unique_ptr<SimRig> openSim(const SimSetup &setup)
     spec.kind = model::ConnectionKind::Sim;
     spec.sim.family = setup.family;
     spec.sim.modules = setup.modules;
+    spec.sim.factory = setup.factory;
     if (!setup.protocol.empty()) {
         spec.sim.protocol = dev::fromKey<dev::LinkProtocol>(setup.protocol);
         if (!spec.sim.protocol) {

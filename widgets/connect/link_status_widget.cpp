@@ -125,7 +125,7 @@ QString LinkStatusWidget::countersText() const
 QString LinkStatusWidget::moduleText(const model::ModuleInfo &module) const
 {
     const QLocale locale;
-    QString what = module.identityText;
+    QString what = model::localText(module.identityText);
     if (what.isEmpty()) {
         what = module.dictionary ? model::localText(module.dictionary->title)
                                  : QString::fromStdString(module.identification.family);

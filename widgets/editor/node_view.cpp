@@ -1,5 +1,7 @@
 #include "node_view.h"
 
+#include "dict/cooking.h"
+#include "dict/identify.h"
 #include "dsp408/state_machine.h"
 #include "model/params/parameter_document.h"
 #include "model/params/parameter_tree_model.h"
@@ -12,6 +14,23 @@
 #include <algorithm>
 
 namespace vt::ui {
+namespace {
+
+// Where the device takes its control word and its set value from: "Device local" and "Device
+// mode" (ED1/SD1 manual §4.2.1, §4.3.1; HART-7 manual §4.2.1, §5.2.3, §5.2.5). Shown and offered
+// for the families with the DSP-408 state machine.
+std::vector<const dev::ParamMeta *> modeRows(const dev::Dictionary &dictionary)
+{
+    std::vector<const dev::ParamMeta *> rows;
+    if (!dictionary.stateControlWord())
+        return rows;
+    for (const char *name : {"db_Local", "db_DeviceMode"})
+        if (const dev::ParamMeta *row = dictionary.find(name); row && row->readable())
+            rows.push_back(row);
+    return rows;
+}
+
+} // namespace
 
 NodeView::NodeView(model::ParameterDocument &document, QWidget *parent)
     : QTreeWidget(parent), m_document(document)
@@ -25,20 +44,23 @@ NodeView::NodeView(model::ParameterDocument &document, QWidget *parent)
     connect(&m_document, &model::ParameterDocument::moduleValuesChanged, this, &NodeView::rebuild);
     connect(&m_document, &model::ParameterDocument::languageChanged, this, &NodeView::rebuild);
     // Live values: only the state word column changes.
-    connect(
-        &m_document, &model::ParameterDocument::valueChanged, this,
-        [this](int module, const dev::ParamMeta *row) {
-            if (row && module < m_document.moduleCount() && m_document.module(module).dictionary) {
-                const auto texts = model::identityTextRows(*m_document.module(module).dictionary);
-                if (std::find(texts.begin(), texts.end(), row) != texts.end()) {
-                    rebuild();
-                    return;
+    connect(&m_document, &model::ParameterDocument::valueChanged, this,
+            [this](int module, const dev::ParamMeta *row) {
+                if (row && module < m_document.moduleCount() &&
+                    m_document.module(module).dictionary) {
+                    const dev::Dictionary &dictionary = *m_document.module(module).dictionary;
+                    const auto texts = model::identityTextRows(dictionary);
+                    const auto modes = modeRows(dictionary);
+                    if (std::find(texts.begin(), texts.end(), row) != texts.end() ||
+                        std::find(modes.begin(), modes.end(), row) != modes.end()) {
+                        rebuild();
+                        return;
+                    }
                 }
-            }
-            QTreeWidgetItem *node = topLevelItem(0);
-            if (node && module < node->childCount())
-                node->child(module)->setText(4, model::stateWordText(m_document, module));
-        });
+                QTreeWidgetItem *node = topLevelItem(0);
+                if (node && module < node->childCount())
+                    node->child(module)->setText(4, model::stateWordText(m_document, module));
+            });
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         const QVariant module = item->data(0, Qt::UserRole);
         if (module.isValid())
@@ -71,7 +93,8 @@ void NodeView::rebuild()
         item->setText(0, tr("Module %1").arg(m.address));
         item->setText(1,
                       m.label.isEmpty() ? QString::fromStdString(m.dictionary->family) : m.label);
-        item->setText(2, QString::fromStdString(m.version));
+        item->setText(
+            2, QString::fromStdString(dev::versionText(m.version).in(m_document.language())));
         item->setText(3, QString::fromStdString(m.mode));
         item->setText(4, model::stateWordText(m_document, i));
         item->setText(5, m.online ? tr("online") : tr("offline"));
@@ -91,6 +114,16 @@ void NodeView::rebuild()
                 line->setText(1, text.known ? text.value : tr("(not read)"));
                 line->setFirstColumnSpanned(false);
             }
+            for (const dev::ParamMeta *row : modeRows(*m.dictionary)) {
+                const auto value = m_document.value(i, row, model::Layer::Device);
+                auto *line = new QTreeWidgetItem(item);
+                line->setData(0, Qt::UserRole, i);
+                line->setText(0, QString::fromStdString(row->label.in(m_document.language())));
+                line->setText(1, value ? QString::fromStdString(dev::formatValue(
+                                             *row, dev::rawNumber(*value), m_document.language()))
+                                       : tr("(not read)"));
+                line->setToolTip(0, QString::fromStdString(row->name));
+            }
         }
     }
     expandAll();
@@ -104,13 +137,10 @@ void NodeView::contextMenuEvent(QContextMenuEvent *event)
         return;
     const int module = index.toInt();
     const model::ParamModule &m = m_document.module(module);
-    const dev::ParamMeta *control =
-        m.dictionary && m.dictionary->protocol == dev::DeviceProtocol::Dsp408
-            ? m.dictionary->find("db_ControlWord")
-            : nullptr;
+    const dev::ParamMeta *control = m.dictionary ? m.dictionary->stateControlWord() : nullptr;
     if (!m.online || !control)
         return;
-    // ED1/SD1 manual §4.2.2: the states a master commands with D, H, M (§4.8.2).
+    // ED1/SD1 manual and HART-7 manual §4.2.2: the states a master commands with D, H, M.
     QMenu menu(this);
     menu.setObjectName(QStringLiteral("deviceStateMenu"));
     menu.setTitle(tr("Device state"));
@@ -131,7 +161,46 @@ void NodeView::contextMenuEvent(QContextMenuEvent *event)
     menu.addSeparator();
     QAction *reset = menu.addAction(tr("Reset fault"));
     connect(reset, &QAction::triggered, this, [this, module] { emit resetFaultRequested(module); });
+    addModeMenus(menu, module);
     menu.exec(event->globalPos());
+}
+
+void NodeView::addModeMenus(QMenu &menu, int module)
+{
+    const model::ParamModule &m = m_document.module(module);
+    const dev::Language lang = m_document.language();
+    // ED1/SD1 manual §4.2.2 (DISABLED: "the different device modes like Device Mode, operating
+    // mode and Device Local mode can be set"); HART-7 manual §4.2.1: "A transition to a new mode
+    // is only possible if the device is in state Init or Disable".
+    const dev::ParamMeta *status = m.dictionary->find("db_StatusWord");
+    const auto word =
+        status ? m_document.value(module, status, model::Layer::Device) : std::nullopt;
+    const auto state = word ? dev::dsp408::stateOfStatusWord(static_cast<std::uint16_t>(
+                                  static_cast<std::int64_t>(dev::rawNumber(*word))))
+                            : std::nullopt;
+    const bool changeable =
+        !state || *state == dev::dsp408::State::Init || *state == dev::dsp408::State::Disabled;
+    for (const dev::ParamMeta *row : modeRows(*m.dictionary)) {
+        if (!row->writable() || row->enums.empty())
+            continue;
+        menu.addSection(tr("%1 (%2)").arg(QString::fromStdString(row->label.in(lang)),
+                                          QString::fromStdString(row->name)));
+        const auto held = m_document.value(module, row, model::Layer::Device);
+        for (const dev::EnumLabel &option : row->enums) {
+            QAction *action = menu.addAction(QString::fromStdString(option.text.in(lang)));
+            action->setCheckable(true);
+            action->setChecked(held && dev::rawNumber(*held) == double(option.value));
+            action->setEnabled(changeable);
+            connect(action, &QAction::triggered, this,
+                    [this, module, name = QString::fromStdString(row->name),
+                     v = double(option.value)] { emit valueRequested(module, name, v); });
+        }
+    }
+    if (!changeable)
+        menu.addAction(tr("Device local and device mode change only in INIT or DISABLED; the "
+                          "device is in %1.")
+                           .arg(QString::fromLatin1(dev::dsp408::stateName(*state))))
+            ->setEnabled(false);
 }
 
 void NodeView::changeEvent(QEvent *event)

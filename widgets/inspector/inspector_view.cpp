@@ -206,7 +206,20 @@ vt::model::SummaryOptions InspectorView::summaryOptions() const
     o.language = model::textLanguage();
     o.dictionary = dictionaryFor(-1);
     o.family = familyFor(-1);
+    const vt::dev::inspect::ImageLayout layout = imageLayout();
+    o.dsp408 = layout.dsp408;
+    o.registerBytes = layout.registerBytes;
     return o;
+}
+
+vt::dev::inspect::ImageLayout InspectorView::imageLayout() const
+{
+    vt::dev::inspect::ImageLayout layout;
+    if (m_connection) {
+        layout.dsp408 = m_connection->spec().dsp408.layout;
+        layout.registerBytes = m_connection->spec().dsp408.gateway.byteOrder;
+    }
+    return layout;
 }
 
 void InspectorView::rebuildModuleFilter()
@@ -294,7 +307,8 @@ QStringList InspectorView::parametersOfCurrent() const
     const vt::dev::Dictionary *dict = dictionaryFor(r->module);
     if (!dict)
         return {};
-    return vt::model::parametersOfRecord(*m_log, r->seq, *dict, familyFor(r->module));
+    return vt::model::parametersOfRecord(*m_log, r->seq, *dict, familyFor(r->module),
+                                         imageLayout());
 }
 
 bool InspectorView::activateParameterOfCurrent()
@@ -316,8 +330,8 @@ void InspectorView::showFramesFor(int module, const QString &parameterName)
     const vt::dev::Dictionary *dict = dictionaryFor(module);
     if (!dict)
         return;
-    const QList<quint64> seqs =
-        vt::model::lastFramesFor(*m_log, module, parameterName, *dict, familyFor(module));
+    const QList<quint64> seqs = vt::model::lastFramesFor(*m_log, module, parameterName, *dict,
+                                                         familyFor(module), imageLayout());
     m_table->clearSelection();
     if (seqs.isEmpty())
         return;
@@ -367,6 +381,10 @@ void InspectorView::onCurrentRowChanged()
     o.family = familyFor(r->module);
     o.direction = r->direction;
     o.dictionary = dictionaryFor(r->module);
+    // The ED1's frames as the link lays them out (--register-bytes, --pzd-words, --ind-byte).
+    const vt::dev::inspect::ImageLayout layout = imageLayout();
+    o.dsp408 = layout.dsp408;
+    o.registerBytes = layout.registerBytes;
     // An answer to a block read names its words after the request's first ID.
     std::optional<std::uint16_t> firstId;
     if (r->direction == vt::dev::Direction::Response && m_log) {
@@ -374,7 +392,7 @@ void InspectorView::onCurrentRowChanged()
         const vt::model::TelegramRecord *q = request ? m_log->find(*request) : nullptr;
         if (q && q->protocol == r->protocol && r->linkProtocol()) {
             const auto carried = vt::dev::inspect::carriedBy(
-                *r->linkProtocol(), vt::link::byteSpan(q->bytes), q->direction, o.family);
+                *r->linkProtocol(), vt::link::byteSpan(q->bytes), q->direction, o.family, layout);
             if (!carried.ids.empty())
                 firstId = carried.ids.front();
         }

@@ -5,6 +5,7 @@
 // owned (the log must outlive the view or be replaced with setLog(nullptr) first).
 #pragma once
 
+#include "inspect/frame_parameters.h"
 #include "model/session/device_access.h"
 #include "model/telegrams/telegram_log.h"
 
@@ -87,6 +88,8 @@ private:
     void onContextMenu(const QPoint &pos);
     void saveInteractive(bool csv);
     vt::model::SummaryOptions summaryOptions() const;
+    // The connection's ED1 image layout (IND byte, PZD words, gateway register bytes).
+    vt::dev::inspect::ImageLayout imageLayout() const;
     const vt::dev::Dictionary *dictionaryFor(int module) const;
     vt::dev::hcs::Family familyFor(int module) const;
 

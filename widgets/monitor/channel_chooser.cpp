@@ -1,5 +1,8 @@
 #include "channel_chooser.h"
 
+#include "dict/identify.h"
+#include "model/text_language.h"
+
 #include <QDialogButtonBox>
 #include <QEvent>
 #include <QHeaderView>
@@ -118,8 +121,11 @@ void ChannelChooser::retranslate()
         QTreeWidgetItem *top = m_tree->topLevelItem(i);
         top->setText(0, tr("Module %1").arg(top->data(0, kModuleRole).toInt()));
         const QString family = top->data(1, kFamilyRole).toString();
-        const QString version = top->data(1, kVersionRole).toString();
-        top->setText(1, version.isEmpty() ? family : tr("%1, version %2").arg(family, version));
+        // The version as the family writes it ("V51.00", "capability 0x00130000"), in the language.
+        const std::string raw = top->data(1, kVersionRole).toString().toStdString();
+        const QString version =
+            QString::fromStdString(dev::versionText(raw).in(model::textLanguage()));
+        top->setText(1, raw.empty() ? family : QStringLiteral("%1, %2").arg(family, version));
     }
 }
 

@@ -13,6 +13,7 @@
 #include <QPointer>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 namespace vt::ui {
@@ -136,7 +137,7 @@ StepControl::activationTarget() const
             model::SetValueStep::activationRules(*module->dictionary, module->identification.mode);
         rule = rules.empty() ? nullptr : rules.front();
     }
-    return {rule ? model::SetValueStep::ruleRow(*module->dictionary, *rule) : nullptr, rule};
+    return {rule ? model::SetValueStep::ruleWriteRow(*module->dictionary, *rule) : nullptr, rule};
 }
 
 const dev::ParamMeta *StepControl::currentRow() const
@@ -168,13 +169,14 @@ void StepControl::moduleChosen()
         connect(m_step.get(), &model::SetValueStep::refused, this,
                 [this](const QString &reason, bool needsActivation) {
                     const dev::ParamMeta *row = currentRow();
-                    const auto target = activationTarget();
-                    const dev::ParamMeta *e17 = target.first;
-                    const dev::SetValueActivation *rule = target.second;
+                    const dev::SetValueActivation *rule = activationTarget().second;
+                    const dev::ParamMeta *read =
+                        rule ? model::SetValueStep::ruleRow(*currentModule()->dictionary, *rule)
+                             : nullptr;
                     const std::optional<double> activation = m_step->activation();
-                    if (needsActivation && row && e17 && rule && activation)
-                        showStatus([row, e17, rule, activation] {
-                            return model::SetValueStep::refusalText(*row, *e17, *rule, *activation,
+                    if (needsActivation && row && read && rule && activation)
+                        showStatus([row, read, rule, activation] {
+                            return model::SetValueStep::refusalText(*row, *read, *rule, *activation,
                                                                     model::textLanguage());
                         });
                     else
@@ -240,14 +242,29 @@ void StepControl::writeStep()
     }
     const double factor = row->scale.factor != 0 ? row->scale.factor : 1.0;
     const double raw = std::round(*typed / factor);
+    // The device holds whole raw steps: a typed value between two is sent as the nearer one,
+    // and the step line says so (10 mm → 9.961 mm at 0.09765625 mm per raw step). A typed value
+    // that is the shown value of that step (9.961 mm) was not rounded by the step.
+    m_rounding = {};
+    const double sent = dev::toDisplay(*row, raw);
+    if (std::abs(sent - *typed) > 1e-9 * std::max(1.0, std::abs(*typed))) {
+        const QString unit =
+            row->unit.empty() ? QString() : QStringLiteral(" ") + QString::fromStdString(row->unit);
+        m_rounding = {m_value->cleanText() + unit, raw};
+    }
     if (m_armed) {
         startStep(*row, raw);
         return;
     }
     const model::ModuleInfo *module = currentModule();
-    const QString line =
+    QString line =
         actuatorWriteLine(module->address, *row, m_access->image().value(module->address, row),
                           dev::RawValue{raw}, model::textLanguage());
+    if (!m_rounding.typed.isEmpty()) {
+        line += QLatin1Char(' ') +
+                tr("(typed %1, rounded to the device resolution)").arg(m_rounding.typed);
+        m_status->setText(roundingText(*row, m_rounding));
+    }
     confirmActuatorWrites(this, {line}, [this, guard = QPointer<StepControl>(this), row, raw] {
         if (guard && m_step && currentRow() == row)
             startStep(*row, raw);
@@ -265,10 +282,13 @@ void StepControl::startStep(const dev::ParamMeta &rowRef, double raw)
     for (const dev::SetValueActivation *rule :
          model::SetValueStep::activationRules(*module->dictionary, module->identification.mode))
         checked << QString::fromStdString(rule->row);
-    m_status->setText(checked.isEmpty() ? tr("Writing %1 …").arg(QString::fromStdString(row->name))
-                                        : tr("Checking %1, then writing %2 …")
-                                              .arg(checked.join(QStringLiteral(", ")),
-                                                   QString::fromStdString(row->name)));
+    QString status = checked.isEmpty() ? tr("Writing %1 …").arg(QString::fromStdString(row->name))
+                                       : tr("Checking %1, then writing %2 …")
+                                             .arg(checked.join(QStringLiteral(", ")),
+                                                  QString::fromStdString(row->name));
+    if (!m_rounding.typed.isEmpty())
+        status += QLatin1Char('\n') + roundingText(*row, m_rounding);
+    m_status->setText(status);
     m_step->setLanguage(model::textLanguage());
     m_step->step(*row, raw);
     updateEnabled();
@@ -337,9 +357,25 @@ void StepControl::showArmed()
                                    "without asking again until disconnect."));
 }
 
+QString StepControl::roundingText(const dev::ParamMeta &row, const Rounding &rounding)
+{
+    return tr("%1 → %2 (device resolution)")
+        .arg(rounding.typed,
+             QString::fromStdString(dev::formatValue(row, rounding.raw, model::textLanguage())));
+}
+
 void StepControl::onWritten(int module, const std::vector<model::WriteItem> &items, bool complete)
 {
-    showStatus([items] { return writtenText(items); });
+    // The rounding is said again beside the outcome of the set value it changed.
+    const dev::ParamMeta *row = currentRow();
+    const Rounding rounding = m_rounding;
+    const bool rounded = row && !rounding.typed.isEmpty() &&
+                         std::any_of(items.begin(), items.end(),
+                                     [row](const model::WriteItem &i) { return i.row == row; });
+    showStatus([items, row, rounding, rounded] {
+        return rounded ? writtenText(items) + QLatin1Char('\n') + roundingText(*row, rounding)
+                       : writtenText(items);
+    });
     updateEnabled();
     emit written(module, items, complete);
 }
@@ -407,10 +443,17 @@ void StepControl::retranslate()
     const dev::SetValueActivation *rule = target.second;
     const QString name = row ? QString::fromStdString(row->name) : QStringLiteral("E17");
     const QString value =
-        row && rule
-            ? QString::fromStdString(dev::formatValue(*row, rule->value, model::textLanguage()))
-            : QStringLiteral("2");
-    m_activate->setText(tr("Set %1 = %2").arg(name, value));
+        row && rule ? (rule->state ? QStringLiteral("0x%1").arg(static_cast<int>(rule->value), 4,
+                                                                16, QLatin1Char('0'))
+                                   : QString::fromStdString(dev::formatValue(
+                                         *row, rule->value, model::textLanguage())))
+                    : QStringLiteral("2");
+    if (rule && rule->state)
+        m_activate->setText(
+            tr("Switch to %1 (%2 = %3)")
+                .arg(QString::fromLatin1(dev::dsp408::stateName(*rule->state)), name, value));
+    else
+        m_activate->setText(tr("Set %1 = %2").arg(name, value));
     m_activate->setToolTip(
         tr("Makes the bus set value the one that drives the valve (%1 = %2).").arg(name, value));
     if (m_statusRender && m_status->text() == m_statusShown)

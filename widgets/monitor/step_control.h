@@ -67,6 +67,15 @@ private:
     void onWritten(int module, const std::vector<model::WriteItem> &items, bool complete);
     static QString writtenText(const std::vector<model::WriteItem> &items);
     void startStep(const dev::ParamMeta &row, double raw);
+    // A typed step the device's resolution cannot hold: the text typed (with unit) and the raw
+    // value sent instead; `typed` empty when the value was sent as typed.
+    struct Rounding
+    {
+        QString typed;
+        double raw = 0;
+    };
+    static QString roundingText(const dev::ParamMeta &row, const Rounding &rounding);
+    Rounding m_rounding;
     void showArmed();
 
     model::DeviceAccess *m_access = nullptr;

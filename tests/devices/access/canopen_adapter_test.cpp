@@ -145,13 +145,13 @@ TEST(CanopenAdapter, Ed1IdentifiesByDeviceTypeAndReadsItsObjects)
     ASSERT_TRUE(id);
     EXPECT_EQ(id->values, std::vector<RawValue>{408.0}); // CiA 301 0x1000: profile 408
     EXPECT_EQ(id->identity.deviceProfile, 408);
-    EXPECT_NE(id->identity.text.find("profile 408"), std::string::npos);
+    EXPECT_NE(id->identity.text.en.find("profile 408"), std::string::npos);
     // The simulated card has no capability object 0x605F (the manual names none): the abort is
     // no failure, the step answers without a capability.
     const auto capability = access::test::okReply(r.rig.run(plan.back()));
     ASSERT_TRUE(capability);
     EXPECT_EQ(capability->identity.capability, 0u);
-    EXPECT_NE(capability->identity.text.find("0x605F"), std::string::npos);
+    EXPECT_NE(capability->identity.text.en.find("0x605F"), std::string::npos);
 
     std::vector<const ParamMeta *> rows;
     for (const ParamMeta &p : r.ed1.params)

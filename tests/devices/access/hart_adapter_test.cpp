@@ -100,7 +100,8 @@ TEST(HartAdapter, IdentifiesByPollAddressThenUsesTheUniqueId)
     EXPECT_EQ(reply->identity.manufacturer, kWandfluhHartManufacturer);
     EXPECT_EQ(reply->identity.expandedDeviceType, 58352);
     EXPECT_EQ(reply->identity.deviceId, 2412345u);
-    EXPECT_FALSE(reply->identity.text.empty());
+    EXPECT_TRUE(reply->identity.text.complete()); // both languages
+    EXPECT_NE(reply->identity.text.de.find("Geräte-ID"), std::string::npos);
     ASSERT_TRUE(r.adapter.longAddressOf(0));
     EXPECT_EQ(*r.adapter.longAddressOf(0), r.device.address());
 
@@ -166,6 +167,19 @@ TEST(HartAdapter, ReadsEveryParameterTheCommandsCanAddress)
         EXPECT_EQ(isText(value), row->isString()) << row->name;
     EXPECT_EQ(std::get<std::string>(r.rig.readAll({r.readOf(r.row("hart_Tag"))}).front().second),
               "WAGSD733");
+    // No readable row is left without an exchange (Read All would report it as a failure): the
+    // field device status is status byte 2 of command 48's answer (HART-7 manual §4.4.1).
+    std::set<const ParamMeta *> planned;
+    for (const Transaction &t : plan)
+        planned.insert(t.rows.begin(), t.rows.end());
+    for (const ParamMeta &p : sd7().params) {
+        if (p.readable()) {
+            EXPECT_TRUE(planned.count(&p)) << p.name;
+        }
+    }
+    const auto status = r.rig.readAll({r.readOf(r.row("hart_FieldDeviceStatus"))});
+    ASSERT_EQ(status.size(), 1u);
+    EXPECT_EQ(rawNumber(status.front().second), r.device.deviceStatus(true));
 }
 
 TEST(HartAdapter, WritesAsTheManualsExampleAndReadsBack)

@@ -123,11 +123,35 @@ TEST(MonitorDefaults, EachBuiltinFamilyNamesItsManualsChannels)
         const Dictionary &d = *builtinDictionaries()->find(name);
         EXPECT_FALSE(d.monitor.all.channels.empty()) << name;
         const auto &sd7 = d.monitor.forMode("");
-        if (name == "wandfluh-sd7") {
-            ASSERT_EQ(sd7.activation.size(), 2u);
+        if (name == "wandfluh-sd7" || name == "wandfluh-ed1") {
+            ASSERT_EQ(sd7.activation.size(), 3u) << name;
             EXPECT_EQ(sd7.activation[0].row, "db_Local");      // §4.2.1 bus mode "Remote"
             EXPECT_EQ(sd7.activation[1].row, "db_DeviceMode"); // "1: Command value from fieldbus"
             EXPECT_EQ(sd7.activation[1].value, 1);
+            // §4.2.2: only DEVICE_MODE_ACTIVE enables the device functions; D, H, M lead there.
+            const SetValueActivation &state = sd7.activation[2];
+            EXPECT_EQ(state.state, dsp408::State::DeviceModeActive) << name;
+            EXPECT_EQ(state.row, "db_StatusWord");
+            EXPECT_EQ(state.written(), "db_ControlWord");
+            EXPECT_EQ(state.value, dsp408::kControlActive);
+            EXPECT_TRUE(state.holds(0x000F));  // R M H D
+            EXPECT_TRUE(state.holds(0x001F));  // and "local control": bits 4.. do not matter
+            EXPECT_FALSE(state.holds(0x0008)); // INIT
+            EXPECT_FALSE(state.holds(0x000B)); // HOLD
         }
     }
+}
+
+// A state rule names a state a control word commands, in a family with the DSP-408 words.
+TEST(MonitorDefaults, AStateRuleNeedsACommandableStateAndTheStatusAndControlWords)
+{
+    const auto rule = [](const char *state) {
+        return std::string(R"({"channels":["d1.01"],"set_values":["A1.01"],"activation":[)"
+                           R"({"state":")") +
+               state + R"(","reason":{"en":"m","de":"H"}}]})";
+    };
+    EXPECT_TRUE(mentions(errors(rule("FAULT")), "must name a state a control word commands"));
+    EXPECT_TRUE(mentions(errors(rule("ACTIVE")), "must name a state a control word commands"));
+    // This HCS-like family has neither db_StatusWord nor db_ControlWord.
+    EXPECT_TRUE(mentions(errors(rule("DEVICE_MODE_ACTIVE")), "unknown row 'db_StatusWord'"));
 }

@@ -19,10 +19,10 @@ namespace {
 const Bytes kExample1Request{0x20, 0x49, 0x03, 0x00, 0x00, 0x00, 0x01, 0xC2};
 const Bytes kExample1Response{0x10, 0x49, 0x03, 0x00, 0x00, 0x00, 0x01, 0xC2};
 
-Bytes pkwWrite(std::uint16_t transaction, std::uint16_t start)
+Bytes pkwWrite(std::uint16_t transaction, std::uint16_t start,
+               dsp408::RegisterByteOrder order = dsp408::RegisterByteOrder::FirstByteHigh)
 {
-    const auto registers =
-        dsp408::toRegisters(kExample1Request, dsp408::RegisterByteOrder::FirstByteHigh);
+    const auto registers = dsp408::toRegisters(kExample1Request, order);
     const auto pdu =
         modbus::encodeRegisterPdu(modbus::RegisterRequest{modbus::RegisterWrite{start, registers}});
     return modbus::wrapAdu(transaction, 1, *pdu);
@@ -102,6 +102,41 @@ TEST(Dsp408Gateway, TheInspectorExplainsAPkwWriteAndAnInputImage)
     ASSERT_TRUE(raw.ok());
     EXPECT_EQ(field(*raw, "pkw.pnu"), "73");
     EXPECT_EQ(field(*raw, "pzd.control_word"), "0x0007");
+}
+
+// A gateway that puts the first image byte into a register's low byte (--register-bytes): the
+// inspector decodes the frames of such a link with the link's order, so the PKW fields are the
+// §4.6.1 example's and not a byte-swapped PNU.
+TEST(Dsp408Gateway, TheInspectorDecodesWithTheLinksRegisterByteOrder)
+{
+    const Bytes swapped = pkwWrite(9, 1024, dsp408::RegisterByteOrder::FirstByteLow);
+    AnyOptions o;
+    o.direction = Direction::Request;
+    o.registerBytes = dsp408::RegisterByteOrder::FirstByteLow;
+    const auto right = inspect::describeLogged(LinkProtocol::Dsp408Gateway, swapped, o);
+    ASSERT_TRUE(right.ok());
+    ASSERT_TRUE(right->ok()) << right->summary.en;
+    EXPECT_EQ(field(*right, "pkw.ak"), "2");
+    EXPECT_EQ(field(*right, "pkw.pnu"), "73");
+    EXPECT_EQ(field(*right, "pkw.ind"), "3");
+    EXPECT_EQ(field(*right, "pkw.value"), "450");
+    // The default order reads other numbers from the same bytes.
+    o.registerBytes = dsp408::RegisterByteOrder::FirstByteHigh;
+    const auto wrong = inspect::describeLogged(LinkProtocol::Dsp408Gateway, swapped, o);
+    ASSERT_TRUE(wrong.ok());
+    EXPECT_NE(field(*wrong, "pkw.pnu"), "73");
+
+    // "Go to parameter" names the parameter the device saw: PNU 73, IND 3.
+    inspect::ImageLayout layout;
+    layout.registerBytes = dsp408::RegisterByteOrder::FirstByteLow;
+    const auto carried = inspect::carriedBy(LinkProtocol::Dsp408Gateway, swapped,
+                                            Direction::Request, hcs::Family::Dma, layout);
+    ASSERT_TRUE(carried.indPnu);
+    EXPECT_EQ(carried.indPnu->pnu, 73);
+    EXPECT_EQ(carried.indPnu->ind, 3);
+    const auto unswapped =
+        inspect::carriedBy(LinkProtocol::Dsp408Gateway, swapped, Direction::Request);
+    EXPECT_TRUE(!unswapped.indPnu || unswapped.indPnu->pnu != 73);
 }
 
 TEST(Dsp408Gateway, AFrameNamesTheParameterItCarries)

@@ -464,3 +464,30 @@ TEST(HartSimProcessValues, LoopCurrentAndDynamicVariables)
     for (const std::uint8_t cmd : {std::uint8_t{8}, std::uint8_t{14}})
         EXPECT_EQ(rig.longRequest(cmd)->responseCode, 0) << int(cmd);
 }
+
+// A set value moves the actual value (docs/SIMULATOR.md "Commissioned preset": the SD7 needs no
+// preset): switched to the bus and to position control (dpc) in INIT, enabled with the control
+// word, dpc_ActualValue follows dpc_CommandValue written over HART.
+TEST(HartSimProcessValues, BusCommandValueMovesTheActualValue)
+{
+    HartRig rig;
+    rig.clock.advance(100'000);                                           // self test done: INIT
+    EXPECT_EQ(rig.longRequest(129, Bytes{0, 41, 0, 0})->responseCode, 0); // db_Local = 0 (bus)
+    EXPECT_EQ(rig.longRequest(129, Bytes{0, 40, 0, 9})->responseCode, 0); // db_ControlMode dpc
+    EXPECT_EQ(rig.longRequest(131, Bytes{0, 37, 0, 0x00, 0x07})->responseCode, 0); // enable
+    // dpc_CommandValue (IND 12, PNU 21) = 8000 of the internal resolution 16384.
+    EXPECT_EQ(rig.longRequest(133, Bytes{12, 21, 0, 0x00, 0x00, 0x1F, 0x40})->responseCode, 0);
+    const auto actual = [&rig] {
+        const auto rsp = rig.longRequest(132, Bytes{12, 100, 0}); // dpc_ActualValue
+        EXPECT_TRUE(rsp && rsp->data.size() == 7);
+        if (!rsp || rsp->data.size() != 7)
+            return std::int32_t{-1};
+        return static_cast<std::int32_t>(
+            (std::uint32_t{rsp->data[3]} << 24) | (std::uint32_t{rsp->data[4]} << 16) |
+            (std::uint32_t{rsp->data[5]} << 8) | std::uint32_t{rsp->data[6]});
+    };
+    const std::int32_t before = actual();
+    rig.clock.advance(1'000'000); // ten time constants of the actuator
+    EXPECT_LT(before, 8000);
+    EXPECT_NEAR(actual(), 8000, 1);
+}

@@ -60,7 +60,8 @@ bool run(FoldApply &apply, bool whole = true, std::size_t module = 0)
 // 4, 5, 6 (as from another machine); the apply renumbers them and the scan finds 1, 2, 3.
 TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
 {
-    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
+    // Modules at their factory defaults (E17 = 0, E23 = 0): the plan's options are changes.
+    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}, true});
     ASSERT_TRUE(c);
     for (std::size_t i = 0; i < 3; ++i)
         c->simModule(i).setAddress(static_cast<std::uint8_t>(4 + i));
@@ -112,7 +113,7 @@ TEST(FoldApply, SwappedAddressesNeverCollide)
 // A value outside the dictionary's range is refused before anything is sent.
 TEST(FoldApply, OutOfRangeOptionIsRefusedLocally)
 {
-    auto c = openSim({"dma-pn-v51", 1, "modbus-tcp", {}, {}});
+    auto c = openSim({"dma-pn-v51", 1, "modbus-tcp", {}, {}, true}); // E17 = 0, the default
     ASSERT_TRUE(c);
     FoldPlan plan = dmaPlan(1);
     plan.modules[0].options.e17 = 7; // E17 is 0..2

@@ -81,6 +81,7 @@ struct Endpoint
     }
 };
 
+// The simulators here run with --factory: every setting reads its dictionary default.
 void expectDefaults(const model::ReadResult &result, const std::string &family, std::size_t modules,
                     std::size_t index)
 {
@@ -97,7 +98,7 @@ void expectDefaults(const model::ReadResult &result, const std::string &family, 
 
 TEST(SessionLinks, ModbusRtuOverAPseudoTerminal)
 {
-    Sim sim({"--device", "dma-pn-v51", "--pty"});
+    Sim sim({"--device", "dma-pn-v51", "--factory", "--pty"});
     const QString pty = sim.listening();
     ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
     model::SessionOptions options;
@@ -114,7 +115,7 @@ TEST(SessionLinks, ModbusRtuOverAPseudoTerminal)
 
 TEST(SessionLinks, ModbusTcpOnLoopbackToAThreeModuleNode)
 {
-    Sim sim({"--device", "dma-pb-v32", "--modules", "3", "--tcp", "127.0.0.1:0"});
+    Sim sim({"--device", "dma-pb-v32", "--factory", "--modules", "3", "--tcp", "127.0.0.1:0"});
     const QString where = sim.listening();
     ASSERT_FALSE(where.isEmpty()) << sim.stderrText().toStdString();
     const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
@@ -133,8 +134,8 @@ TEST(SessionLinks, ModbusTcpOnLoopbackToAThreeModuleNode)
 
 TEST(SessionLinks, NodeImageOnLoopback)
 {
-    Sim sim({"--device", "dma-pn-v13", "--modules", "2", "--tcp", "127.0.0.1:0", "--protocol",
-             "node-image"});
+    Sim sim({"--device", "dma-pn-v13", "--factory", "--modules", "2", "--tcp", "127.0.0.1:0",
+             "--protocol", "node-image"});
     const QString where = sim.listening();
     ASSERT_FALSE(where.isEmpty()) << sim.stderrText().toStdString();
     const quint16 port = static_cast<quint16>(where.section(QLatin1Char(':'), -1).toUInt());
@@ -153,8 +154,9 @@ TEST(SessionLinks, CanopenSdoThroughASocketpair)
     int fds[2] = {-1, -1};
     ASSERT_EQ(::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, fds), 0);
     const int child = fds[1];
-    Sim sim({"--device", "dma-pn-v51", "--can-fd", QString::number(child), "--node", "5"},
-            [child] { ::fcntl(child, F_SETFD, 0); });
+    Sim sim(
+        {"--device", "dma-pn-v51", "--factory", "--can-fd", QString::number(child), "--node", "5"},
+        [child] { ::fcntl(child, F_SETFD, 0); });
     ::close(child);
     ASSERT_FALSE(sim.listening().isEmpty()) << sim.stderrText().toStdString();
     Endpoint e;
@@ -188,7 +190,8 @@ TEST(SessionLinks, Ed1OverCanopenIdentifiesByDeviceTypeAndNamesTheCapability)
     EXPECT_EQ(id.module.dictionary->family, "wandfluh-ed1");
     EXPECT_NE(id.module.identification.version.find("0x00130000"), std::string::npos);
     EXPECT_NE(id.deviceText.en.find("profile 408"), std::string::npos) << id.deviceText.en;
-    EXPECT_TRUE(id.module.identityText.contains(QStringLiteral("profile 408")));
+    EXPECT_TRUE(
+        QString::fromStdString(id.module.identityText.en).contains(QStringLiteral("profile 408")));
 }
 
 // The ED1's PROFIBUS image over loopback TCP, both mappings: identify by db_Capability, read all

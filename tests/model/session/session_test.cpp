@@ -245,10 +245,13 @@ TEST(Session, MonitorSamplesGoToABoundedStoreInDisplayUnits)
     EXPECT_EQ(store.size(), 10); // bounded: the newest 10 of 25+
     const auto last = sampled.last().front().value<model::MonitorSample>();
     EXPECT_DOUBLE_EQ(store.lastTime(), last.seconds);
+    // The store keeps single precision (a bounded store of many samples): the commissioned
+    // simulator's live values (currents, the held position) match to float precision.
     for (int ch = 0; ch < 7; ++ch) {
-        EXPECT_DOUBLE_EQ(store.valueAt(ch, store.size() - 1),
-                         dev::toDisplay(*rows[static_cast<std::size_t>(ch)],
-                                        dev::rawNumber(last.values[static_cast<std::size_t>(ch)])))
+        EXPECT_FLOAT_EQ(static_cast<float>(store.valueAt(ch, store.size() - 1)),
+                        static_cast<float>(dev::toDisplay(
+                            *rows[static_cast<std::size_t>(ch)],
+                            dev::rawNumber(last.values[static_cast<std::size_t>(ch)]))))
             << ch;
     }
 }

@@ -38,15 +38,23 @@ TEST(SetValueStep, OffersTheSetValuesTheFamilysDictionaryNames)
         return out;
     };
     EXPECT_EQ(rules("dma-pb-v32", "3"), (QStringList{"E17=2"}));
-    // HART-7 manual §4.2.1 bus mode, §5.2.3 "1: Command value from fieldbus".
-    EXPECT_EQ(rules("wandfluh-sd7", ""), (QStringList{"db_Local=0", "db_DeviceMode=1"}));
+    // HART-7 manual §4.2.1 bus mode, §5.2.3 "1: Command value from fieldbus", §4.2.2 the state
+    // DEVICE_MODE_ACTIVE read from the status word (written as control word 0x0007).
+    EXPECT_EQ(rules("wandfluh-sd7", ""),
+              (QStringList{"db_Local=0", "db_DeviceMode=1", "db_StatusWord=7"}));
+    EXPECT_EQ(rules("wandfluh-ed1", ""),
+              (QStringList{"db_Local=0", "db_DeviceMode=1", "db_StatusWord=7"}));
 }
 
 TEST(SetValueStep, RefusedWhileE17IsNotTwoThenWrittenAfterE17IsSet)
 {
-    auto rig = connectSim("dma-pn-v51");
+    // A module at its factory defaults: the commissioned simulator already has E17 = 2.
+    SimSetup setup;
+    setup.family = "dma-pn-v51";
+    setup.factory = true;
+    auto rig = connectSim(setup);
     ASSERT_TRUE(rig);
-    ASSERT_EQ(rig->read("E17"), 0.0); // the simulator starts with the manual's default
+    ASSERT_EQ(rig->read("E17"), 0.0); // the manual's default
     SetValueStep step(rig->connection->access(), rig->module());
     QSignalSpy refused(&step, &SetValueStep::refused);
     QSignalSpy written(&step, &SetValueStep::written);
@@ -101,7 +109,10 @@ TEST(SetValueStep, OutOfRangeStepIsRefusedLocallyByWriteJob)
 TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
 {
     ActuatorAnswer yes;
-    auto rig = connectSim("dma-pn-v51");
+    SimSetup setup;
+    setup.family = "dma-pn-v51";
+    setup.factory = true; // E17 = 0: the step asks for E17 first
+    auto rig = connectSim(setup);
     ASSERT_TRUE(rig);
     ui::MonitorView view;
     view.setConnection(rig->connection.get(), rig->modules);
@@ -144,4 +155,36 @@ TEST(StepControl, StepFromTheMonitorIsJournalledAndSeenOnThePlot)
 }
 
 } // namespace
+// On the commissioned simulator (E17 = 2, a position loop with its sensor) the step is asked once
+// and written, and the actual value d1.11 follows it on the plot: the axis moves.
+TEST(StepControl, OnTheCommissionedSimulatorTheActualValueFollowsTheStep)
+{
+    ActuatorAnswer yes;
+    auto rig = connectSim("dma-pn-v51");
+    ASSERT_TRUE(rig);
+    ui::MonitorView view;
+    view.setConnection(rig->connection.get(), rig->modules);
+    ui::StepControl &control = *view.stepControl();
+    ASSERT_TRUE(control.selectTarget(rig->module().address, QStringLiteral("A1.01")));
+    control.setStepValue(2.0);
+    QSignalSpy written(&control, &ui::StepControl::written);
+    view.setRate(100);
+    view.start();
+    control.writeStep();
+    ASSERT_TRUE(written.wait(kWaitMs)) << control.statusText().toStdString();
+    EXPECT_EQ(yes.asked.size(), 1); // the step only: no E17 to set
+    EXPECT_FALSE(control.activationOffered());
+    const model::SampleStore *store = view.session().store(rig->module().address);
+    const int actual = store->channelIndex(QStringLiteral("d1.11"));
+    ASSERT_GE(actual, 0);
+    EXPECT_TRUE(waitUntil(
+        [&] {
+            return store->size() > 0 &&
+                   std::abs(store->valueAt(actual, store->size() - 1) - 2.0) < 0.1;
+        },
+        kWaitMs))
+        << "d1.11 = " << (store->size() ? store->valueAt(actual, store->size() - 1) : -1.0);
+    view.pause();
+}
+
 } // namespace vt::test
