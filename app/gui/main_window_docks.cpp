@@ -1,10 +1,8 @@
 // MainWindow's docks: the node view, the monitor, the workbench, the telegrams and the
 // linearisation, and how they are wired to each other and to the workspace (main_window.h).
-#include "main_window.h"
-
 #include "device_controller.h"
 #include "device_state_control.h"
-#include "workspace.h"
+#include "main_window.h"
 #include "model/curve/lcurve_table_model.h"
 #include "model/params/curve_binding.h"
 #include "widgets/curve/lcurve_editor.h"
@@ -14,6 +12,7 @@
 #include "widgets/inspector/inspector_view.h"
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/tuning/workbench_view.h"
+#include "workspace.h"
 
 #include <QDockWidget>
 #include <QMenu>

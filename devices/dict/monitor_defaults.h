@@ -52,7 +52,7 @@ struct MonitorDefaults
     // closed loop, the solenoid current in open loop). A set value without one has no analysis.
     std::map<std::string, std::string> responses;
     std::optional<FaultRow> fault; // none: the module reports errors only to the PLC
-    LocalText noSetValue; // why there is no step, when setValues is empty
+    LocalText noSetValue;          // why there is no step, when setValues is empty
 };
 
 // The dictionary-level defaults and their per-mode overrides (a mode entry replaces the keys it

@@ -171,9 +171,9 @@ private:
 
     MonitorDefaults entry(const Json &j, const std::string &mode, bool top)
     {
-        static const std::set<std::string> kKeys = {
-            "channels",     "set_values", "activation", "responses",
-            "fault",        "no_set_value", "note",     "modes"};
+        static const std::set<std::string> kKeys = {"channels",  "set_values", "activation",
+                                                    "responses", "fault",      "no_set_value",
+                                                    "note",      "modes"};
         for (const auto &[key, value] : j.items())
             if (!kKeys.count(key) || (!top && key == "modes"))
                 fail("\"monitor\" has an unknown key '" + key + "'");
@@ -241,9 +241,9 @@ private:
                 fail("\"monitor\".\"fault\" needs a readable numeric \"row\", its \"ok\" "
                      "value and optionally a \"mask\" (whole numbers)");
             else
-                out.fault = FaultRow{p->name,
-                                     static_cast<std::uint32_t>(f.value("mask", 0xFFFF'FFFFu)),
-                                     static_cast<std::uint32_t>(f["ok"].get<std::uint64_t>())};
+                out.fault =
+                    FaultRow{p->name, static_cast<std::uint32_t>(f.value("mask", 0xFFFF'FFFFu)),
+                             static_cast<std::uint32_t>(f["ok"].get<std::uint64_t>())};
         }
         out.noSetValue = text(j.value("no_set_value", Json()));
         if (out.setValues.empty() && !out.noSetValue.complete())

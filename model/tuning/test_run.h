@@ -61,6 +61,7 @@ struct TestOutcome
     TestEnd end = TestEnd::Finished;
     QString reason;           // for people, empty when finished
     bool needsSource = false; // Refused because an activation row differs (switchSource offered)
+    std::vector<WriteItem> switchNeeded; // when needsSource: what switching would write
     bool restored = false;    // the set value (and a switched source) is back and verified
     std::vector<WriteItem> restore; // what was written back, with its verification
 };
@@ -113,6 +114,7 @@ private:
     Phase m_phase = Phase::Idle;
     std::optional<dev::RawValue> m_original; // the set value before the test
     std::vector<WriteItem> m_sourceChanges;  // activation rows switched for the test
+    std::vector<const dev::ParamMeta *> m_unrestorable; // switched, value before unknown
     std::optional<double> m_lastRaw;         // the set value last acknowledged
     bool m_stopRequested = false;
     bool m_attempted = false;    // a set-value write was sent

@@ -22,6 +22,7 @@
 #include <QListWidget>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -46,6 +47,38 @@ QString rowText(const dev::ParamMeta &row)
     const QString label = QString::fromStdString(row.label.in(model::textLanguage()));
     return label.isEmpty() ? QString::fromStdString(row.name)
                            : QStringLiteral("%1 (%2)").arg(QString::fromStdString(row.name), label);
+}
+
+QString stepProblemText(model::StepProblem problem)
+{
+    switch (problem) {
+    case model::StepProblem::TooFewSamples:
+        return WorkbenchView::tr("no figures: too few samples in the hold");
+    case model::StepProblem::TooShort:
+        return WorkbenchView::tr("no figures: the hold is too short");
+    case model::StepProblem::ZeroStep: return WorkbenchView::tr("no figures: no step");
+    case model::StepProblem::NoResponse:
+        return WorkbenchView::tr("no figures: the response did not move");
+    case model::StepProblem::NotSettled:
+        return WorkbenchView::tr("no figures: not settled by the end of the hold");
+    }
+    return {};
+}
+
+QString frequencyProblemText(model::FrequencyProblem problem)
+{
+    switch (problem) {
+    case model::FrequencyProblem::None: return {};
+    case model::FrequencyProblem::BadRequest: return WorkbenchView::tr("no: not measurable");
+    case model::FrequencyProblem::OutsideRecording:
+        return WorkbenchView::tr("no: outside the recording");
+    case model::FrequencyProblem::TooFewSamples: return WorkbenchView::tr("no: too few samples");
+    case model::FrequencyProblem::NoExcitation:
+        return WorkbenchView::tr("no: the set value did not move");
+    case model::FrequencyProblem::AboveValidBand:
+        return WorkbenchView::tr("no: above the valid band");
+    }
+    return {};
 }
 
 void setRow(QTableWidget *table, int row, const QStringList &cells)
@@ -84,54 +117,69 @@ void WorkbenchView::build()
     auto *splitter = new QSplitter(Qt::Horizontal, this);
     outer->addWidget(splitter);
 
+    // Left: what to test (scrolls when the dock is low), then Start / Stop and the outcome, which
+    // stay in view.
     auto *left = new QWidget(splitter);
-    auto *column = new QVBoxLayout(left);
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    auto *scroll = new QScrollArea(left);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *settings = new QWidget(scroll);
+    auto *column = new QVBoxLayout(settings);
     auto *target = new QFormLayout;
-    m_moduleLabel = new QLabel(left);
-    m_module = new QComboBox(left);
+    m_moduleLabel = new QLabel(settings);
+    m_module = new QComboBox(settings);
     target->addRow(m_moduleLabel, m_module);
-    m_setValueLabel = new QLabel(left);
-    m_setValue = new QComboBox(left);
+    m_setValueLabel = new QLabel(settings);
+    m_setValue = new QComboBox(settings);
     target->addRow(m_setValueLabel, m_setValue);
-    m_responseLabel = new QLabel(left);
+    m_responseLabel = new QLabel(settings);
     m_responseLabel->setWordWrap(true);
     target->addRow(m_responseLabel);
     column->addLayout(target);
-    m_form = new SignalForm(left);
+    m_form = new SignalForm(settings);
     column->addWidget(m_form);
     auto *limits = new QFormLayout;
-    m_rateLabel = new QLabel(left);
-    m_rate = new NumberBox(left);
+    m_rateLabel = new QLabel(settings);
+    m_rate = new NumberBox(settings);
     m_rate->setDecimals(0);
-    m_rate->setRange(0, 1000);
+    m_rate->setRange(0, model::kMaxRateHz);
     m_rate->setValue(0);
     limits->addRow(m_rateLabel, m_rate);
-    m_useWindow = new QCheckBox(left);
-    m_window = new NumberBox(left);
+    m_useWindow = new QCheckBox(settings);
+    m_window = new NumberBox(settings);
     m_window->setDecimals(3);
     m_window->setRange(0.001, 100);
     m_window->setValue(1);
     limits->addRow(m_useWindow, m_window);
     column->addLayout(limits);
+    m_runsLabel = new QLabel(settings);
+    column->addWidget(m_runsLabel);
+    m_runList = new QListWidget(settings);
+    m_runList->setMinimumHeight(60);
+    column->addWidget(m_runList, 1);
+    auto *files = new QHBoxLayout;
+    m_save = new QPushButton(settings);
+    m_load = new QPushButton(settings);
+    files->addWidget(m_save);
+    files->addWidget(m_load);
+    column->addLayout(files);
+    scroll->setWidget(settings);
+    leftLayout->addWidget(scroll, 1);
     auto *buttons = new QHBoxLayout;
     m_start = new QPushButton(left);
     m_stop = new QPushButton(left);
     buttons->addWidget(m_start);
     buttons->addWidget(m_stop);
-    column->addLayout(buttons);
+    leftLayout->addLayout(buttons);
     m_statusLabel = new QLabel(left);
     m_statusLabel->setWordWrap(true);
     m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    column->addWidget(m_statusLabel);
-    m_runList = new QListWidget(left);
-    column->addWidget(m_runList, 1);
-    auto *files = new QHBoxLayout;
-    m_save = new QPushButton(left);
-    m_load = new QPushButton(left);
-    files->addWidget(m_save);
-    files->addWidget(m_load);
-    column->addLayout(files);
+    m_statusLabel->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
+    leftLayout->addWidget(m_statusLabel);
 
+    // Right: the plot over the results, the plot taking most of the height.
     auto *right = new QSplitter(Qt::Vertical, splitter);
     m_plots = new QStackedWidget(right);
     m_response = new ResponsePlot(m_plots);
@@ -145,11 +193,12 @@ void WorkbenchView::build()
         t->verticalHeader()->setVisible(false);
         t->setEditTriggers(QAbstractItemView::NoEditTriggers);
         t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        t->setMinimumHeight(60);
     }
     m_tabs->addTab(m_results, QString());
     m_tabs->addTab(m_differences, QString());
-    right->setStretchFactor(0, 3);
-    right->setStretchFactor(1, 2);
+    right->setStretchFactor(0, 4);
+    right->setStretchFactor(1, 1);
     splitter->setStretchFactor(0, 0);
     splitter->setStretchFactor(1, 1);
 
@@ -261,6 +310,8 @@ void WorkbenchView::setValueChosen()
     if (m && row) {
         const dev::Limits limits = dev::rowLimits(*row);
         const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
+        m_window->setSuffix(row->unit.empty() ? QString()
+                                              : QLatin1Char(' ') + QString::fromStdString(row->unit));
         m_form->setSetValue(QString::fromStdString(row->unit), row->scale.decimals,
                             std::min(limits.min * f, limits.max * f),
                             std::max(limits.min * f, limits.max * f));
@@ -395,9 +446,13 @@ void WorkbenchView::refreshLive()
         return;
     const model::TestRecording &r = m_test->recording();
     m_response->showLive(*m_live, r);
-    m_status = tr("Running: %1 of %2 s; set value updated at %3 Hz, sampled at %4 Hz.")
-                   .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
-                        num(r.updateRateHz(), 1), num(r.sampleRateHz(), 1));
+    m_status = r.setValue.t.size() < 2
+                   ? tr("Running: %1 of %2 s; sampled at %3 Hz.")
+                         .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
+                              num(r.sampleRateHz(), 0))
+                   : tr("Running: %1 of %2 s; set value updated at %3 Hz, sampled at %4 Hz.")
+                         .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
+                              num(r.updateRateHz(), 1), num(r.sampleRateHz(), 0));
     m_statusLabel->setText(m_status);
 }
 
@@ -451,9 +506,12 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
         if (!module || !row)
             return;
         const auto spec = m_live->spec;
-        const QStringList lines = {
-            outcome.reason,
-            tr("Switch the set-value source for the test and put it back afterwards?")};
+        QStringList lines;
+        for (const model::WriteItem &item : outcome.switchNeeded)
+            lines << actuatorWriteLine(module->address, *item.row, item.before, item.value,
+                                       model::textLanguage());
+        lines << outcome.reason
+              << tr("For the test only: afterwards the values are written back.");
         confirmActuatorWrites(this, lines, [this, spec, guard = QPointer<WorkbenchView>(this)] {
             if (!guard || !m_access)
                 return;
@@ -489,7 +547,10 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
     ++m_nextNumber;
     m_status = outcomeText(outcome);
     m_statusLabel->setText(m_status);
-    emit statusMessage(m_status);
+    emit statusMessage(outcome.restored ? tr("Workbench: run %1 done, values restored.")
+                                              .arg(m_nextNumber - 1)
+                                        : tr("Workbench: run %1 ended, values NOT restored.")
+                                              .arg(m_nextNumber - 1));
     if (!outcome.restore.empty())
         emit written(run->module, outcome.restore);
     addRun(std::move(run));
@@ -574,7 +635,7 @@ void WorkbenchView::fillResults(const model::TuningRun &run)
     }
     m_results->setColumnCount(9);
     m_results->setHorizontalHeaderLabels(
-        {tr("Step"), tr("Dead time (s)"), tr("Rise time (s)"), tr("Overshoot (%)"),
+        {tr("Step (%1)").arg(unit), tr("Dead time (s)"), tr("Rise time (s)"), tr("Overshoot (%)"),
          tr("Peak time (s)"), tr("Settling 2 % (s)"), tr("Settling 5 % (s)"),
          tr("Steady-state error (%1)").arg(unit), tr("Final value")});
     m_results->setRowCount(static_cast<int>(a.steps.size()));
@@ -582,11 +643,7 @@ void WorkbenchView::fillResults(const model::TuningRun &run)
     for (const model::StepResult &s : a.steps) {
         const QString step = tr("%1 → %2").arg(num(s.edge.from, 3), num(s.edge.to, 3));
         if (!s.metrics) {
-            setRow(m_results, r++,
-                   {step, tr("no figures: %1")
-                              .arg(s.problem ? QString::fromLatin1(
-                                                   model::stepProblemKey(*s.problem).data())
-                                             : QString())});
+            setRow(m_results, r++, {step, s.problem ? stepProblemText(*s.problem) : QString()});
             continue;
         }
         const model::StepMetrics &m = *s.metrics;
@@ -674,7 +731,11 @@ void WorkbenchView::retranslate()
 {
     m_moduleLabel->setText(tr("Module"));
     m_setValueLabel->setText(tr("Set value"));
-    m_rateLabel->setText(tr("Cycles per second (0: as fast as the link allows)"));
+    m_rateLabel->setText(tr("Cycles/s"));
+    m_rate->setToolTip(tr("Set-value writes and reads per second; 0: as fast as the link "
+                          "allows (at most 1000)."));
+    m_rate->setSpecialValueText(tr("as fast as possible"));
+    m_runsLabel->setText(tr("Runs"));
     m_useWindow->setText(tr("Travel window"));
     m_window->setToolTip(tr("Stop the test when the actual value leaves the signal's range by "
                             "more than this."));

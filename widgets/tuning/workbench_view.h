@@ -116,6 +116,7 @@ private:
     QTabWidget *m_tabs = nullptr;
     QTableWidget *m_results = nullptr;
     QTableWidget *m_differences = nullptr;
+    QLabel *m_runsLabel = nullptr;
     QListWidget *m_runList = nullptr;
     QPushButton *m_save = nullptr;
     QPushButton *m_load = nullptr;

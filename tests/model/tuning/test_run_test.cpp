@@ -47,7 +47,8 @@ struct Bench
 
     TestRunSetup setup(const SignalSpec &spec)
     {
-        TestRunSetup s = TestRun::setupFor(rig->module(), rig->row("A1.01"), *TestSignal::make(spec));
+        TestRunSetup s =
+            TestRun::setupFor(rig->module(), rig->row("A1.01"), *TestSignal::make(spec));
         return s;
     }
 
