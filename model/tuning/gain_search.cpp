@@ -41,7 +41,7 @@ bool GainSearch::accepted(double overshootPct) const
 
 GainProposal GainSearch::measured(const Gains &gains, double overshootPct)
 {
-    const GainMeasurement m{gains, std::isfinite(overshootPct) ? overshootPct : 0};
+    const GainMeasurement m{gains, std::isnan(overshootPct) ? 0 : overshootPct};
     m_history.push_back(m);
     const bool within = m.overshootPct <= limitPct();
     if (within && (!m_low || gains.p > m_low->gains.p))

@@ -71,7 +71,9 @@ public:
 
     // The overshoot limit the target stands for.
     double limitPct() const;
-    // Records the overshoot measured at `gains` and says what to do next.
+    // Records the overshoot measured at `gains` and says what to do next. An overshoot of
+    // +infinity stands for a response that rang past the set value and did not settle within the
+    // hold: beyond any limit.
     GainProposal measured(const Gains &gains, double overshootPct);
     const std::vector<GainMeasurement> &history() const { return m_history; }
 
