@@ -3620,6 +3620,10 @@ Senden?</translation>
         <source>Settling 2 % (s)</source>
         <translation>Ausregelzeit 2 % (s)</translation>
     </message>
+    <message>
+        <source>Switch the set-value source for each step and put it back afterwards?</source>
+        <translation>Die Sollwertquelle für jeden Sprung umschalten und danach zurückstellen?</translation>
+    </message>
 </context>
 <context>
     <name>vt::ui::HartPage</name>

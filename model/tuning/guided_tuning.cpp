@@ -3,6 +3,7 @@
 #include "dict/cooking.h"
 #include "model/text_language.h"
 
+#include <QTimer>
 #include <cmath>
 #include <limits>
 
@@ -149,7 +150,13 @@ void GuidedTuning::runTest()
     m_live->settings = settingsSnapshot(m_access.image(), m_setup.module);
     m_test = std::make_unique<TestRun>(m_access, std::move(test));
     connect(m_test.get(), &TestRun::finished, this, &GuidedTuning::onTest);
-    m_test->start();
+    // After a gain write (EEPROM) the test may switch the source E17 (EEPROM too): the same
+    // pacing as before a gain write (writeGains).
+    const auto alive = m_alive;
+    QTimer::singleShot(m_setup.module.dictionary->writePacingMs, this, [this, alive] {
+        if (*alive && m_test && !m_test->isRunning() && m_state == GuidedState::Testing)
+            m_test->start();
+    });
 }
 
 void GuidedTuning::onTest(const TestOutcome &outcome)
@@ -292,7 +299,14 @@ void GuidedTuning::writeGains(const Gains &gains, std::function<void(bool)> then
         emit written(m_setup.module.address, done);
         then(complete);
     });
-    m_job->start();
+    // The step test may have just written back an EEPROM row (the source E17); the module takes
+    // the next EEPROM write only after its pacing time (DMA Profinet manual §3.4.1), and WriteJob
+    // paces only its own writes.
+    const auto alive = m_alive;
+    QTimer::singleShot(m_setup.module.dictionary->writePacingMs, this, [this, alive] {
+        if (*alive && m_job)
+            m_job->start();
+    });
 }
 
 void GuidedTuning::keep()
@@ -321,6 +335,10 @@ void GuidedTuning::abort()
             m_read->cancel();
         return finish(GuidedEnd::Aborted, tr("Aborted before anything was written."));
     case GuidedState::Testing:
+        if (m_test && !m_test->isRunning()) { // not started yet (pacing): nothing to stop
+            m_test.reset();
+            return restore(tr("Aborted."));
+        }
         if (m_test)
             m_test->stop(); // onTest restores (it also does when the test just ended)
         return;

@@ -78,18 +78,22 @@ GuidedPanel::GuidedPanel(GuidedHooks hooks, QWidget *parent)
     buttons->addWidget(m_keep);
     buttons->addWidget(m_abort);
     column->addLayout(buttons);
-    m_statusLabel = new QLabel(this);
-    m_statusLabel->setWordWrap(true);
-    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    column->addWidget(m_statusLabel);
     column->addStretch(1);
     outer->addLayout(column, 2);
+    // The status (it can be long: a refusal quotes the manual) goes under the table, where it
+    // cannot squeeze the form.
+    auto *right = new QVBoxLayout;
     m_table = new QTableWidget(this);
     m_table->verticalHeader()->setVisible(false);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setColumnCount(6);
-    outer->addWidget(m_table, 3);
+    right->addWidget(m_table, 1);
+    m_statusLabel = new QLabel(this);
+    m_statusLabel->setWordWrap(true);
+    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    right->addWidget(m_statusLabel);
+    outer->addLayout(right, 3);
 
     connect(m_target, &QComboBox::currentIndexChanged, this, &GuidedPanel::updateEnabled);
     connect(m_start, &QPushButton::clicked, this, &GuidedPanel::start);
@@ -232,9 +236,27 @@ void GuidedPanel::begin(model::GuidedSetup setup)
         }
         updateEnabled();
         emit activeChanged(isActive());
+        if (m_tuning->state() == model::GuidedState::Done && m_tuning->needsSource() &&
+            !m_tuning->setup().switchSource)
+            offerSourceSwitch();
     });
     m_tuning->start();
     updateEnabled();
+}
+
+void GuidedPanel::offerSourceSwitch()
+{
+    // The set-value source differs (the status quotes the manual): ask, then start again
+    // switching it for each step and back after it, as the workbench's own tests do.
+    model::GuidedSetup again = m_tuning->setup();
+    again.switchSource = true;
+    const QStringList lines = {
+        m_tuning->statusText(),
+        tr("Switch the set-value source for each step and put it back afterwards?")};
+    confirmActuatorWrites(this, lines, [this, again, guard = QPointer<GuidedPanel>(this)] {
+        if (guard)
+            begin(again);
+    });
 }
 
 void GuidedPanel::addIteration(int index)

@@ -71,6 +71,7 @@ private:
     void updateEnabled();
     void begin(model::GuidedSetup setup);
     void addIteration(int index);
+    void offerSourceSwitch();
     void setStatus(const QString &text);
 
     GuidedHooks m_hooks;

@@ -127,5 +127,25 @@ TEST(GuidedPanel, ARefusedChangeWritesNothingAndAbortLeavesTheOriginals)
     EXPECT_DOUBLE_EQ(b.rig->read("C1.13").value_or(NAN), 125);
 }
 
+TEST(GuidedPanel, TheSourceIsSwitchedOnlyAfterASecondQuestionAndPutBackAfterEachStep)
+{
+    Bench b;
+    ASSERT_TRUE(b.rig);
+    ASSERT_TRUE(b.positionLoop(125));
+    ASSERT_TRUE(b.write("E17", 0));
+    b.prepare(5);
+    test::ActuatorAnswer answer;
+    b.view.guidedPanel()->start();
+    ASSERT_TRUE(b.waitFor(model::GuidedState::Proposed))
+        << b.view.guidedPanel()->statusText().toStdString();
+    ASSERT_GE(answer.asked.size(), 3); // the steps, the source, the first gain change
+    EXPECT_TRUE(answer.asked[1].join(' ').contains(QStringLiteral("E17")));
+    EXPECT_TRUE(b.view.guidedPanel()->tuning()->setup().switchSource);
+    EXPECT_DOUBLE_EQ(b.rig->read("E17").value_or(NAN), 0);
+    b.view.guidedPanel()->abort();
+    ASSERT_TRUE(b.waitFor(model::GuidedState::Done));
+    EXPECT_DOUBLE_EQ(b.rig->read("C1.13").value_or(NAN), 125);
+}
+
 } // namespace
 } // namespace vt::ui
