@@ -1577,6 +1577,10 @@
         <source>The original gains are NOT back (%1): check the module.</source>
         <translation>Die ursprünglichen Verstärkungen sind NICHT wiederhergestellt (%1): Modul prüfen.</translation>
     </message>
+    <message>
+        <source>The step at %1 did not move the response (%2): check the feedback and the controller.</source>
+        <translation>Der Sprung mit %1 hat die Antwort nicht bewegt (%2): Rückführung und Regler prüfen.</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::IdentityTexts</name>
@@ -3553,8 +3557,8 @@ Senden?</translation>
         <translation>Durchgang %1: Der Sprung wird gemessen …</translation>
     </message>
     <message>
-        <source>did not settle</source>
-        <translation>nicht eingeschwungen</translation>
+        <source>no figures: %1</source>
+        <translation>keine Kennwerte: %1</translation>
     </message>
     <message>
         <source>Target</source>

@@ -182,7 +182,8 @@ void GuidedTuning::onTest(const TestOutcome &outcome)
     for (const StepResult &s : run->analysis.steps)
         if (!up && s.edge.to > s.edge.from)
             up = &s;
-    GuidedIteration it{*m_current, run, up ? up->metrics : std::nullopt};
+    GuidedIteration it{*m_current, run, up ? up->metrics : std::nullopt,
+                       up ? up->problem : std::nullopt};
     m_iterations.push_back(it);
     emit iterationDone(static_cast<int>(m_iterations.size()) - 1);
     if (m_abortRequested) // asked for while the iteration was shown
@@ -195,9 +196,12 @@ void GuidedTuning::onTest(const TestOutcome &outcome)
         return propose(m_search->measured(it.gains, std::numeric_limits<double>::infinity()));
     }
     if (!it.metrics) {
-        const QString why = up && up->problem
-                                ? QString::fromLatin1(stepProblemKey(*up->problem).data())
-                                : tr("no step");
+        const QString why =
+            it.problem ? QString::fromLatin1(stepProblemKey(*it.problem).data()) : tr("no step");
+        if (it.problem == StepProblem::NoResponse)
+            return restore(tr("The step at %1 did not move the response (%2): check the feedback "
+                              "and the controller.")
+                               .arg(gainsText(it.gains), why));
         return restore(tr("The step at %1 gave no figures (%2): hold it longer.")
                            .arg(gainsText(it.gains), why));
     }

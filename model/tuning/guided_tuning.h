@@ -65,6 +65,7 @@ struct GuidedIteration
     Gains gains;
     std::shared_ptr<TuningRun> run;
     std::optional<StepMetrics> metrics; // the up step's
+    std::optional<StepProblem> problem; // why it has none
 };
 
 class GuidedTuning : public QObject
