@@ -137,17 +137,7 @@ void GuidedTuning::runTest()
     setState(GuidedState::Testing);
     TestRunSetup test{m_setup.module,    m_setup.setValueRow, *signal,        m_setup.channels,
                       m_setup.actualRow, m_setup.window,      m_setup.rateHz, m_setup.switchSource};
-    m_live = std::make_unique<TuningRun>();
-    m_live->number = static_cast<int>(m_iterations.size()) + 1;
-    m_live->started = QDateTime::currentDateTime();
-    m_live->module = m_setup.module.address;
-    m_live->family = m_setup.module.identification.family;
-    m_live->mode = m_setup.module.identification.mode;
-    m_live->dictionary = m_setup.module.dictionary;
-    m_live->setValueRow = m_setup.setValueRow;
-    m_live->responseRow = m_setup.actualRow;
-    m_live->spec = m_setup.step;
-    m_live->settings = settingsSnapshot(m_access.image(), m_setup.module);
+    m_live = newRun(static_cast<int>(m_iterations.size()) + 1, test, m_access.image());
     m_test = std::make_unique<TestRun>(m_access, std::move(test));
     connect(m_test.get(), &TestRun::finished, this, &GuidedTuning::onTest);
     // After a gain write (EEPROM) the test may switch the source E17 (EEPROM too): the same

@@ -394,17 +394,7 @@ void WorkbenchView::begin(model::TestRunSetup setup)
 {
     if (!m_access || isRunning())
         return;
-    m_live = std::make_unique<model::TuningRun>();
-    m_live->number = m_nextNumber;
-    m_live->started = QDateTime::currentDateTime();
-    m_live->module = setup.module.address;
-    m_live->family = setup.module.identification.family;
-    m_live->mode = setup.module.identification.mode;
-    m_live->dictionary = setup.module.dictionary;
-    m_live->setValueRow = setup.setValueRow;
-    m_live->responseRow = setup.actualRow;
-    m_live->spec = setup.signal.spec();
-    m_live->settings = model::settingsSnapshot(m_access->image(), setup.module);
+    m_live = model::newRun(m_nextNumber, setup, m_access->image());
     m_test = std::make_unique<model::TestRun>(*m_access, std::move(setup));
     connect(m_test.get(), &model::TestRun::sampled, this, [this] {
         if (!m_redraw.isActive())

@@ -3,6 +3,7 @@
 // listed and overlaid on the response plot, Keep leaves the chosen gain, a refused change writes
 // nothing and Abort puts the original gains back.
 #include "actuator_answer.h"
+#include "loop_bench.h"
 #include "sim_rig.h"
 #include "widgets/tuning/guided_panel.h"
 #include "widgets/tuning/signal_form.h"
@@ -19,7 +20,8 @@ constexpr int kGuidedWaitMs = 20'000;
 
 struct Bench
 {
-    std::unique_ptr<test::SimRig> rig = test::connectSim({"dma-pn-v51", 1, {}, {}, {}});
+    test::LoopBench loop;
+    std::unique_ptr<test::SimRig> &rig = loop.rig;
     WorkbenchView view;
     std::vector<model::WriteItem> journal;
 
@@ -32,30 +34,11 @@ struct Bench
                              journal.insert(journal.end(), items.begin(), items.end());
                          });
     }
-    bool write(const char *name, double raw)
-    {
-        std::optional<model::Outcome> done;
-        rig->access().write(rig->module().address, rig->row(name), dev::RawValue{raw},
-                            model::Priority::User, [&](const model::Outcome &o) { done = o; });
-        const bool ok = test::waitFor(done) && done->status == model::OutcomeStatus::Ok;
-        // DMA Profinet manual §3.4.1: the module takes the next EEPROM write after ~25 ms.
-        test::spinFor(rig->module().dictionary->writePacingMs + 5);
-        return ok;
-    }
-    // The simulator's position loop (docs/SIMULATOR-PLANT.md): P-PT1-I-DT1, 0 … 10 V sensor.
-    bool positionLoop(double kp)
-    {
-        return write("E17", 2) && write("C1.00", 1) && write("C1.09", 4) && write("C1.13", kp) &&
-               write("C1.17", 0) && write("A1.01", 3000);
-    }
+    bool write(const char *name, double raw) { return loop.write(name, raw); }
+    bool positionLoop(double kp) { return loop.positionLoop(kp, 0); }
     void prepare(double targetPct)
     {
-        model::SignalSpec s;
-        s.kind = model::SignalKind::Step;
-        s.from = 3;
-        s.to = 5;
-        s.hold = 0.7;
-        view.signalForm()->setSpec(s);
+        view.signalForm()->setSpec(test::LoopBench::upStep(0.7));
         view.guidedPanel()->setTarget({model::GainTarget::Kind::MaxOvershoot, targetPct});
         view.guidedPanel()->setMaxIterations(4);
     }
