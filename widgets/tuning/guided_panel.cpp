@@ -15,7 +15,6 @@
 #include <QLocale>
 #include <QPointer>
 #include <QPushButton>
-#include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
@@ -57,13 +56,15 @@ GuidedPanel::GuidedPanel(GuidedHooks hooks, QWidget *parent)
     m_overshoot->setValue(5);
     form->addRow(m_overshootLabel, m_overshoot);
     m_iterationsLabel = new QLabel(this);
-    m_iterations = new QSpinBox(this);
+    m_iterations = new NumberBox(this);
+    m_iterations->setDecimals(0);
     m_iterations->setRange(1, 20);
     m_iterations->setValue(6);
     form->addRow(m_iterationsLabel, m_iterations);
     m_allowLabel = new QLabel(this);
     m_allowLabel->setWordWrap(true);
-    m_allow = new QSpinBox(this);
+    m_allow = new NumberBox(this);
+    m_allow->setDecimals(0);
     m_allow->setRange(0, 20);
     form->addRow(m_allowLabel, m_allow);
     column->addLayout(form);
@@ -99,9 +100,9 @@ GuidedPanel::GuidedPanel(GuidedHooks hooks, QWidget *parent)
     connect(m_start, &QPushButton::clicked, this, &GuidedPanel::start);
     connect(m_keep, &QPushButton::clicked, this, &GuidedPanel::keep);
     connect(m_abort, &QPushButton::clicked, this, &GuidedPanel::abort);
-    connect(m_allow, &QSpinBox::valueChanged, this, [this](int n) {
+    connect(m_allow, &NumberBox::valueChanged, this, [this](double n) {
         if (m_tuning && m_tuning->isActive())
-            m_tuning->allowNext(n);
+            m_tuning->allowNext(static_cast<int>(std::lround(n)));
     });
     retranslate();
     updateEnabled();
@@ -173,7 +174,7 @@ void GuidedPanel::start()
     setup.window = m_hooks.window();
     setup.target = {static_cast<model::GainTarget::Kind>(m_target->currentData().toInt()),
                     m_overshoot->value()};
-    setup.maxIterations = m_iterations->value();
+    setup.maxIterations = static_cast<int>(std::lround(m_iterations->value()));
     if (const QString problem = model::GuidedTuning::setupProblem(setup); !problem.isEmpty())
         return setStatus(problem);
 
@@ -214,7 +215,7 @@ void GuidedPanel::begin(model::GuidedSetup setup)
     if (m_tuning)
         m_tuning.release()->deleteLater(); // it may be the sender of the signal that ended it
     m_tuning = std::make_unique<model::GuidedTuning>(*access, std::move(setup), confirm);
-    m_tuning->allowNext(m_allow->value());
+    m_tuning->allowNext(static_cast<int>(std::lround(m_allow->value())));
     m_table->setRowCount(0);
     connect(m_tuning.get(), &model::GuidedTuning::iterationDone, this, &GuidedPanel::addIteration);
     connect(m_tuning.get(), &model::GuidedTuning::written, this,

@@ -16,7 +16,6 @@
 class QComboBox;
 class QLabel;
 class QPushButton;
-class QSpinBox;
 class QTableWidget;
 
 namespace vt::ui {
@@ -83,9 +82,9 @@ private:
     QLabel *m_overshootLabel = nullptr;
     NumberBox *m_overshoot = nullptr;
     QLabel *m_iterationsLabel = nullptr;
-    QSpinBox *m_iterations = nullptr;
+    NumberBox *m_iterations = nullptr;
     QLabel *m_allowLabel = nullptr;
-    QSpinBox *m_allow = nullptr;
+    NumberBox *m_allow = nullptr;
     QLabel *m_stepLabel = nullptr;
     QPushButton *m_start = nullptr;
     QPushButton *m_keep = nullptr;
