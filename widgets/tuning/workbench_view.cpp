@@ -1,6 +1,7 @@
 #include "workbench_view.h"
 
 #include "bode_plot.h"
+#include "guided_panel.h"
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
 #include "model/monitor/set_value_step.h"
@@ -197,8 +198,9 @@ void WorkbenchView::build()
     }
     m_tabs->addTab(m_results, QString());
     m_tabs->addTab(m_differences, QString());
-    right->setStretchFactor(0, 4);
-    right->setStretchFactor(1, 1);
+    buildGuided();
+    right->setStretchFactor(0, 3);
+    right->setStretchFactor(1, 2);
     splitter->setStretchFactor(0, 0);
     splitter->setStretchFactor(1, 1);
 
@@ -212,6 +214,34 @@ void WorkbenchView::build()
     connect(m_runList, &QListWidget::currentRowChanged, this, &WorkbenchView::showCurrent);
     connect(m_runList, &QListWidget::itemChanged, this, &WorkbenchView::showCurrent);
     connect(m_form, &SignalForm::changed, this, &WorkbenchView::updateEnabled);
+}
+
+// The guided gain change (guided_panel.h) drives this view's module, set value and step, and
+// hands its iterations to the run list (overlaid) and its writes to the journal.
+void WorkbenchView::buildGuided()
+{
+    GuidedHooks hooks;
+    hooks.access = [this] { return m_access; };
+    hooks.module = [this] { return currentModule(); };
+    hooks.setValue = [this] { return currentSetValue(); };
+    hooks.signal = [this] { return m_form->spec(); };
+    hooks.rateHz = [this] { return m_rate->value(); };
+    hooks.window = [this] {
+        return m_useWindow->isChecked() ? std::optional<double>(m_window->value()) : std::nullopt;
+    };
+    hooks.busy = [this] { return isRunning(); };
+    hooks.addRun = [this](std::unique_ptr<model::TuningRun> run, bool overlayPrevious) {
+        run->number = m_nextNumber;
+        addRun(std::move(run));
+        if (overlayPrevious && m_runList->count() >= 2)
+            m_runList->item(m_runList->count() - 2)->setCheckState(Qt::Checked);
+    };
+    hooks.written = [this](int module, const std::vector<model::WriteItem> &items) {
+        emit written(module, items);
+    };
+    m_guided = new GuidedPanel(std::move(hooks), m_tabs);
+    m_tabs->addTab(m_guided, QString());
+    connect(m_guided, &GuidedPanel::activeChanged, this, &WorkbenchView::updateEnabled);
 }
 
 void WorkbenchView::setConnection(model::DeviceAccess *access,
@@ -242,6 +272,7 @@ void WorkbenchView::clearConnection()
     if (m_test && m_test->isRunning())
         m_test->stop();
     m_test.reset();
+    m_guided->clearConnection();
     m_live.reset();
     m_access = nullptr;
     m_modules.clear();
@@ -332,11 +363,12 @@ void WorkbenchView::setValueChosen()
 void WorkbenchView::updateEnabled()
 {
     const bool running = isRunning();
-    const bool ready = m_access && currentSetValue() && !running;
+    const bool guided = m_guided && m_guided->isActive();
+    const bool ready = m_access && currentSetValue() && !running && !guided;
     m_start->setEnabled(ready);
     m_stop->setEnabled(running);
-    m_module->setEnabled(!running);
-    m_setValue->setEnabled(!running);
+    m_module->setEnabled(!running && !guided);
+    m_setValue->setEnabled(!running && !guided);
     m_form->setEnabled(!running);
     m_rate->setEnabled(!running);
     m_useWindow->setEnabled(!running);
@@ -359,7 +391,7 @@ void WorkbenchView::start()
 {
     const model::ModuleInfo *module = currentModule();
     const dev::ParamMeta *row = currentSetValue();
-    if (!m_access || !module || !row || isRunning())
+    if (!m_access || !module || !row || isRunning() || m_guided->isActive())
         return;
     const auto spec = m_form->spec();
     const auto fail = [this](const QString &text) {
@@ -410,17 +442,7 @@ void WorkbenchView::begin(model::TestRunSetup setup)
 {
     if (!m_access || isRunning())
         return;
-    m_live = std::make_unique<model::TuningRun>();
-    m_live->number = m_nextNumber;
-    m_live->started = QDateTime::currentDateTime();
-    m_live->module = setup.module.address;
-    m_live->family = setup.module.identification.family;
-    m_live->mode = setup.module.identification.mode;
-    m_live->dictionary = setup.module.dictionary;
-    m_live->setValueRow = setup.setValueRow;
-    m_live->responseRow = setup.actualRow;
-    m_live->spec = setup.signal.spec();
-    m_live->settings = model::settingsSnapshot(m_access->image(), setup.module);
+    m_live = model::newRun(m_nextNumber, setup, m_access->image());
     m_test = std::make_unique<model::TestRun>(*m_access, std::move(setup));
     connect(m_test.get(), &model::TestRun::sampled, this, [this] {
         if (!m_redraw.isActive())
@@ -745,6 +767,7 @@ void WorkbenchView::retranslate()
     m_load->setText(tr("Load Runs…"));
     m_tabs->setTabText(0, tr("Results"));
     m_tabs->setTabText(1, tr("Setting differences"));
+    m_tabs->setTabText(2, tr("Guided tuning"));
     m_runList->setToolTip(tr("The current run is drawn with its marks; tick others to overlay "
                              "them and to compare their settings."));
     for (int i = 0; i < m_runList->count() && i < static_cast<int>(m_runs.size()); ++i)
