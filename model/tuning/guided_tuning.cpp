@@ -135,8 +135,12 @@ void GuidedTuning::runTest()
     if (!signal || !m_current)
         return restore(tr("The step cannot be run."));
     setState(GuidedState::Testing);
-    TestRunSetup test{m_setup.module,    m_setup.setValueRow, *signal,        m_setup.channels,
-                      m_setup.actualRow, m_setup.window,      m_setup.rateHz, m_setup.switchSource};
+    TestRunSetup test = TestRun::setupFor(m_setup.module, *m_setup.setValueRow, *signal);
+    test.channels = m_setup.channels;
+    test.actualRow = m_setup.actualRow;
+    test.window = m_setup.window;
+    test.rateHz = m_setup.rateHz;
+    test.switchSource = m_setup.switchSource;
     m_live = newRun(static_cast<int>(m_iterations.size()) + 1, test, m_access.image());
     m_test = std::make_unique<TestRun>(m_access, std::move(test));
     connect(m_test.get(), &TestRun::finished, this, &GuidedTuning::onTest);
@@ -167,7 +171,8 @@ void GuidedTuning::onTest(const TestOutcome &outcome)
     run->recording = std::move(recording);
     run->end = outcome.end;
     run->restored = outcome.restored;
-    run->analysis = analyseRun(*TestSignal::make(run->spec), run->recording, run->responseRow);
+    run->analysis = analyseRun(*TestSignal::make(run->spec), run->recording, run->responseRow,
+                               run->setValueRow);
     const StepResult *up = nullptr; // the step's up edge
     for (const StepResult &s : run->analysis.steps)
         if (!up && s.edge.to > s.edge.from)

@@ -62,7 +62,7 @@ struct TestOutcome
     QString reason;           // for people, empty when finished
     bool needsSource = false; // Refused because an activation row differs (switchSource offered)
     std::vector<WriteItem> switchNeeded; // when needsSource: what switching would write
-    bool restored = false;    // the set value (and a switched source) is back and verified
+    bool restored = false;          // the set value (and a switched source) is back and verified
     std::vector<WriteItem> restore; // what was written back, with its verification
 };
 
@@ -112,10 +112,10 @@ private:
     TestRecording m_recording;
     TestOutcome m_outcome;
     Phase m_phase = Phase::Idle;
-    std::optional<dev::RawValue> m_original; // the set value before the test
-    std::vector<WriteItem> m_sourceChanges;  // activation rows switched for the test
+    std::optional<dev::RawValue> m_original;            // the set value before the test
+    std::vector<WriteItem> m_sourceChanges;             // activation rows switched for the test
     std::vector<const dev::ParamMeta *> m_unrestorable; // switched, value before unknown
-    std::optional<double> m_lastRaw;         // the set value last acknowledged
+    std::optional<double> m_lastRaw;                    // the set value last acknowledged
     bool m_stopRequested = false;
     bool m_attempted = false;    // a set-value write was sent
     double m_lateBy = 0;         // s the signal's clock waited for late cycles

@@ -1,5 +1,6 @@
 #include "guided_panel.h"
 
+#include "analysis_texts.h"
 #include "dict/cooking.h"
 #include "model/text_language.h"
 #include "model/tuning/workbench_rows.h"
@@ -269,16 +270,15 @@ void GuidedPanel::addIteration(int index)
     const model::GuidedSetup &s = m_tuning->setup();
     const int r = m_table->rowCount();
     m_table->setRowCount(r + 1);
-    const QStringList cells = {
-        QString::number(index + 1),
-        value(s.gains.p, it.gains.p),
-        s.gains.i ? value(s.gains.i, it.gains.i) : QStringLiteral("–"),
-        it.metrics   ? num(it.metrics->overshootPct, 1)
-        : it.problem ? tr("no figures: %1")
-                           .arg(QString::fromLatin1(model::stepProblemKey(*it.problem).data()))
-                     : QStringLiteral("–"),
-        it.metrics ? num(it.metrics->riseTime, 3) : QStringLiteral("–"),
-        it.metrics ? num(it.metrics->settlingTime2, 3) : QStringLiteral("–")};
+    const QStringList cells = {QString::number(index + 1),
+                               value(s.gains.p, it.gains.p),
+                               s.gains.i ? value(s.gains.i, it.gains.i) : QStringLiteral("–"),
+                               it.metrics   ? num(it.metrics->overshootPct, 1)
+                               : it.problem ? stepProblemText(*it.problem)
+                                            : QStringLiteral("–"),
+                               it.metrics ? num(it.metrics->riseTime, 3) : QStringLiteral("–"),
+                               it.metrics ? num(it.metrics->settlingTime2, 3)
+                                          : QStringLiteral("–")};
     for (int c = 0; c < cells.size(); ++c) {
         auto *item = new QTableWidgetItem(cells[c]);
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);

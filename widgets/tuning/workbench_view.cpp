@@ -1,9 +1,10 @@
 #include "workbench_view.h"
 
+#include "analysis_texts.h"
 #include "bode_plot.h"
-#include "guided_panel.h"
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
+#include "guided_panel.h"
 #include "model/monitor/set_value_step.h"
 #include "model/text_language.h"
 #include "model/tuning/workbench_rows.h"
@@ -48,38 +49,6 @@ QString rowText(const dev::ParamMeta &row)
     const QString label = QString::fromStdString(row.label.in(model::textLanguage()));
     return label.isEmpty() ? QString::fromStdString(row.name)
                            : QStringLiteral("%1 (%2)").arg(QString::fromStdString(row.name), label);
-}
-
-QString stepProblemText(model::StepProblem problem)
-{
-    switch (problem) {
-    case model::StepProblem::TooFewSamples:
-        return WorkbenchView::tr("no figures: too few samples in the hold");
-    case model::StepProblem::TooShort:
-        return WorkbenchView::tr("no figures: the hold is too short");
-    case model::StepProblem::ZeroStep: return WorkbenchView::tr("no figures: no step");
-    case model::StepProblem::NoResponse:
-        return WorkbenchView::tr("no figures: the response did not move");
-    case model::StepProblem::NotSettled:
-        return WorkbenchView::tr("no figures: not settled by the end of the hold");
-    }
-    return {};
-}
-
-QString frequencyProblemText(model::FrequencyProblem problem)
-{
-    switch (problem) {
-    case model::FrequencyProblem::None: return {};
-    case model::FrequencyProblem::BadRequest: return WorkbenchView::tr("no: not measurable");
-    case model::FrequencyProblem::OutsideRecording:
-        return WorkbenchView::tr("no: outside the recording");
-    case model::FrequencyProblem::TooFewSamples: return WorkbenchView::tr("no: too few samples");
-    case model::FrequencyProblem::NoExcitation:
-        return WorkbenchView::tr("no: the set value did not move");
-    case model::FrequencyProblem::AboveValidBand:
-        return WorkbenchView::tr("no: above the valid band");
-    }
-    return {};
 }
 
 void setRow(QTableWidget *table, int row, const QStringList &cells)
@@ -341,8 +310,8 @@ void WorkbenchView::setValueChosen()
     if (m && row) {
         const dev::Limits limits = dev::rowLimits(*row);
         const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
-        m_window->setSuffix(row->unit.empty() ? QString()
-                                              : QLatin1Char(' ') + QString::fromStdString(row->unit));
+        m_window->setSuffix(
+            row->unit.empty() ? QString() : QLatin1Char(' ') + QString::fromStdString(row->unit));
         m_form->setSetValue(QString::fromStdString(row->unit), row->scale.decimals,
                             std::min(limits.min * f, limits.max * f),
                             std::max(limits.min * f, limits.max * f));
@@ -532,8 +501,7 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
         for (const model::WriteItem &item : outcome.switchNeeded)
             lines << actuatorWriteLine(module->address, *item.row, item.before, item.value,
                                        model::textLanguage());
-        lines << outcome.reason
-              << tr("For the test only: afterwards the values are written back.");
+        lines << outcome.reason << tr("For the test only: afterwards the values are written back.");
         confirmActuatorWrites(this, lines, [this, spec, guard = QPointer<WorkbenchView>(this)] {
             if (!guard || !m_access)
                 return;
@@ -569,10 +537,10 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
     ++m_nextNumber;
     m_status = outcomeText(outcome);
     m_statusLabel->setText(m_status);
-    emit statusMessage(outcome.restored ? tr("Workbench: run %1 done, values restored.")
-                                              .arg(m_nextNumber - 1)
-                                        : tr("Workbench: run %1 ended, values NOT restored.")
-                                              .arg(m_nextNumber - 1));
+    emit statusMessage(
+        outcome.restored
+            ? tr("Workbench: run %1 done, values restored.").arg(m_nextNumber - 1)
+            : tr("Workbench: run %1 ended, values NOT restored.").arg(m_nextNumber - 1));
     if (!outcome.restore.empty())
         emit written(run->module, outcome.restore);
     addRun(std::move(run));
@@ -646,9 +614,7 @@ void WorkbenchView::fillResults(const model::TuningRun &run)
         for (const model::FrequencyPoint &p : a.points)
             setRow(m_results, r++,
                    {num(p.frequencyHz, 3), num(p.gainDb, 2), num(p.phaseDeg, 1), num(p.quality, 3),
-                    p.valid ? tr("yes")
-                            : tr("no: %1").arg(QString::fromLatin1(
-                                  model::frequencyProblemKey(p.problem).data()))});
+                    p.valid ? tr("yes") : frequencyProblemText(p.problem)});
         setRow(m_results, r++,
                {tr("−3 dB at"), a.f3dB ? num(*a.f3dB, 2) + tr(" Hz") : tr("not reached")});
         setRow(m_results, r++,

@@ -1,7 +1,7 @@
 // The guided gain change (model/tuning/guided_tuning.h) on the built-in simulator's position loop
-// (tests/support/loop_bench.h): it reaches its overshoot target from a too-soft and from a too-hard P gain,
-// Keep leaves the chosen gains and Abort the originals (read back from the device), and a refused
-// question writes nothing.
+// (tests/support/loop_bench.h): it reaches its overshoot target from a too-soft and from a too-hard
+// P gain, Keep leaves the chosen gains and Abort the originals (read back from the device), and a
+// refused question writes nothing.
 #include "loop_bench.h"
 #include "model/tuning/guided_tuning.h"
 

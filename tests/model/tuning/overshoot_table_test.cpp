@@ -25,21 +25,18 @@ TEST(WorkbenchOnTheSimulator, OvershootRisesWithC1_13AsThePlantTableSays)
     std::vector<double> measured;
     for (const Point &p : table) {
         ASSERT_TRUE(b.write("C1.13", p.kp));
-        TestRunSetup setup{b.rig->module(),
-                           &b.rig->row("A1.01"),
-                           *TestSignal::make(test::LoopBench::upStep(p.hold)),
-                           b.channels(),
-                           &b.rig->row("d1.11"),
-                           {},
-                           0,
-                           false};
+        TestRunSetup setup = TestRun::setupFor(b.rig->module(), b.rig->row("A1.01"),
+                                               *TestSignal::make(test::LoopBench::upStep(p.hold)));
+        setup.channels = b.channels();
+        setup.actualRow = &b.rig->row("d1.11");
         TestRun run(b.rig->access(), setup);
         std::optional<TestOutcome> done;
         QObject::connect(&run, &TestRun::finished, &run, [&](const TestOutcome &o) { done = o; });
         run.start();
         ASSERT_TRUE(test::waitFor(done, 10'000));
         ASSERT_EQ(done->end, TestEnd::Finished) << done->reason.toStdString();
-        const RunAnalysis a = analyseRun(setup.signal, run.recording(), setup.actualRow);
+        const RunAnalysis a =
+            analyseRun(setup.signal, run.recording(), setup.actualRow, setup.setValueRow);
         ASSERT_FALSE(a.steps.empty());
         ASSERT_TRUE(a.steps.front().metrics)
             << "C1.13 = " << p.kp << ": " << stepProblemKey(*a.steps.front().problem);

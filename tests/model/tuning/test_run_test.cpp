@@ -59,7 +59,10 @@ struct Bench
                          [&](const TestOutcome &o) { outcome = o; });
         test.start();
         EXPECT_TRUE(test::waitFor(outcome, kTestWaitMs));
-        return outcome.value_or(TestOutcome{TestEnd::LinkLost, "no end", false, false, {}});
+        TestOutcome none;
+        none.end = TestEnd::LinkLost;
+        none.reason = QStringLiteral("no end");
+        return outcome.value_or(none);
     }
 };
 
@@ -79,7 +82,7 @@ TEST(TestRun, AStepRecordsTheAcknowledgedSetValueAndPutsItBack)
     EXPECT_DOUBLE_EQ(r.setValue.y[1], 5.0);
     EXPECT_DOUBLE_EQ(r.setValue.t[0], 0);
     EXPECT_GT(r.setValue.t[1], 0.19);
-    ASSERT_EQ(r.channels.size(), 2u);
+    ASSERT_GE(r.channels.size(), 2u); // the monitor's channels: d1.10, d1.11, the currents
     EXPECT_GT(r.channels[1].t.size(), 5u);
     EXPECT_GE(r.channels[1].t.back(), 0.39);
     EXPECT_GT(r.sampleRateHz(), 10);
