@@ -1599,6 +1599,133 @@
     </message>
 </context>
 <context>
+    <name>vt::model::GuidedTuning</name>
+    <message>
+        <source>Choose a module and a set value first.</source>
+        <translation>Zuerst ein Modul und einen Sollwert wählen.</translation>
+    </message>
+    <message>
+        <source>The dictionary names no P gain for %1: there is nothing to tune.</source>
+        <translation>Das Wörterbuch nennt für %1 keinen P-Anteil: Es gibt nichts einzustellen.</translation>
+    </message>
+    <message>
+        <source>The dictionary names no response for %1: there is no overshoot to measure.</source>
+        <translation>Das Wörterbuch nennt für %1 keine Antwort: Es gibt kein Überschwingen zu messen.</translation>
+    </message>
+    <message>
+        <source>The guided change measures an up step: From below To, with a hold time.</source>
+        <translation>Die geführte Änderung misst einen Sprung nach oben: Von kleiner als Bis, mit einer Haltezeit.</translation>
+    </message>
+    <message>
+        <source>The overshoot limit must be more than 0 %.</source>
+        <translation>Die Grenze für das Überschwingen muss größer als 0 % sein.</translation>
+    </message>
+    <message>
+        <source>Allow at least one iteration.</source>
+        <translation>Mindestens einen Durchgang zulassen.</translation>
+    </message>
+    <message>
+        <source>Reading the gains failed: %1</source>
+        <translation>Lesen der Verstärkungen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>Aborted before anything was written.</source>
+        <translation>Abgebrochen, bevor etwas geschrieben wurde.</translation>
+    </message>
+    <message>
+        <source>The step cannot be run.</source>
+        <translation>Der Sprung kann nicht ausgeführt werden.</translation>
+    </message>
+    <message>
+        <source>Aborted.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The step test ended early: %1</source>
+        <translation>Der Sprungtest endete vorzeitig: %1</translation>
+    </message>
+    <message>
+        <source>Iteration %1: %2 rang past the set value and did not settle within the hold.</source>
+        <translation>Durchgang %1: Mit %2 schwang die Antwort über den Sollwert und kam innerhalb der Haltezeit nicht zur Ruhe.</translation>
+    </message>
+    <message>
+        <source>no step</source>
+        <translation>kein Sprung</translation>
+    </message>
+    <message>
+        <source>The step at %1 gave no figures (%2): hold it longer.</source>
+        <translation>Der Sprung mit %1 ergab keine Kennwerte (%2): Haltezeit verlängern.</translation>
+    </message>
+    <message>
+        <source>Iteration %1: %2 gave %3 % overshoot.</source>
+        <translation>Durchgang %1: %2 ergab %3 % Überschwingen.</translation>
+    </message>
+    <message>
+        <source>Next: %1.</source>
+        <translation>Als Nächstes: %1.</translation>
+    </message>
+    <message>
+        <source>The gains could not be written.</source>
+        <translation>Die Verstärkungen konnten nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Target reached with %1: Keep leaves these gains on the device, Abort puts back %2.</source>
+        <translation>Ziel erreicht mit %1: Übernehmen lässt diese Verstärkungen im Gerät, Abbrechen stellt %2 wieder her.</translation>
+    </message>
+    <message>
+        <source>No gain within the limit was found in the iterations allowed.</source>
+        <translation>In den zugelassenen Durchgängen wurde keine Verstärkung innerhalb der Grenze gefunden.</translation>
+    </message>
+    <message>
+        <source>The iterations ran out; the best within the limit is %1: Keep or Abort.</source>
+        <translation>Die Durchgänge sind aufgebraucht; die beste Einstellung innerhalb der Grenze ist %1: Übernehmen oder Abbrechen.</translation>
+    </message>
+    <message>
+        <source>Even the lowest gain overshoots more than the limit; the I portion or the ramps need a look.</source>
+        <translation>Selbst die kleinste Verstärkung schwingt weiter über als erlaubt; I-Anteil oder Rampen prüfen.</translation>
+    </message>
+    <message>
+        <source>Module %1: write %2?</source>
+        <translation>Modul %1: %2 schreiben?</translation>
+    </message>
+    <message>
+        <source>The change was refused; nothing was written. The device holds %1.</source>
+        <translation>Die Änderung wurde abgelehnt; nichts wurde geschrieben. Im Gerät steht %1.</translation>
+    </message>
+    <message>
+        <source>Keep or Abort.</source>
+        <translation>Übernehmen oder Abbrechen.</translation>
+    </message>
+    <message>
+        <source>Kept %1.</source>
+        <translation>Übernommen: %1.</translation>
+    </message>
+    <message>
+        <source>Keep %1.</source>
+        <translation>%1 übernehmen.</translation>
+    </message>
+    <message>
+        <source>The kept gains could not be written.</source>
+        <translation>Die übernommenen Verstärkungen konnten nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>The original gains are back: %1.</source>
+        <translation>Die ursprünglichen Verstärkungen sind wiederhergestellt: %1.</translation>
+    </message>
+    <message>
+        <source>The original gains are NOT back (%1): check the module.</source>
+        <translation>Die ursprünglichen Verstärkungen sind NICHT wiederhergestellt (%1): Modul prüfen.</translation>
+    </message>
+    <message>
+        <source>The step at %1 did not move the response (%2): check the feedback and the controller.</source>
+        <translation>Der Sprung mit %1 hat die Antwort nicht bewegt (%2): Rückführung und Regler prüfen.</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::IdentityTexts</name>
     <message>
         <source>%1-%2-%3</source>
@@ -3597,6 +3724,101 @@ Senden?</translation>
     </message>
 </context>
 <context>
+    <name>vt::ui::GuidedPanel</name>
+    <message>
+        <source>Connect and choose a module and its set value first.</source>
+        <translation>Zuerst verbinden und ein Modul und seinen Sollwert wählen.</translation>
+    </message>
+    <message>
+        <source>A test is running; start the guided tuning after it.</source>
+        <translation>Ein Test läuft; die geführte Reglereinstellung danach starten.</translation>
+    </message>
+    <message>
+        <source>Choose a step in the signal form: the guided tuning measures its up step (From, To, Hold).</source>
+        <translation>Im Signalformular einen Sprung wählen: Die geführte Reglereinstellung misst seinen Sprung nach oben (Von, Bis, Haltezeit).</translation>
+    </message>
+    <message>
+        <source>Guided tuning: up to %1 steps from %2 to %3, each held %4 s; every change of %5 is asked for (or allowed); Abort puts the gains back, and %6 is written back after each step.</source>
+        <translation>Geführte Reglereinstellung: bis zu %1 Sprünge von %2 auf %3, je %4 s gehalten; jede Änderung von %5 wird erfragt (oder ist freigegeben); Abbrechen stellt die Verstärkungen wieder her, und %6 wird nach jedem Sprung zurückgeschrieben.</translation>
+    </message>
+    <message>
+        <source>Iteration %1: measuring the step…</source>
+        <translation>Durchgang %1: Der Sprung wird gemessen …</translation>
+    </message>
+    <message>
+        <source>no figures: %1</source>
+        <translation>keine Kennwerte: %1</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Overshoot at most</source>
+        <translation>Überschwingen höchstens</translation>
+    </message>
+    <message>
+        <source>Fastest without overshoot</source>
+        <translation>Am schnellsten ohne Überschwingen</translation>
+    </message>
+    <message>
+        <source>Overshoot limit (%)</source>
+        <translation>Grenze Überschwingen (%)</translation>
+    </message>
+    <message>
+        <source>Iterations at most</source>
+        <translation>Durchgänge höchstens</translation>
+    </message>
+    <message>
+        <source>Allow the next gain changes without asking</source>
+        <translation>Die nächsten Änderungen der Verstärkung ohne Rückfrage zulassen</translation>
+    </message>
+    <message>
+        <source>Each iteration runs the up step of the signal form (From, To, Hold), reads the overshoot and proposes the next P gain; the I portion is kept. Keep leaves the chosen gains on the device, Abort puts the original ones back.</source>
+        <translation>Jeder Durchgang fährt den Sprung nach oben aus dem Signalformular (Von, Bis, Haltezeit), liest das Überschwingen und schlägt den nächsten P-Anteil vor; der I-Anteil bleibt. Übernehmen lässt die gewählten Verstärkungen im Gerät, Abbrechen stellt die ursprünglichen wieder her.</translation>
+    </message>
+    <message>
+        <source>Start Guided Tuning</source>
+        <translation>Geführte Reglereinstellung starten</translation>
+    </message>
+    <message>
+        <source>Keep</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Iteration</source>
+        <translation>Durchgang</translation>
+    </message>
+    <message>
+        <source>P gain</source>
+        <translation>P-Anteil</translation>
+    </message>
+    <message>
+        <source>I portion</source>
+        <translation>I-Anteil</translation>
+    </message>
+    <message>
+        <source>Overshoot (%)</source>
+        <translation>Überschwingen (%)</translation>
+    </message>
+    <message>
+        <source>Rise time (s)</source>
+        <translation>Anstiegszeit (s)</translation>
+    </message>
+    <message>
+        <source>Settling 2 % (s)</source>
+        <translation>Ausregelzeit 2 % (s)</translation>
+    </message>
+    <message>
+        <source>Switch the set-value source for each step and put it back afterwards?</source>
+        <translation>Die Sollwertquelle für jeden Sprung umschalten und danach zurückstellen?</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::HartPage</name>
     <message>
         <source>HART</source>
@@ -4429,6 +4651,13 @@ Senden?</translation>
     <message>
         <source>ValveTune User Guide</source>
         <translation>ValveTune-Benutzerhandbuch</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::WorkbenchView</name>
+    <message>
+        <source>Guided tuning</source>
+        <translation>Geführte Reglereinstellung</translation>
     </message>
 </context>
 <context>

@@ -39,7 +39,8 @@ void setActuatorAnswerHook(ActuatorAnswerHook hook)
     answerHook() = std::move(hook);
 }
 
-void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::function<void()> yes)
+void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::function<void()> yes,
+                           std::function<void()> no)
 {
     if (lines.isEmpty()) {
         yes();
@@ -48,6 +49,8 @@ void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::funct
     if (answerHook()) {
         if (answerHook()(lines))
             yes();
+        else if (no)
+            no();
         return;
     }
     auto *box = new QMessageBox(
@@ -61,10 +64,13 @@ void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::funct
     QPushButton *write = box->addButton(ActuatorConfirm::tr("Write"), QMessageBox::AcceptRole);
     QPushButton *cancel = box->addButton(QMessageBox::Cancel);
     box->setDefaultButton(cancel);
-    QObject::connect(box, &QMessageBox::finished, box, [box, write, yes = std::move(yes)](int) {
-        if (box->clickedButton() == write)
-            yes();
-    });
+    QObject::connect(box, &QMessageBox::finished, box,
+                     [box, write, yes = std::move(yes), no = std::move(no)](int) {
+                         if (box->clickedButton() == write)
+                             yes();
+                         else if (no)
+                             no();
+                     });
     box->open();
 }
 

@@ -21,8 +21,10 @@ QString actuatorWriteLine(int module, const dev::ParamMeta &row,
                           const std::optional<dev::RawValue> &before, const dev::RawValue &after,
                           dev::Language lang);
 
-// Asks the person (window-modal, non-blocking); `yes` runs only when they agree.
-void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::function<void()> yes);
+// Asks the person (window-modal, non-blocking); `yes` runs only when they agree, `no` (when
+// given) when they do not.
+void confirmActuatorWrites(QWidget *parent, const QStringList &lines, std::function<void()> yes,
+                           std::function<void()> no = {});
 
 // Asks whether to put back what the tool changed (default: yes); `answer(true)` to put back.
 void askRestoreActuators(QWidget *parent, const QString &when, const QStringList &lines,

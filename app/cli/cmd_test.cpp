@@ -312,9 +312,10 @@ int runTest(const QStringList &argsIn, Context &ctx)
                             (reason.in(run.lang()).empty() ? "" : ": " + reason.in(run.lang())) +
                             "; nothing was sent");
     }
-    model::TestRunSetup setup{*module, setValue, *signal, {}, {}, p.window, p.rate, true};
-    setup.channels = model::recordedRows(dict, mode, *setValue);
-    setup.actualRow = model::responseRow(dict, mode, *setValue);
+    model::TestRunSetup setup = model::TestRun::setupFor(*module, *setValue, *signal);
+    setup.window = p.window;
+    setup.rateHz = p.rate;
+    setup.switchSource = true; // the confirmation below lists the source rows
     if (const QString problem = model::TestRun::rangeProblem(setup); !problem.isEmpty())
         return ctx.fail(kExitUsage, str(problem) + "; nothing was sent");
 
@@ -322,19 +323,19 @@ int runTest(const QStringList &argsIn, Context &ctx)
     const auto rules = model::SetValueStep::activationRules(dict, mode);
     std::vector<GateItem> gated;
     const double factor = setValue->scale.factor != 0 ? setValue->scale.factor : 1.0;
-    gated.push_back(
-        {&*module, setValue, dev::RawValue{std::round(signal->maximum() / factor)}, {}});
-    if (signal->minimum() != signal->maximum())
-        gated.push_back(
-            {&*module, setValue, dev::RawValue{std::round(signal->minimum() / factor)}, {}});
+    const dev::RawValue highest{std::round(signal->maximum() / factor)};
+    const dev::RawValue lowest{std::round(signal->minimum() / factor)};
+    gated.push_back({&*module, setValue, highest, {}});
+    gated.push_back({&*module, setValue, lowest, {}});
     for (const dev::SetValueActivation *rule : rules)
-        gated.push_back(
-            {&*module, model::SetValueStep::ruleRow(dict, *rule), dev::RawValue{rule->value}, {}});
-    const std::string what = std::string("a ") + key(*kind) + " test of " +
-                             fixed(signal->duration(), 1) + " s on " + setValue->name +
-                             " between " + displayOf(*setValue, gated.back().value, run.lang()) +
-                             " and " + displayOf(*setValue, gated.front().value, run.lang()) +
-                             "; afterwards everything is written back";
+        gated.push_back({&*module,
+                         model::SetValueStep::ruleWriteRow(dict, *rule),
+                         dev::RawValue{rule->value},
+                         {}});
+    const std::string what =
+        std::string("a ") + key(*kind) + " test of " + fixed(signal->duration(), 1) + " s on " +
+        setValue->name + " between " + displayOf(*setValue, lowest, run.lang()) + " and " +
+        displayOf(*setValue, highest, run.lang()) + "; afterwards everything is written back";
     if (const int c = gate.pass(run, std::move(gated), what))
         return c;
 

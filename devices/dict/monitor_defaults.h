@@ -7,6 +7,7 @@
 #include "core/local_text.h"
 #include "dsp408/state_machine.h"
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -33,6 +34,15 @@ struct SetValueActivation
     bool holds(double held) const;
 };
 
+// A row whose value says the module is in error (OPAT ERR "0 = no error present"; DMA 0xB0 bit
+// 11 "Error"): while (value & mask) differs from `ok`, a workbench test stops.
+struct FaultRow
+{
+    std::string row;
+    std::uint32_t mask = 0xFFFF'FFFF;
+    std::uint32_t ok = 0;
+};
+
 struct MonitorDefaults
 {
     std::vector<std::string> channels;          // plotted when monitoring starts, in this order
@@ -41,7 +51,8 @@ struct MonitorDefaults
     // Set value → the row that answers it (the workbench's actual value: d1.11 for A1.01 in
     // closed loop, the solenoid current in open loop). A set value without one has no analysis.
     std::map<std::string, std::string> responses;
-    LocalText noSetValue; // why there is no step, when setValues is empty
+    std::optional<FaultRow> fault; // none: the module reports errors only to the PLC
+    LocalText noSetValue;          // why there is no step, when setValues is empty
 };
 
 // The dictionary-level defaults and their per-mode overrides (a mode entry replaces the keys it

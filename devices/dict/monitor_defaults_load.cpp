@@ -171,8 +171,9 @@ private:
 
     MonitorDefaults entry(const Json &j, const std::string &mode, bool top)
     {
-        static const std::set<std::string> kKeys = {
-            "channels", "set_values", "activation", "responses", "no_set_value", "note", "modes"};
+        static const std::set<std::string> kKeys = {"channels",  "set_values", "activation",
+                                                    "responses", "fault",      "no_set_value",
+                                                    "note",      "modes"};
         for (const auto &[key, value] : j.items())
             if (!kKeys.count(key) || (!top && key == "modes"))
                 fail("\"monitor\" has an unknown key '" + key + "'");
@@ -225,6 +226,24 @@ private:
                     }
                     out.responses[set] = p->name;
                 }
+        }
+        if (j.contains("fault")) {
+            const Json &f = j["fault"];
+            const auto whole = [&](const char *key) {
+                return f.contains(key) && f[key].is_number_unsigned() &&
+                       f[key].get<std::uint64_t>() <= 0xFFFF'FFFFu;
+            };
+            const ParamMeta *p = f.is_object() && f.contains("row") && f["row"].is_string() &&
+                                         whole("ok") && (!f.contains("mask") || whole("mask"))
+                                     ? row(f["row"].get<std::string>(), mode, "fault")
+                                     : nullptr;
+            if (!p || !p->readable() || p->isString())
+                fail("\"monitor\".\"fault\" needs a readable numeric \"row\", its \"ok\" "
+                     "value and optionally a \"mask\" (whole numbers)");
+            else
+                out.fault =
+                    FaultRow{p->name, static_cast<std::uint32_t>(f.value("mask", 0xFFFF'FFFFu)),
+                             static_cast<std::uint32_t>(f["ok"].get<std::uint64_t>())};
         }
         out.noSetValue = text(j.value("no_set_value", Json()));
         if (out.setValues.empty() && !out.noSetValue.complete())

@@ -4,8 +4,10 @@
 #include "dict/cooking.h"
 #include "model/monitor/set_value_step.h"
 #include "model/text_language.h"
+#include "model/tuning/workbench_rows.h"
 
 #include <QLocale>
+#include <QStringList>
 #include <array>
 #include <cmath>
 
@@ -107,6 +109,23 @@ double TestRun::raw(double display) const
     return std::round(display / factor);
 }
 
+TestRunSetup TestRun::setupFor(const ModuleInfo &module, const dev::ParamMeta &setValue,
+                               const TestSignal &signal)
+{
+    TestRunSetup setup{module, &setValue, signal,  {}, nullptr, std::nullopt,
+                       0,      false,     nullptr, 0,  0};
+    const dev::Dictionary &dict = *module.dictionary;
+    const std::string &mode = module.identification.mode;
+    setup.channels = recordedRows(dict, mode, setValue);
+    setup.actualRow = responseRow(dict, mode, setValue);
+    if (const dev::FaultRow *fault = faultCheck(dict, mode)) {
+        setup.faultRow = dict.find(fault->row);
+        setup.faultMask = fault->mask;
+        setup.faultOk = fault->ok;
+    }
+    return setup;
+}
+
 QString TestRun::rangeProblem(const TestRunSetup &setup)
 {
     const dev::ParamMeta *row = setup.setValueRow;
@@ -152,14 +171,27 @@ void TestRun::check()
     m_phase = Phase::Checking;
     const dev::Dictionary &dict = *m_setup.module.dictionary;
     const auto rules = SetValueStep::activationRules(dict, m_setup.module.identification.mode);
+    // Each rule's row (for a state rule the status word), the row written to meet it when that is
+    // another one and readable (the control word: its value now is what goes back after the
+    // test), then the set value.
     std::vector<const dev::ParamMeta *> rows;
+    std::vector<std::optional<std::size_t>> writtenAt;
     for (const dev::SetValueActivation *rule : rules)
         rows.push_back(SetValueStep::ruleRow(dict, *rule));
+    for (const dev::SetValueActivation *rule : rules) {
+        const dev::ParamMeta *w = SetValueStep::ruleWriteRow(dict, *rule);
+        if (w != SetValueStep::ruleRow(dict, *rule) && w->readable()) {
+            writtenAt.push_back(rows.size());
+            rows.push_back(w);
+        } else {
+            writtenAt.push_back(std::nullopt);
+        }
+    }
     rows.push_back(m_setup.setValueRow);
     const auto alive = m_alive;
     m_read = m_access.read(
         m_setup.module.address, rows, Priority::User,
-        [this, alive, rules, rows](const ReadResult &result) {
+        [this, alive, rules, rows, writtenAt](const ReadResult &result) {
             if (!*alive)
                 return;
             if (!result.complete() || result.values.size() != rows.size()) {
@@ -174,33 +206,44 @@ void TestRun::check()
                 return;
             }
             m_original = result.values.back().value;
+            const dev::Dictionary &d = *m_setup.module.dictionary;
             for (std::size_t i = 0; i < rules.size(); ++i) {
                 const double held = dev::rawNumber(result.values[i].value);
-                if (held == rules[i]->value)
+                if (rules[i]->holds(held))
                     continue;
-                if (!m_setup.switchSource) {
-                    m_phase = Phase::Done;
-                    m_outcome.end = TestEnd::Refused;
-                    m_outcome.needsSource = true;
+                WriteItem item;
+                item.row = SetValueStep::ruleWriteRow(d, *rules[i]);
+                item.value = rules[i]->value;
+                if (!writtenAt[i] && item.row == rows[i])
+                    item.before = result.values[i].value;
+                else if (writtenAt[i])
+                    item.before = result.values[*writtenAt[i]].value;
+                if (!m_setup.switchSource && !m_outcome.needsSource)
                     m_outcome.reason = SetValueStep::refusalText(*m_setup.setValueRow, *rows[i],
                                                                  *rules[i], held, textLanguage());
-                    m_outcome.restored = true;
-                    emit finished(m_outcome);
-                    return;
-                }
-                WriteItem item;
-                item.row = rows[i];
-                item.value = rules[i]->value;
-                item.before = result.values[i].value;
+                m_outcome.needsSource = true;
                 m_sourceChanges.push_back(item);
             }
+            if (!m_setup.switchSource && m_outcome.needsSource) {
+                m_phase = Phase::Done;
+                m_outcome.end = TestEnd::Refused;
+                m_outcome.switchNeeded = std::move(m_sourceChanges);
+                m_sourceChanges.clear();
+                m_outcome.restored = true;
+                emit finished(m_outcome);
+                return;
+            }
+            m_outcome.needsSource = false;
             if (m_sourceChanges.empty()) {
                 begin();
                 return;
             }
             m_phase = Phase::Switching;
-            m_job = std::make_unique<WriteJob>(m_access, m_setup.module.address,
-                                               *m_setup.module.dictionary, m_sourceChanges);
+            WriteOptions options;
+            options.skipUnchanged = false; // a state rule's control word may read as commanded
+            m_job =
+                std::make_unique<WriteJob>(m_access, m_setup.module.address,
+                                           *m_setup.module.dictionary, m_sourceChanges, options);
             connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
                 m_sourceChanges = m_job->items();
                 m_job.release()->deleteLater();
@@ -280,7 +323,10 @@ void TestRun::cycle()
 
 void TestRun::readChannels()
 {
+    // The channels, the fault row and the set value itself, in one read.
     std::vector<const dev::ParamMeta *> rows = m_setup.channels;
+    if (m_setup.faultRow)
+        rows.push_back(m_setup.faultRow);
     rows.push_back(m_setup.setValueRow);
     const auto alive = m_alive;
     m_read = m_access.read(
@@ -300,7 +346,8 @@ void TestRun::readChannels()
             const double t = now() - m_recording.sessionStart;
             ++m_recording.cycles;
             std::optional<double> actual;
-            for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+            const std::size_t channels = m_setup.channels.size();
+            for (std::size_t i = 0; i < channels; ++i) {
                 const double v = dev::toDisplay(*rows[i], dev::rawNumber(result.values[i].value));
                 m_recording.channels[i].t.push_back(t);
                 m_recording.channels[i].y.push_back(v);
@@ -308,6 +355,16 @@ void TestRun::readChannels()
                     actual = v;
             }
             emit sampled();
+            if (m_setup.faultRow) {
+                const double fault = dev::rawNumber(result.values[channels].value);
+                const auto bits = static_cast<std::uint32_t>(static_cast<std::int64_t>(fault));
+                if ((bits & m_setup.faultMask) != m_setup.faultOk) {
+                    end(TestEnd::DeviceError, tr("The module reports an error: %1 = %2.")
+                                                  .arg(rowName(*m_setup.faultRow),
+                                                       displayText(*m_setup.faultRow, fault)));
+                    return;
+                }
+            }
             const double held = dev::rawNumber(result.values.back().value);
             if (m_lastRaw && held != *m_lastRaw) {
                 end(TestEnd::DeviceError,
@@ -385,18 +442,34 @@ void TestRun::restore()
     }
     // The source goes back after the set value, so the valve never sees the test's value from
     // an analogue input again.
-    for (const WriteItem &changed : m_sourceChanges) {
-        if (!changed.before || !isOnDevice(changed.status))
+    // In the reverse order of switching: a state goes back before the rows that may change only
+    // outside it (SD7 db_Local / db_DeviceMode only in INIT or DISABLED, HART-7 manual §4.2.1).
+    for (auto it = m_sourceChanges.rbegin(); it != m_sourceChanges.rend(); ++it) {
+        const WriteItem &changed = *it;
+        if (!isOnDevice(changed.status))
             continue;
+        if (!changed.before) {
+            m_unrestorable.push_back(changed.row);
+            continue;
+        }
         WriteItem item;
         item.row = changed.row;
         item.value = *changed.before;
         item.before = changed.value;
         items.push_back(item);
     }
+    if (!m_unrestorable.empty()) {
+        QStringList names;
+        for (const dev::ParamMeta *row : m_unrestorable)
+            names << rowName(*row);
+        m_outcome.reason += (m_outcome.reason.isEmpty() ? QString() : QStringLiteral(" "));
+        m_outcome.reason += tr("%1 cannot be put back: its value before the test could not be "
+                               "read.")
+                                .arg(names.join(QStringLiteral(", ")));
+    }
     if (items.empty()) {
         m_phase = Phase::Done;
-        m_outcome.restored = true;
+        m_outcome.restored = m_unrestorable.empty();
         emit finished(m_outcome);
         return;
     }
@@ -406,7 +479,7 @@ void TestRun::restore()
                                        std::move(items), options);
     connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
         m_outcome.restore = m_job->items();
-        m_outcome.restored = complete;
+        m_outcome.restored = complete && m_unrestorable.empty();
         m_job.release()->deleteLater();
         m_phase = Phase::Done;
         emit finished(m_outcome);

@@ -39,6 +39,11 @@ struct TestRunSetup
     // Cycles (write + read) per second; 0: as fast as the link allows. At most kMaxRateHz.
     double rateHz = 0;
     bool switchSource = false; // write the activation rows for the test, restore them after
+    // Read each cycle: while (value & faultMask) differs from faultOk the module is in error and
+    // the test stops.
+    const dev::ParamMeta *faultRow = nullptr;
+    std::uint32_t faultMask = 0;
+    std::uint32_t faultOk = 0;
 };
 
 enum class TestEnd {
@@ -56,7 +61,8 @@ struct TestOutcome
     TestEnd end = TestEnd::Finished;
     QString reason;           // for people, empty when finished
     bool needsSource = false; // Refused because an activation row differs (switchSource offered)
-    bool restored = false;    // the set value (and a switched source) is back and verified
+    std::vector<WriteItem> switchNeeded; // when needsSource: what switching would write
+    bool restored = false;          // the set value (and a switched source) is back and verified
     std::vector<WriteItem> restore; // what was written back, with its verification
 };
 
@@ -73,6 +79,10 @@ public:
     // Seconds of the signal done (0 before the first acknowledgement).
     double elapsed() const;
 
+    // A setup with the rows the dictionary names for `setValue` in the module's mode: the
+    // recorded channels, the response (the actual value) and the fault row (workbench_rows.h).
+    static TestRunSetup setupFor(const ModuleInfo &module, const dev::ParamMeta &setValue,
+                                 const TestSignal &signal);
     // The range check of the signal against the row's limits and the window (empty: fine).
     static QString rangeProblem(const TestRunSetup &setup);
 
@@ -102,9 +112,10 @@ private:
     TestRecording m_recording;
     TestOutcome m_outcome;
     Phase m_phase = Phase::Idle;
-    std::optional<dev::RawValue> m_original; // the set value before the test
-    std::vector<WriteItem> m_sourceChanges;  // activation rows switched for the test
-    std::optional<double> m_lastRaw;         // the set value last acknowledged
+    std::optional<dev::RawValue> m_original;            // the set value before the test
+    std::vector<WriteItem> m_sourceChanges;             // activation rows switched for the test
+    std::vector<const dev::ParamMeta *> m_unrestorable; // switched, value before unknown
+    std::optional<double> m_lastRaw;                    // the set value last acknowledged
     bool m_stopRequested = false;
     bool m_attempted = false;    // a set-value write was sent
     double m_lateBy = 0;         // s the signal's clock waited for late cycles

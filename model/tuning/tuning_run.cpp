@@ -42,6 +42,22 @@ std::optional<QByteArray> readBounded(const QString &path, QString *why)
 
 } // namespace
 
+std::unique_ptr<TuningRun> newRun(int number, const TestRunSetup &setup, const DeviceImage &image)
+{
+    auto run = std::make_unique<TuningRun>();
+    run->number = number;
+    run->started = QDateTime::currentDateTime();
+    run->module = setup.module.address;
+    run->family = setup.module.identification.family;
+    run->mode = setup.module.identification.mode;
+    run->dictionary = setup.module.dictionary;
+    run->setValueRow = setup.setValueRow;
+    run->responseRow = setup.actualRow;
+    run->spec = setup.signal.spec();
+    run->settings = settingsSnapshot(image, setup.module);
+    return run;
+}
+
 std::vector<RunSetting> settingsSnapshot(const DeviceImage &image, const ModuleInfo &module)
 {
     std::vector<RunSetting> out;

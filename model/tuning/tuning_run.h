@@ -14,6 +14,7 @@
 
 #include <QDateTime>
 #include <QString>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,10 @@ struct TuningRun
     bool restored = false;
     std::vector<RunSetting> settings; // settings rows with a value the device confirmed
 };
+
+// A run about to record `setup`: number, start time, module, rows, signal and the settings the
+// image holds now; recording, analysis and end follow when the test is over.
+std::unique_ptr<TuningRun> newRun(int number, const TestRunSetup &setup, const DeviceImage &image);
 
 // Settings rows of the module with the value the image holds for them, in dictionary order.
 std::vector<RunSetting> settingsSnapshot(const DeviceImage &image, const ModuleInfo &module);

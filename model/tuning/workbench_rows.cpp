@@ -52,4 +52,10 @@ std::vector<const dev::ParamMeta *> recordedRows(const dev::Dictionary &dictiona
     return rows;
 }
 
+const dev::FaultRow *faultCheck(const dev::Dictionary &dictionary, const std::string &mode)
+{
+    const auto &fault = dictionary.monitor.forMode(mode).fault;
+    return fault && dictionary.find(fault->row) ? &*fault : nullptr;
+}
+
 } // namespace vt::model

@@ -26,4 +26,7 @@ std::vector<const dev::ParamMeta *> recordedRows(const dev::Dictionary &dictiona
                                                  const std::string &mode,
                                                  const dev::ParamMeta &setValue);
 
+// The row whose value says the module is in error (the dictionary's "monitor"."fault"), or null.
+const dev::FaultRow *faultCheck(const dev::Dictionary &dictionary, const std::string &mode);
+
 } // namespace vt::model

@@ -28,7 +28,7 @@ BodePlot::BodePlot(QWidget *parent) : QCustomPlot(parent)
     connect(m_gain->axis(QCPAxis::atBottom), qOverload<const QCPRange &>(&QCPAxis::rangeChanged),
             m_phase->axis(QCPAxis::atBottom), qOverload<const QCPRange &>(&QCPAxis::setRange));
     setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    setMinimumHeight(220);
+    setMinimumHeight(160);
     retranslate();
 }
 

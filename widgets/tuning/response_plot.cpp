@@ -31,12 +31,12 @@ QVector<double> vec(const std::vector<double> &v, double shift = 0)
 ResponsePlot::ResponsePlot(QWidget *parent) : QCustomPlot(parent)
 {
     setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    legend->setVisible(true);
+    legend->setVisible(false); // shown with the first curve
     QFont small = legend->font();
     small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.85));
     legend->setFont(small);
     axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
-    setMinimumHeight(180);
+    setMinimumHeight(120);
     retranslate();
 }
 
@@ -51,6 +51,7 @@ void ResponsePlot::showRuns(const std::vector<const model::TuningRun *> &runs)
     clearItems();
     for (std::size_t i = 0; i < runs.size(); ++i)
         addRun(*runs[i], runs[i]->recording, static_cast<int>(i), alignment(*runs[i]), i == 0);
+    legend->setVisible(graphCount() > 0);
     rescaleAxes();
     yAxis->scaleRange(1.1, yAxis->range().center());
     replot();
@@ -61,6 +62,7 @@ void ResponsePlot::showLive(const model::TuningRun &run, const model::TestRecord
     clearGraphs();
     clearItems();
     addRun(run, recording, 0, 0, false);
+    legend->setVisible(graphCount() > 0);
     rescaleAxes();
     yAxis->scaleRange(1.1, yAxis->range().center());
     replot(QCustomPlot::rpQueuedReplot);

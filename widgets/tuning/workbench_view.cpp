@@ -1,8 +1,10 @@
 #include "workbench_view.h"
 
+#include "analysis_texts.h"
 #include "bode_plot.h"
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
+#include "guided_panel.h"
 #include "model/monitor/set_value_step.h"
 #include "model/text_language.h"
 #include "model/tuning/workbench_rows.h"
@@ -22,6 +24,7 @@
 #include <QListWidget>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -84,54 +87,69 @@ void WorkbenchView::build()
     auto *splitter = new QSplitter(Qt::Horizontal, this);
     outer->addWidget(splitter);
 
+    // Left: what to test (scrolls when the dock is low), then Start / Stop and the outcome, which
+    // stay in view.
     auto *left = new QWidget(splitter);
-    auto *column = new QVBoxLayout(left);
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    auto *scroll = new QScrollArea(left);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *settings = new QWidget(scroll);
+    auto *column = new QVBoxLayout(settings);
     auto *target = new QFormLayout;
-    m_moduleLabel = new QLabel(left);
-    m_module = new QComboBox(left);
+    m_moduleLabel = new QLabel(settings);
+    m_module = new QComboBox(settings);
     target->addRow(m_moduleLabel, m_module);
-    m_setValueLabel = new QLabel(left);
-    m_setValue = new QComboBox(left);
+    m_setValueLabel = new QLabel(settings);
+    m_setValue = new QComboBox(settings);
     target->addRow(m_setValueLabel, m_setValue);
-    m_responseLabel = new QLabel(left);
+    m_responseLabel = new QLabel(settings);
     m_responseLabel->setWordWrap(true);
     target->addRow(m_responseLabel);
     column->addLayout(target);
-    m_form = new SignalForm(left);
+    m_form = new SignalForm(settings);
     column->addWidget(m_form);
     auto *limits = new QFormLayout;
-    m_rateLabel = new QLabel(left);
-    m_rate = new NumberBox(left);
+    m_rateLabel = new QLabel(settings);
+    m_rate = new NumberBox(settings);
     m_rate->setDecimals(0);
-    m_rate->setRange(0, 1000);
+    m_rate->setRange(0, model::kMaxRateHz);
     m_rate->setValue(0);
     limits->addRow(m_rateLabel, m_rate);
-    m_useWindow = new QCheckBox(left);
-    m_window = new NumberBox(left);
+    m_useWindow = new QCheckBox(settings);
+    m_window = new NumberBox(settings);
     m_window->setDecimals(3);
     m_window->setRange(0.001, 100);
     m_window->setValue(1);
     limits->addRow(m_useWindow, m_window);
     column->addLayout(limits);
+    m_runsLabel = new QLabel(settings);
+    column->addWidget(m_runsLabel);
+    m_runList = new QListWidget(settings);
+    m_runList->setMinimumHeight(60);
+    column->addWidget(m_runList, 1);
+    auto *files = new QHBoxLayout;
+    m_save = new QPushButton(settings);
+    m_load = new QPushButton(settings);
+    files->addWidget(m_save);
+    files->addWidget(m_load);
+    column->addLayout(files);
+    scroll->setWidget(settings);
+    leftLayout->addWidget(scroll, 1);
     auto *buttons = new QHBoxLayout;
     m_start = new QPushButton(left);
     m_stop = new QPushButton(left);
     buttons->addWidget(m_start);
     buttons->addWidget(m_stop);
-    column->addLayout(buttons);
+    leftLayout->addLayout(buttons);
     m_statusLabel = new QLabel(left);
     m_statusLabel->setWordWrap(true);
     m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    column->addWidget(m_statusLabel);
-    m_runList = new QListWidget(left);
-    column->addWidget(m_runList, 1);
-    auto *files = new QHBoxLayout;
-    m_save = new QPushButton(left);
-    m_load = new QPushButton(left);
-    files->addWidget(m_save);
-    files->addWidget(m_load);
-    column->addLayout(files);
+    m_statusLabel->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
+    leftLayout->addWidget(m_statusLabel);
 
+    // Right: the plot over the results, the plot taking most of the height.
     auto *right = new QSplitter(Qt::Vertical, splitter);
     m_plots = new QStackedWidget(right);
     m_response = new ResponsePlot(m_plots);
@@ -145,9 +163,11 @@ void WorkbenchView::build()
         t->verticalHeader()->setVisible(false);
         t->setEditTriggers(QAbstractItemView::NoEditTriggers);
         t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        t->setMinimumHeight(60);
     }
     m_tabs->addTab(m_results, QString());
     m_tabs->addTab(m_differences, QString());
+    buildGuided();
     right->setStretchFactor(0, 3);
     right->setStretchFactor(1, 2);
     splitter->setStretchFactor(0, 0);
@@ -163,6 +183,34 @@ void WorkbenchView::build()
     connect(m_runList, &QListWidget::currentRowChanged, this, &WorkbenchView::showCurrent);
     connect(m_runList, &QListWidget::itemChanged, this, &WorkbenchView::showCurrent);
     connect(m_form, &SignalForm::changed, this, &WorkbenchView::updateEnabled);
+}
+
+// The guided gain change (guided_panel.h) drives this view's module, set value and step, and
+// hands its iterations to the run list (overlaid) and its writes to the journal.
+void WorkbenchView::buildGuided()
+{
+    GuidedHooks hooks;
+    hooks.access = [this] { return m_access; };
+    hooks.module = [this] { return currentModule(); };
+    hooks.setValue = [this] { return currentSetValue(); };
+    hooks.signal = [this] { return m_form->spec(); };
+    hooks.rateHz = [this] { return m_rate->value(); };
+    hooks.window = [this] {
+        return m_useWindow->isChecked() ? std::optional<double>(m_window->value()) : std::nullopt;
+    };
+    hooks.busy = [this] { return isRunning(); };
+    hooks.addRun = [this](std::unique_ptr<model::TuningRun> run, bool overlayPrevious) {
+        run->number = m_nextNumber;
+        addRun(std::move(run));
+        if (overlayPrevious && m_runList->count() >= 2)
+            m_runList->item(m_runList->count() - 2)->setCheckState(Qt::Checked);
+    };
+    hooks.written = [this](int module, const std::vector<model::WriteItem> &items) {
+        emit written(module, items);
+    };
+    m_guided = new GuidedPanel(std::move(hooks), m_tabs);
+    m_tabs->addTab(m_guided, QString());
+    connect(m_guided, &GuidedPanel::activeChanged, this, &WorkbenchView::updateEnabled);
 }
 
 void WorkbenchView::setConnection(model::DeviceAccess *access,
@@ -193,6 +241,7 @@ void WorkbenchView::clearConnection()
     if (m_test && m_test->isRunning())
         m_test->stop();
     m_test.reset();
+    m_guided->clearConnection();
     m_live.reset();
     m_access = nullptr;
     m_modules.clear();
@@ -261,6 +310,8 @@ void WorkbenchView::setValueChosen()
     if (m && row) {
         const dev::Limits limits = dev::rowLimits(*row);
         const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
+        m_window->setSuffix(
+            row->unit.empty() ? QString() : QLatin1Char(' ') + QString::fromStdString(row->unit));
         m_form->setSetValue(QString::fromStdString(row->unit), row->scale.decimals,
                             std::min(limits.min * f, limits.max * f),
                             std::max(limits.min * f, limits.max * f));
@@ -281,11 +332,12 @@ void WorkbenchView::setValueChosen()
 void WorkbenchView::updateEnabled()
 {
     const bool running = isRunning();
-    const bool ready = m_access && currentSetValue() && !running;
+    const bool guided = m_guided && m_guided->isActive();
+    const bool ready = m_access && currentSetValue() && !running && !guided;
     m_start->setEnabled(ready);
     m_stop->setEnabled(running);
-    m_module->setEnabled(!running);
-    m_setValue->setEnabled(!running);
+    m_module->setEnabled(!running && !guided);
+    m_setValue->setEnabled(!running && !guided);
     m_form->setEnabled(!running);
     m_rate->setEnabled(!running);
     m_useWindow->setEnabled(!running);
@@ -308,7 +360,7 @@ void WorkbenchView::start()
 {
     const model::ModuleInfo *module = currentModule();
     const dev::ParamMeta *row = currentSetValue();
-    if (!m_access || !module || !row || isRunning())
+    if (!m_access || !module || !row || isRunning() || m_guided->isActive())
         return;
     const auto spec = m_form->spec();
     const auto fail = [this](const QString &text) {
@@ -327,9 +379,8 @@ void WorkbenchView::start()
     const auto signal = model::TestSignal::make(*spec, &why);
     if (!signal)
         return fail(tr("This signal cannot be run: %1").arg(QString::fromStdString(why)));
-    model::TestRunSetup setup{*module, row, *signal, {}, {}, {}, m_rate->value(), false};
-    setup.channels = model::recordedRows(*module->dictionary, module->identification.mode, *row);
-    setup.actualRow = model::responseRow(*module->dictionary, module->identification.mode, *row);
+    model::TestRunSetup setup = model::TestRun::setupFor(*module, *row, *signal);
+    setup.rateHz = m_rate->value();
     if (m_useWindow->isChecked())
         setup.window = m_window->value();
     if (const QString problem = model::TestRun::rangeProblem(setup); !problem.isEmpty())
@@ -360,17 +411,7 @@ void WorkbenchView::begin(model::TestRunSetup setup)
 {
     if (!m_access || isRunning())
         return;
-    m_live = std::make_unique<model::TuningRun>();
-    m_live->number = m_nextNumber;
-    m_live->started = QDateTime::currentDateTime();
-    m_live->module = setup.module.address;
-    m_live->family = setup.module.identification.family;
-    m_live->mode = setup.module.identification.mode;
-    m_live->dictionary = setup.module.dictionary;
-    m_live->setValueRow = setup.setValueRow;
-    m_live->responseRow = setup.actualRow;
-    m_live->spec = setup.signal.spec();
-    m_live->settings = model::settingsSnapshot(m_access->image(), setup.module);
+    m_live = model::newRun(m_nextNumber, setup, m_access->image());
     m_test = std::make_unique<model::TestRun>(*m_access, std::move(setup));
     connect(m_test.get(), &model::TestRun::sampled, this, [this] {
         if (!m_redraw.isActive())
@@ -396,9 +437,13 @@ void WorkbenchView::refreshLive()
         return;
     const model::TestRecording &r = m_test->recording();
     m_response->showLive(*m_live, r);
-    m_status = tr("Running: %1 of %2 s; set value updated at %3 Hz, sampled at %4 Hz.")
-                   .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
-                        num(r.updateRateHz(), 1), num(r.sampleRateHz(), 1));
+    m_status = r.setValue.t.size() < 2
+                   ? tr("Running: %1 of %2 s; sampled at %3 Hz.")
+                         .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
+                              num(r.sampleRateHz(), 0))
+                   : tr("Running: %1 of %2 s; set value updated at %3 Hz, sampled at %4 Hz.")
+                         .arg(num(m_test->elapsed(), 1), num(m_test->setup().signal.duration(), 1),
+                              num(r.updateRateHz(), 1), num(r.sampleRateHz(), 0));
     m_statusLabel->setText(m_status);
 }
 
@@ -452,9 +497,11 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
         if (!module || !row)
             return;
         const auto spec = m_live->spec;
-        const QStringList lines = {
-            outcome.reason,
-            tr("Switch the set-value source for the test and put it back afterwards?")};
+        QStringList lines;
+        for (const model::WriteItem &item : outcome.switchNeeded)
+            lines << actuatorWriteLine(module->address, *item.row, item.before, item.value,
+                                       model::textLanguage());
+        lines << outcome.reason << tr("For the test only: afterwards the values are written back.");
         confirmActuatorWrites(this, lines, [this, spec, guard = QPointer<WorkbenchView>(this)] {
             if (!guard || !m_access)
                 return;
@@ -463,9 +510,9 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
             const auto signal = model::TestSignal::make(spec);
             if (!m || !r || !signal)
                 return;
-            model::TestRunSetup again{*m, r, *signal, {}, {}, {}, m_rate->value(), true};
-            again.channels = model::recordedRows(*m->dictionary, m->identification.mode, *r);
-            again.actualRow = model::responseRow(*m->dictionary, m->identification.mode, *r);
+            model::TestRunSetup again = model::TestRun::setupFor(*m, *r, *signal);
+            again.rateHz = m_rate->value();
+            again.switchSource = true;
             if (m_useWindow->isChecked())
                 again.window = m_window->value();
             begin(again);
@@ -490,7 +537,10 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
     ++m_nextNumber;
     m_status = outcomeText(outcome);
     m_statusLabel->setText(m_status);
-    emit statusMessage(m_status);
+    emit statusMessage(
+        outcome.restored
+            ? tr("Workbench: run %1 done, values restored.").arg(m_nextNumber - 1)
+            : tr("Workbench: run %1 ended, values NOT restored.").arg(m_nextNumber - 1));
     if (!outcome.restore.empty())
         emit written(run->module, outcome.restore);
     addRun(std::move(run));
@@ -564,9 +614,7 @@ void WorkbenchView::fillResults(const model::TuningRun &run)
         for (const model::FrequencyPoint &p : a.points)
             setRow(m_results, r++,
                    {num(p.frequencyHz, 3), num(p.gainDb, 2), num(p.phaseDeg, 1), num(p.quality, 3),
-                    p.valid ? tr("yes")
-                            : tr("no: %1").arg(QString::fromLatin1(
-                                  model::frequencyProblemKey(p.problem).data()))});
+                    p.valid ? tr("yes") : frequencyProblemText(p.problem)});
         setRow(m_results, r++,
                {tr("−3 dB at"), a.f3dB ? num(*a.f3dB, 2) + tr(" Hz") : tr("not reached")});
         setRow(m_results, r++,
@@ -575,7 +623,7 @@ void WorkbenchView::fillResults(const model::TuningRun &run)
     }
     m_results->setColumnCount(9);
     m_results->setHorizontalHeaderLabels(
-        {tr("Step"), tr("Dead time (s)"), tr("Rise time (s)"), tr("Overshoot (%)"),
+        {tr("Step (%1)").arg(unit), tr("Dead time (s)"), tr("Rise time (s)"), tr("Overshoot (%)"),
          tr("Peak time (s)"), tr("Settling 2 % (s)"), tr("Settling 5 % (s)"),
          tr("Steady-state error (%1)").arg(unit), tr("Final value")});
     m_results->setRowCount(static_cast<int>(a.steps.size()));
@@ -583,11 +631,7 @@ void WorkbenchView::fillResults(const model::TuningRun &run)
     for (const model::StepResult &s : a.steps) {
         const QString step = tr("%1 → %2").arg(num(s.edge.from, 3), num(s.edge.to, 3));
         if (!s.metrics) {
-            setRow(m_results, r++,
-                   {step, tr("no figures: %1")
-                              .arg(s.problem ? QString::fromLatin1(
-                                                   model::stepProblemKey(*s.problem).data())
-                                             : QString())});
+            setRow(m_results, r++, {step, s.problem ? stepProblemText(*s.problem) : QString()});
             continue;
         }
         const model::StepMetrics &m = *s.metrics;
@@ -675,7 +719,11 @@ void WorkbenchView::retranslate()
 {
     m_moduleLabel->setText(tr("Module"));
     m_setValueLabel->setText(tr("Set value"));
-    m_rateLabel->setText(tr("Cycles per second (0: as fast as the link allows)"));
+    m_rateLabel->setText(tr("Cycles/s"));
+    m_rate->setToolTip(tr("Set-value writes and reads per second; 0: as fast as the link "
+                          "allows (at most 1000)."));
+    m_rate->setSpecialValueText(tr("as fast as possible"));
+    m_runsLabel->setText(tr("Runs"));
     m_useWindow->setText(tr("Travel window"));
     m_window->setToolTip(tr("Stop the test when the actual value leaves the signal's range by "
                             "more than this."));
@@ -685,6 +733,7 @@ void WorkbenchView::retranslate()
     m_load->setText(tr("Load Runs…"));
     m_tabs->setTabText(0, tr("Results"));
     m_tabs->setTabText(1, tr("Setting differences"));
+    m_tabs->setTabText(2, tr("Guided tuning"));
     m_runList->setToolTip(tr("The current run is drawn with its marks; tick others to overlay "
                              "them and to compare their settings."));
     for (int i = 0; i < m_runList->count() && i < static_cast<int>(m_runs.size()); ++i)

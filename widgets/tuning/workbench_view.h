@@ -28,6 +28,7 @@ class QTabWidget;
 namespace vt::ui {
 
 class BodePlot;
+class GuidedPanel;
 class NumberBox;
 class ResponsePlot;
 class SignalForm;
@@ -59,6 +60,7 @@ public:
     QString statusText() const;
     QTableWidget *resultsTable() const { return m_results; }
     QTableWidget *differencesTable() const { return m_differences; }
+    GuidedPanel *guidedPanel() const { return m_guided; }
     // Runs checked for the overlay (the current one first).
     std::vector<const model::TuningRun *> shownRuns() const;
 
@@ -72,6 +74,7 @@ protected:
 
 private:
     void build();
+    void buildGuided();
     void retranslate();
     void moduleChosen();
     void setValueChosen();
@@ -116,6 +119,8 @@ private:
     QTabWidget *m_tabs = nullptr;
     QTableWidget *m_results = nullptr;
     QTableWidget *m_differences = nullptr;
+    QLabel *m_runsLabel = nullptr;
+    GuidedPanel *m_guided = nullptr;
     QListWidget *m_runList = nullptr;
     QPushButton *m_save = nullptr;
     QPushButton *m_load = nullptr;

@@ -47,10 +47,8 @@ struct Bench
 
     TestRunSetup setup(const SignalSpec &spec)
     {
-        TestRunSetup s{rig->module(), &rig->row("A1.01"), *TestSignal::make(spec), {}, {}, {}, 0,
-                       false};
-        s.channels = {&rig->row("d1.10"), &rig->row("d1.11")};
-        s.actualRow = &rig->row("d1.11");
+        TestRunSetup s =
+            TestRun::setupFor(rig->module(), rig->row("A1.01"), *TestSignal::make(spec));
         return s;
     }
 
@@ -61,7 +59,10 @@ struct Bench
                          [&](const TestOutcome &o) { outcome = o; });
         test.start();
         EXPECT_TRUE(test::waitFor(outcome, kTestWaitMs));
-        return outcome.value_or(TestOutcome{TestEnd::LinkLost, "no end", false, false, {}});
+        TestOutcome none;
+        none.end = TestEnd::LinkLost;
+        none.reason = QStringLiteral("no end");
+        return outcome.value_or(none);
     }
 };
 
@@ -81,7 +82,7 @@ TEST(TestRun, AStepRecordsTheAcknowledgedSetValueAndPutsItBack)
     EXPECT_DOUBLE_EQ(r.setValue.y[1], 5.0);
     EXPECT_DOUBLE_EQ(r.setValue.t[0], 0);
     EXPECT_GT(r.setValue.t[1], 0.19);
-    ASSERT_EQ(r.channels.size(), 2u);
+    ASSERT_GE(r.channels.size(), 2u); // the monitor's channels: d1.10, d1.11, the currents
     EXPECT_GT(r.channels[1].t.size(), 5u);
     EXPECT_GE(r.channels[1].t.back(), 0.39);
     EXPECT_GT(r.sampleRateHz(), 10);
@@ -206,6 +207,32 @@ TEST(TestRun, TheTravelWindowStopsATest)
     EXPECT_TRUE(outcome.restored);
     EXPECT_LT(test.recording().cycles, 3);
     EXPECT_DOUBLE_EQ(b.read("A1.01"), 0);
+}
+
+// DMA Profinet manual §4.5.1.1: a short circuit latches the error (0xB0 bit 11 "Error") and
+// switches the outputs off; the test stops on it and still puts the set value back.
+TEST(TestRun, AModuleErrorStopsTheTest)
+{
+    Bench b;
+    ASSERT_TRUE(b.rig);
+    ASSERT_TRUE(b.write("E17", 2));
+    ASSERT_TRUE(b.write("A1.01", 100));
+    TestRunSetup setup = b.setup(upStep(3, 5, 5));
+    ASSERT_TRUE(setup.faultRow);
+    TestRun test(b.rig->access(), setup);
+    QObject::connect(&test, &TestRun::sampled, &test, [&] {
+        if (test.recording().cycles == 3) {
+            dev::sim::ClosedLoopPlant *plant = b.rig->simModule().closedLoop(1);
+            ASSERT_TRUE(plant);
+            plant->setSolenoidFault(false, dev::sim::SolenoidFault::ShortCircuit);
+        }
+    });
+    const TestOutcome outcome = b.run(test);
+    EXPECT_EQ(outcome.end, TestEnd::DeviceError) << key(outcome.end);
+    EXPECT_TRUE(outcome.reason.contains(QStringLiteral("0xB0"))) << outcome.reason.toStdString();
+    EXPECT_LT(test.recording().channels[0].t.back(), 4.0);
+    EXPECT_TRUE(outcome.restored);
+    EXPECT_DOUBLE_EQ(b.read("A1.01"), 100);
 }
 
 TEST(TestRun, ALostLinkEndsTheTestAndSaysTheSetValueIsNotBack)
