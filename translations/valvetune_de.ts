@@ -2,6 +2,49 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>AnalysisTexts</name>
+    <message>
+        <source>no figures: too few samples in the hold</source>
+        <translation>keine Kennwerte: zu wenige Messwerte im Halteabschnitt</translation>
+    </message>
+    <message>
+        <source>no figures: the hold is too short</source>
+        <translation>keine Kennwerte: Haltezeit zu kurz</translation>
+    </message>
+    <message>
+        <source>no figures: no step</source>
+        <translation>keine Kennwerte: kein Sprung</translation>
+    </message>
+    <message>
+        <source>no figures: the response did not move</source>
+        <translation>keine Kennwerte: die Antwort hat sich nicht bewegt</translation>
+    </message>
+    <message>
+        <source>no figures: not settled by the end of the hold</source>
+        <translation>keine Kennwerte: bis zum Ende der Haltezeit nicht eingeschwungen</translation>
+    </message>
+    <message>
+        <source>no: not measurable</source>
+        <translation>nein: nicht messbar</translation>
+    </message>
+    <message>
+        <source>no: outside the recording</source>
+        <translation>nein: außerhalb der Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>no: too few samples</source>
+        <translation>nein: zu wenige Messwerte</translation>
+    </message>
+    <message>
+        <source>no: the set value did not move</source>
+        <translation>nein: der Sollwert hat sich nicht bewegt</translation>
+    </message>
+    <message>
+        <source>no: above the valid band</source>
+        <translation>nein: oberhalb des gültigen Bereichs</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>ValveTune cannot start with this command line:</source>
@@ -10,6 +53,50 @@
     <message>
         <source>Run &quot;valvetune --help&quot; in a terminal for the options.</source>
         <translation>&quot;valvetune --help&quot; in einem Terminal zeigt die Optionen.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than 256 MiB.</source>
+        <translation>%1 ist größer als 256 MiB.</translation>
+    </message>
+    <message>
+        <source>step %1 → %2 %3</source>
+        <translation>Sprung %1 → %2 %3</translation>
+    </message>
+    <message>
+        <source>sweep %1 … %2 Hz</source>
+        <translation>Sweep %1 … %2 Hz</translation>
+    </message>
+    <message>
+        <source>%1 %2 Hz ± %3 %4</source>
+        <translation>%1 %2 Hz ± %3 %4</translation>
+    </message>
+    <message>
+        <source>Run %1 · %2 · module %3 %4</source>
+        <translation>Lauf %1 · %2 · Modul %3 %4</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable run: %2</source>
+        <translation>%1 ist kein lesbarer Lauf: %2</translation>
+    </message>
+    <message>
+        <source>%1 is a run of %2, a family this ValveTune does not know.</source>
+        <translation>%1 ist ein Lauf von %2, einer Gerätefamilie, die dieses ValveTune nicht kennt.</translation>
+    </message>
+    <message>
+        <source>%1 names a signal or a set value that does not exist.</source>
+        <translation>%1 nennt ein Signal oder einen Sollwert, den es nicht gibt.</translation>
+    </message>
+    <message>
+        <source>%1 records %2, which %3 does not have.</source>
+        <translation>%1 zeichnet %2 auf, das %3 nicht hat.</translation>
     </message>
 </context>
 <context>
@@ -2528,6 +2615,73 @@
     </message>
 </context>
 <context>
+    <name>vt::model::TestRun</name>
+    <message>
+        <source>Switching the set-value source %1 failed: %2</source>
+        <translation>Das Umschalten der Sollwertquelle %1 ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Switching the set-value source failed.</source>
+        <translation>Das Umschalten der Sollwertquelle ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>The module has no set value a test can drive.</source>
+        <translation>Das Modul hat keinen Sollwert, den ein Test vorgeben kann.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>The signal reaches %1, outside %2: %3</source>
+        <translation>Das Signal erreicht %1, außerhalb von %2: %3</translation>
+    </message>
+    <message>
+        <source>The window must be more than 0.</source>
+        <translation>Das Fenster muss größer als 0 sein.</translation>
+    </message>
+    <message>
+        <source>A window needs an actual value to watch.</source>
+        <translation>Ein Fenster braucht einen Istwert, den es überwacht.</translation>
+    </message>
+    <message>
+        <source>The window is in %1, the unit of %2; %3 is in %4.</source>
+        <translation>Das Fenster ist in %1, der Einheit von %2; %3 ist in %4.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>Reading the set value and its source failed: %1</source>
+        <translation>Das Lesen des Sollwerts und seiner Quelle ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Writing %1 failed: %2</source>
+        <translation>Das Schreiben von %1 ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Reading the recorded values failed: %1</source>
+        <translation>Das Lesen der aufgezeichneten Werte ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>The module reports an error: %1 = %2.</source>
+        <translation>Das Modul meldet einen Fehler: %1 = %2.</translation>
+    </message>
+    <message>
+        <source>%1 holds %2, not the %3 written: something else writes the set value.</source>
+        <translation>%1 hat %2, nicht die geschriebenen %3: etwas anderes schreibt den Sollwert.</translation>
+    </message>
+    <message>
+        <source>%1 = %2 left the travel window %3 … %4.</source>
+        <translation>%1 = %2 hat das Verfahrfenster %3 … %4 verlassen.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be put back: its value before the test could not be read.</source>
+        <translation>%1 kann nicht zurückgesetzt werden: sein Wert vor dem Test konnte nicht gelesen werden.</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::TuningJournal</name>
     <message>
         <source>module %1: %2</source>
@@ -2688,6 +2842,25 @@ Die ursprünglichen Werte zurückschreiben?</translation>
     </message>
 </context>
 <context>
+    <name>vt::ui::BodePlot</name>
+    <message>
+        <source>run %1</source>
+        <translation>Lauf %1</translation>
+    </message>
+    <message>
+        <source>gain (dB)</source>
+        <translation>Verstärkung (dB)</translation>
+    </message>
+    <message>
+        <source>phase (°)</source>
+        <translation>Phase (°)</translation>
+    </message>
+    <message>
+        <source>frequency (Hz)</source>
+        <translation>Frequenz (Hz)</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::CanPage</name>
     <message>
         <source>CAN (CANopen)</source>
@@ -2755,10 +2928,6 @@ Die ursprünglichen Werte zurückschreiben?</translation>
     <message>
         <source>Module %1</source>
         <translation>Modul %1</translation>
-    </message>
-    <message>
-        <source>%1, version %2</source>
-        <translation>%1, Version %2</translation>
     </message>
 </context>
 <context>
@@ -3746,10 +3915,6 @@ Senden?</translation>
         <translation>Durchgang %1: Der Sprung wird gemessen …</translation>
     </message>
     <message>
-        <source>no figures: %1</source>
-        <translation>keine Kennwerte: %1</translation>
-    </message>
-    <message>
         <source>Target</source>
         <translation>Ziel</translation>
     </message>
@@ -4357,6 +4522,29 @@ Senden?</translation>
     </message>
 </context>
 <context>
+    <name>vt::ui::ResponsePlot</name>
+    <message>
+        <source>run %1: </source>
+        <translation>Lauf %1: </translation>
+    </message>
+    <message>
+        <source>%1 written</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>10 %</source>
+        <translation>10 %</translation>
+    </message>
+    <message>
+        <source>90 %</source>
+        <translation>90 %</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::SerialLineFields</name>
     <message>
         <source>&amp;Baud rate:</source>
@@ -4435,6 +4623,101 @@ Senden?</translation>
     <message>
         <source>/dev/ttyUSB0</source>
         <translation>/dev/ttyUSB0</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::SignalForm</name>
+    <message>
+        <source>Step</source>
+        <translation>Sprung</translation>
+    </message>
+    <message>
+        <source>Square</source>
+        <translation>Rechteck</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>Dreieck</translation>
+    </message>
+    <message>
+        <source>Sine</source>
+        <translation>Sinus</translation>
+    </message>
+    <message>
+        <source>Stepped-sine sweep</source>
+        <translation>Sinus-Sweep in Stufen</translation>
+    </message>
+    <message>
+        <source>up (from → to)</source>
+        <translation>aufwärts (von → bis)</translation>
+    </message>
+    <message>
+        <source>down (to → from)</source>
+        <translation>abwärts (bis → von)</translation>
+    </message>
+    <message>
+        <source>both (from → to → from)</source>
+        <translation>beide (von → bis → von)</translation>
+    </message>
+    <message>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>Bis</translation>
+    </message>
+    <message>
+        <source>Hold (s)</source>
+        <translation>Haltezeit (s)</translation>
+    </message>
+    <message>
+        <source>Repeats</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>Frequenz (Hz)</translation>
+    </message>
+    <message>
+        <source>Measured cycles</source>
+        <translation>Gemessene Perioden</translation>
+    </message>
+    <message>
+        <source>Settling cycles</source>
+        <translation>Einschwingperioden</translation>
+    </message>
+    <message>
+        <source>From (Hz)</source>
+        <translation>Von (Hz)</translation>
+    </message>
+    <message>
+        <source>To (Hz)</source>
+        <translation>Bis (Hz)</translation>
+    </message>
+    <message>
+        <source>Points per decade</source>
+        <translation>Punkte je Dekade</translation>
+    </message>
+    <message>
+        <source>Cycles per point</source>
+        <translation>Perioden je Punkt</translation>
     </message>
 </context>
 <context>
@@ -4658,6 +4941,290 @@ Senden?</translation>
     <message>
         <source>Guided tuning</source>
         <translation>Geführte Reglereinstellung</translation>
+    </message>
+    <message>
+        <source>Module %1 (%2)</source>
+        <translation>Modul %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Response: %1</source>
+        <translation>Antwort: %1</translation>
+    </message>
+    <message>
+        <source>The dictionary names no response for %1: the test records, but has nothing to analyse.</source>
+        <translation>Das Wörterbuch nennt keine Antwort für %1: der Test zeichnet auf, hat aber nichts auszuwerten.</translation>
+    </message>
+    <message>
+        <source>No module with a set value a test can drive.</source>
+        <translation>Kein Modul mit einem Sollwert, den ein Test vorgeben kann.</translation>
+    </message>
+    <message>
+        <source>Connect to a device to run a test.</source>
+        <translation>Verbinden Sie ein Gerät, um einen Test zu fahren.</translation>
+    </message>
+    <message>
+        <source>A step needs different From and To values.</source>
+        <translation>Ein Sprung braucht verschiedene Von- und Bis-Werte.</translation>
+    </message>
+    <message>
+        <source>The amplitude must be more than 0.</source>
+        <translation>Die Amplitude muss größer als 0 sein.</translation>
+    </message>
+    <message>
+        <source>A sweep needs a To frequency above its From frequency.</source>
+        <translation>Ein Sweep braucht eine Bis-Frequenz über seiner Von-Frequenz.</translation>
+    </message>
+    <message>
+        <source>This signal cannot be run: %1</source>
+        <translation>Dieses Signal kann nicht gefahren werden: %1</translation>
+    </message>
+    <message>
+        <source>%1 test of %2 s between %3 and %4; afterwards %5 is written back.</source>
+        <translation>Test „%1“ über %2 s zwischen %3 und %4; danach wird %5 zurückgeschrieben.</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>Läuft …</translation>
+    </message>
+    <message>
+        <source>Running: %1 of %2 s; sampled at %3 Hz.</source>
+        <translation>Läuft: %1 von %2 s; abgetastet mit %3 Hz.</translation>
+    </message>
+    <message>
+        <source>Running: %1 of %2 s; set value updated at %3 Hz, sampled at %4 Hz.</source>
+        <translation>Läuft: %1 von %2 s; Sollwert mit %3 Hz aktualisiert, abgetastet mit %4 Hz.</translation>
+    </message>
+    <message>
+        <source>The test ran to its end.</source>
+        <translation>Der Test ist bis zum Ende gelaufen.</translation>
+    </message>
+    <message>
+        <source>The test was stopped.</source>
+        <translation>Der Test wurde gestoppt.</translation>
+    </message>
+    <message>
+        <source>The travel window stopped the test: %1</source>
+        <translation>Das Verfahrfenster hat den Test gestoppt: %1</translation>
+    </message>
+    <message>
+        <source>Nothing was written: %1</source>
+        <translation>Nichts wurde geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>The device stopped the test: %1</source>
+        <translation>Das Gerät hat den Test gestoppt: %1</translation>
+    </message>
+    <message>
+        <source>The link was lost: %1</source>
+        <translation>Die Verbindung ist verloren: %1</translation>
+    </message>
+    <message>
+        <source>%1 back to %2 (%3)</source>
+        <translation>%1 zurück auf %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Restored: %1.</source>
+        <translation>Zurückgesetzt: %1.</translation>
+    </message>
+    <message>
+        <source>NOT restored: %1. Check the valve.</source>
+        <translation>NICHT zurückgesetzt: %1. Prüfen Sie das Ventil.</translation>
+    </message>
+    <message>
+        <source>For the test only: afterwards the values are written back.</source>
+        <translation>Nur für den Test: danach werden die Werte zurückgeschrieben.</translation>
+    </message>
+    <message>
+        <source>Workbench: run %1 done, values restored.</source>
+        <translation>Werkbank: Lauf %1 fertig, Werte zurückgesetzt.</translation>
+    </message>
+    <message>
+        <source>Workbench: run %1 ended, values NOT restored.</source>
+        <translation>Werkbank: Lauf %1 beendet, Werte NICHT zurückgesetzt.</translation>
+    </message>
+    <message>
+        <source>No response row was recorded: nothing to analyse.</source>
+        <translation>Keine Antwortzeile aufgezeichnet: nichts auszuwerten.</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>Frequenz (Hz)</translation>
+    </message>
+    <message>
+        <source>Gain (dB)</source>
+        <translation>Verstärkung (dB)</translation>
+    </message>
+    <message>
+        <source>Phase (°)</source>
+        <translation>Phase (°)</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>Güte</translation>
+    </message>
+    <message>
+        <source>Valid</source>
+        <translation>Gültig</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>−3 dB at</source>
+        <translation>−3 dB bei</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>nicht erreicht</translation>
+    </message>
+    <message>
+        <source>−90° at</source>
+        <translation>−90° bei</translation>
+    </message>
+    <message>
+        <source>Step (%1)</source>
+        <translation>Sprung (%1)</translation>
+    </message>
+    <message>
+        <source>Dead time (s)</source>
+        <translation>Totzeit (s)</translation>
+    </message>
+    <message>
+        <source>Rise time (s)</source>
+        <translation>Anstiegszeit (s)</translation>
+    </message>
+    <message>
+        <source>Overshoot (%)</source>
+        <translation>Überschwingen (%)</translation>
+    </message>
+    <message>
+        <source>Peak time (s)</source>
+        <translation>Spitzenzeit (s)</translation>
+    </message>
+    <message>
+        <source>Settling 2 % (s)</source>
+        <translation>Ausregelzeit 2 % (s)</translation>
+    </message>
+    <message>
+        <source>Settling 5 % (s)</source>
+        <translation>Ausregelzeit 5 % (s)</translation>
+    </message>
+    <message>
+        <source>Steady-state error (%1)</source>
+        <translation>Bleibende Regelabweichung (%1)</translation>
+    </message>
+    <message>
+        <source>Final value</source>
+        <translation>Endwert</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Tick a second run to compare its settings</source>
+        <translation>Einen zweiten Lauf ankreuzen, um seine Einstellungen zu vergleichen</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Run %1</source>
+        <translation>Lauf %1</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Save Run</source>
+        <translation>Lauf speichern</translation>
+    </message>
+    <message>
+        <source>run-%1.csv</source>
+        <translation>lauf-%1.csv</translation>
+    </message>
+    <message>
+        <source>Run recordings (*.csv)</source>
+        <translation>Laufaufzeichnungen (*.csv)</translation>
+    </message>
+    <message>
+        <source>Saved %1 and its .json.</source>
+        <translation>%1 und die zugehörige .json gespeichert.</translation>
+    </message>
+    <message>
+        <source>Load Runs</source>
+        <translation>Läufe laden</translation>
+    </message>
+    <message>
+        <source>Runs (*.json *.csv)</source>
+        <translation>Läufe (*.json *.csv)</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Set value</source>
+        <translation>Sollwert</translation>
+    </message>
+    <message>
+        <source>Cycles/s</source>
+        <translation>Zyklen/s</translation>
+    </message>
+    <message>
+        <source>Set-value writes and reads per second; 0: as fast as the link allows (at most 1000).</source>
+        <translation>Sollwert-Schreib- und Lesezyklen je Sekunde; 0: so schnell die Verbindung erlaubt (höchstens 1000).</translation>
+    </message>
+    <message>
+        <source>as fast as possible</source>
+        <translation>so schnell wie möglich</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>Läufe</translation>
+    </message>
+    <message>
+        <source>Travel window</source>
+        <translation>Verfahrfenster</translation>
+    </message>
+    <message>
+        <source>Stop the test when the actual value leaves the signal&apos;s range by more than this.</source>
+        <translation>Den Test stoppen, wenn der Istwert den Bereich des Signals um mehr als diesen Wert verlässt.</translation>
+    </message>
+    <message>
+        <source>Start Test</source>
+        <translation>Test starten</translation>
+    </message>
+    <message>
+        <source>Stop (Esc)</source>
+        <translation>Stopp (Esc)</translation>
+    </message>
+    <message>
+        <source>Save Run…</source>
+        <translation>Lauf speichern …</translation>
+    </message>
+    <message>
+        <source>Load Runs…</source>
+        <translation>Läufe laden …</translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation>Ergebnisse</translation>
+    </message>
+    <message>
+        <source>Setting differences</source>
+        <translation>Unterschiede der Einstellungen</translation>
+    </message>
+    <message>
+        <source>The current run is drawn with its marks; tick others to overlay them and to compare their settings.</source>
+        <translation>Der aktuelle Lauf wird mit seinen Markierungen gezeichnet; weitere ankreuzen, um sie zu überlagern und ihre Einstellungen zu vergleichen.</translation>
     </message>
 </context>
 <context>
