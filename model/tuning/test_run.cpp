@@ -290,7 +290,9 @@ void TestRun::cycle()
     while (m_jumpsDone < jumps.size() && t >= jumps[m_jumpsDone])
         ++m_jumpsDone;
     if (!first && t >= m_setup.signal.duration()) {
-        end(TestEnd::Finished, {});
+        // One more read after the end, so the recording covers the signal's last cycle whole.
+        m_finalRead = true;
+        readChannels();
         return;
     }
     const double value = raw(m_setup.signal.valueAt(t));
@@ -383,6 +385,10 @@ void TestRun::readChannels()
                                  numberText(high)));
                     return;
                 }
+            }
+            if (m_finalRead) {
+                end(TestEnd::Finished, {});
+                return;
             }
             scheduleNext();
         });

@@ -117,6 +117,7 @@ private:
     std::vector<const dev::ParamMeta *> m_unrestorable; // switched, value before unknown
     std::optional<double> m_lastRaw;                    // the set value last acknowledged
     bool m_stopRequested = false;
+    bool m_finalRead = false;    // the signal is done: this read ends the test
     bool m_attempted = false;    // a set-value write was sent
     double m_lateBy = 0;         // s the signal's clock waited for late cycles
     std::size_t m_jumpsDone = 0; // jumps of the signal written
