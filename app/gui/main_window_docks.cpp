@@ -16,7 +16,6 @@
 
 #include <QDockWidget>
 #include <QMenu>
-#include <QScrollArea>
 
 namespace vt::app {
 
@@ -80,15 +79,9 @@ void MainWindow::createDocks()
     m_curveDock = dock("dockCurve", m_curveEditor, Qt::BottomDockWidgetArea);
     // The tuning workbench: test signals on a set value, step and frequency response, runs.
     m_workbench = new ui::WorkbenchView(this);
-    // In a scroll area: the workbench's column of controls is taller than the bottom area of a
-    // 1366 × 768 laptop leaves, and the docks tabbed with it would otherwise all take its
-    // height from the editor.
-    auto *workbenchScroll = new QScrollArea(this);
-    workbenchScroll->setObjectName(QStringLiteral("workbenchScroll"));
-    workbenchScroll->setWidgetResizable(true);
-    workbenchScroll->setFrameShape(QFrame::NoFrame);
-    workbenchScroll->setWidget(m_workbench);
-    m_workbenchDock = dock("dockWorkbench", workbenchScroll, Qt::BottomDockWidgetArea);
+    // Its column of controls scrolls inside it while Start, Stop and the outcome stay in view,
+    // so the docks tabbed with it keep a low bottom area on a 1366 × 768 laptop.
+    m_workbenchDock = dock("dockWorkbench", m_workbench, Qt::BottomDockWidgetArea);
     connect(m_workbench, &ui::WorkbenchView::written, m_monitor, &ui::MonitorView::journalWrites);
     connect(m_workbench, &ui::WorkbenchView::statusMessage, this, &MainWindow::showStatus);
     // The editor keeps the full width; monitor, workbench, telegrams and curves share the bottom

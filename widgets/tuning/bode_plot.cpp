@@ -1,6 +1,7 @@
 #include "bode_plot.h"
 
 #include <QEvent>
+#include <QLocale>
 #include <cmath>
 
 namespace vt::ui {
@@ -104,6 +105,8 @@ void BodePlot::retranslate()
     m_gain->axis(QCPAxis::atLeft)->setLabel(tr("gain (dB)"));
     m_phase->axis(QCPAxis::atLeft)->setLabel(tr("phase (°)"));
     m_phase->axis(QCPAxis::atBottom)->setLabel(tr("frequency (Hz)"));
+    setLocale(QLocale());
+    replot(QCustomPlot::rpQueuedReplot);
 }
 
 } // namespace vt::ui

@@ -1,6 +1,7 @@
 #include "response_plot.h"
 
 #include <QEvent>
+#include <QLocale>
 #include <cmath>
 
 namespace vt::ui {
@@ -139,7 +140,10 @@ void ResponsePlot::changeEvent(QEvent *event)
 
 void ResponsePlot::retranslate()
 {
+    // Tick labels in the language's notation too (0,5 / 0.5).
+    setLocale(QLocale());
     xAxis->setLabel(tr("time (s)"));
+    replot(QCustomPlot::rpQueuedReplot);
 }
 
 } // namespace vt::ui

@@ -521,6 +521,7 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
         return;
     }
     if (outcome.end == model::TestEnd::Refused || !m_live) {
+        m_lastOutcome = outcome;
         m_status = outcomeText(outcome);
         m_statusLabel->setText(m_status);
         m_live.reset();
@@ -535,6 +536,7 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
         run->analysis =
             model::analyseRun(*signal, run->recording, run->responseRow, run->setValueRow);
     ++m_nextNumber;
+    m_lastOutcome = outcome;
     m_status = outcomeText(outcome);
     m_statusLabel->setText(m_status);
     emit statusMessage(
@@ -745,6 +747,12 @@ void WorkbenchView::retranslate()
                                      .arg(QString::fromStdString(m.identification.family)));
     }
     setValueChosen();
+    // The last outcome is said again in the new language (the device's or the engine's reason
+    // inside it stays as it was said).
+    if (m_lastOutcome && !isRunning()) {
+        m_status = outcomeText(*m_lastOutcome);
+        m_statusLabel->setText(m_status);
+    }
     if (!m_runs.empty() && !isRunning())
         showCurrent();
 }

@@ -14,6 +14,7 @@
 #include <QTimer>
 #include <QWidget>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QCheckBox;
@@ -99,6 +100,7 @@ private:
     int m_nextNumber = 1;
     QTimer m_redraw;
     QString m_status;
+    std::optional<model::TestOutcome> m_lastOutcome; // of the last finished test
 
     QLabel *m_moduleLabel = nullptr;
     QComboBox *m_module = nullptr;
