@@ -13,6 +13,34 @@ dev::LocalText number(int n)
 
 } // namespace
 
+std::optional<FoldNode> foldNodeOfFamily(std::string_view family)
+{
+    // Dictionary families: "opat", "dma-pb-v15" … "dma-pn-v51" (resources/dictionaries).
+    for (FoldNode node : {FoldNode::Opat, FoldNode::DmaProfibus, FoldNode::DmaProfinet})
+        if (family.substr(0, foldNodeKey(node).size()) == foldNodeKey(node))
+            return node;
+    return std::nullopt;
+}
+
+FoldPlan foldPlanFromNode(FoldPlan plan, std::vector<FoldNodeModule> node)
+{
+    std::sort(node.begin(), node.end(), [](const FoldNodeModule &a, const FoldNodeModule &b) {
+        return a.address < b.address;
+    });
+    std::vector<FoldModule> modules = defaultFoldPlan(plan.node, node.size()).modules;
+    for (std::size_t i = 0; i < modules.size(); ++i) {
+        modules[i].version = node[i].version;
+        modules[i].mode = node[i].mode;
+        modules[i].address = node[i].address;
+        if (i < plan.modules.size()) {
+            modules[i].options = plan.modules[i].options;
+            modules[i].name = plan.modules[i].name;
+        }
+    }
+    plan.modules = std::move(modules);
+    return plan;
+}
+
 std::vector<FoldFinding> checkPlanAgainstNode(const FoldPlan &plan,
                                               const std::vector<FoldNodeModule> &node)
 {

@@ -6,6 +6,8 @@
 
 #include "fold_check.h"
 
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace vt::model {
@@ -18,6 +20,16 @@ struct FoldNodeModule
 
     bool operator==(const FoldNodeModule &) const = default;
 };
+
+// The node type a module's dictionary family belongs to ("dma-pn-v51" → DmaProfinet, "opat" →
+// Opat); nullopt for a device that is no fold module (Wandfluh).
+std::optional<FoldNode> foldNodeOfFamily(std::string_view family);
+
+// The node as read: `plan` with one module per answering address, in address order, each with the
+// version, mode and address it reported. Options and names of `plan` stay with the module at the
+// same position; the node type stays plan.node. Used by the scan and when the wizard opens on a
+// connected node, so its pages start from the modules really there, not from a default plan.
+FoldPlan foldPlanFromNode(FoldPlan plan, std::vector<FoldNodeModule> node);
 
 // Findings with code NodeMismatch (warnings): a planned module whose address does not answer or
 // answers with another version or mode, and a node module the plan leaves out.

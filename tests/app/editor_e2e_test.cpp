@@ -133,6 +133,12 @@ TEST_F(EditorE2E, EditWriteUndoSaveReopenCompare)
     auto *compare = window->findChild<ui::CompareDialog *>();
     ASSERT_NE(compare, nullptr);
     EXPECT_EQ(compare->compareModel()->rowCount(), 0);
+    // Nothing to choose: only Close is offered, and Enter closes.
+    EXPECT_FALSE(compare->tickAllButton()->isEnabled());
+    EXPECT_FALSE(compare->tickNoneButton()->isEnabled());
+    EXPECT_FALSE(compare->applyButton()->isEnabled());
+    EXPECT_TRUE(compare->closeButton()->isEnabled());
+    EXPECT_TRUE(compare->closeButton()->isDefault());
 }
 
 TEST_F(EditorE2E, OutOfRangeIsRefusedInTheEditorWithTheLimits)
@@ -296,6 +302,9 @@ TEST_F(EditorE2E, CompareSaysWhatApplyWillChange)
     ASSERT_NE(compare, nullptr);
     ASSERT_EQ(compare->compareModel()->rowCount(), 1);
     EXPECT_FALSE(compare->applyButton()->isEnabled());
+    EXPECT_TRUE(compare->tickAllButton()->isEnabled());
+    EXPECT_TRUE(compare->tickNoneButton()->isEnabled());
+    EXPECT_FALSE(compare->closeButton()->isDefault());
     compare->findChild<QPushButton *>(QStringLiteral("compareTickAll"))->click();
     EXPECT_EQ(working("C1.07"), dev::RawValue{2500.0}); // ticking changes nothing yet
     EXPECT_TRUE(compare->applyButton()->isEnabled());

@@ -401,9 +401,12 @@ TEST(NoEnglishLeft, TheE17HintQuotesTheManualInTheUiLanguage)
     step->setStepValue(2.0);
     step->writeStep();
     ASSERT_TRUE(waitUntil([&] { return step->activationOffered(); }));
-    // DMA Profibus Anleitung, ID 0x1F (A1.01).
+    // DMA Profinet manual, ID 0x1F (A1.01): a Profinet node cites its own manual in German too.
     EXPECT_TRUE(step->statusText().contains("Zum Abschalten des analogen Sollwert"))
         << step->statusText().toStdString();
+    EXPECT_TRUE(step->statusText().contains("DMA-Profinet-Handbuch"))
+        << step->statusText().toStdString();
+    EXPECT_FALSE(step->statusText().contains("Profibus")) << step->statusText().toStdString();
     EXPECT_FALSE(step->statusText().contains("For switching off"))
         << step->statusText().toStdString();
 

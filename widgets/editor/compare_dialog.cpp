@@ -26,14 +26,19 @@ CompareDialog::CompareDialog(model::ParameterDocument &document, QWidget *parent
     m_effect->setObjectName(QStringLiteral("compareEffect"));
     m_effect->setWordWrap(true);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    m_close = buttons->button(QDialogButtonBox::Close);
+    m_close->setObjectName(QStringLiteral("compareClose"));
     // Ticking only chooses; the Apply button says what it will do, with how many values.
-    QPushButton *all = buttons->addButton(tr("Tick All"), QDialogButtonBox::ActionRole);
-    all->setObjectName(QStringLiteral("compareTickAll"));
-    QPushButton *none = buttons->addButton(tr("Tick None"), QDialogButtonBox::ActionRole);
+    m_tickAll = buttons->addButton(tr("Tick All"), QDialogButtonBox::ActionRole);
+    m_tickAll->setObjectName(QStringLiteral("compareTickAll"));
+    m_tickNone = buttons->addButton(tr("Tick None"), QDialogButtonBox::ActionRole);
+    m_tickNone->setObjectName(QStringLiteral("compareTickNone"));
     m_apply = buttons->addButton(QString(), QDialogButtonBox::ApplyRole);
     m_apply->setObjectName(QStringLiteral("compareApply"));
-    connect(all, &QPushButton::clicked, this, [this] { m_model->setAllTaken(true); });
-    connect(none, &QPushButton::clicked, this, [this] { m_model->setAllTaken(false); });
+    for (QPushButton *b : {m_tickAll, m_tickNone, m_apply})
+        b->setAutoDefault(false);
+    connect(m_tickAll, &QPushButton::clicked, this, [this] { m_model->setAllTaken(true); });
+    connect(m_tickNone, &QPushButton::clicked, this, [this] { m_model->setAllTaken(false); });
     connect(m_apply, &QPushButton::clicked, this, [this] {
         m_model->applyTaken();
         updateSummary();
@@ -47,7 +52,7 @@ CompareDialog::CompareDialog(model::ParameterDocument &document, QWidget *parent
     layout->addWidget(m_effect);
     layout->addWidget(buttons);
     resize(1000, 560);
-    updateApply();
+    updateSummary();
 }
 
 void CompareDialog::updateApply()
@@ -78,6 +83,11 @@ void CompareDialog::compareWithFile(const dev::files::ParamFile &file, const QSt
 void CompareDialog::updateSummary()
 {
     const int n = m_model->rowCount();
+    // With nothing to choose, only Close makes sense: Enter closes the dialog.
+    m_tickAll->setEnabled(n > 0);
+    m_tickNone->setEnabled(n > 0);
+    m_close->setDefault(n == 0);
+    updateApply();
     m_summary->setText(n == 0 ? tr("No differences.")
                               : tr("%n parameter(s) differ. Tick \"Take other\" for each value to "
                                    "take into this document.",

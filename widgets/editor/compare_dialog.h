@@ -30,6 +30,9 @@ public:
     void compareWithFile(const dev::files::ParamFile &file, const QString &name);
 
     QPushButton *applyButton() const { return m_apply; }
+    QPushButton *tickAllButton() const { return m_tickAll; }
+    QPushButton *tickNoneButton() const { return m_tickNone; }
+    QPushButton *closeButton() const { return m_close; }
     QLabel *effectLabel() const { return m_effect; }
 
 private:
@@ -41,6 +44,9 @@ private:
     QLabel *m_summary = nullptr;
     QLabel *m_effect = nullptr;
     QPushButton *m_apply = nullptr;
+    QPushButton *m_tickAll = nullptr;
+    QPushButton *m_tickNone = nullptr;
+    QPushButton *m_close = nullptr;
 };
 
 } // namespace vt::ui

@@ -190,7 +190,8 @@ void ParameterEditor::fitValueColumns()
     const QFontMetrics metrics = m_view->fontMetrics();
     const int padding = 2 * m_view->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 24;
     const int columns[] = {ParameterTreeModel::ColValue, ParameterTreeModel::ColDevice,
-                           ParameterTreeModel::ColFile, ParameterTreeModel::ColRange};
+                           ParameterTreeModel::ColFile, ParameterTreeModel::ColRange,
+                           ParameterTreeModel::ColAccess};
     int widths[std::size(columns)] = {};
     std::function<void(const QModelIndex &)> measure = [&](const QModelIndex &parent) {
         for (int r = 0; r < m_tree->rowCount(parent); ++r) {
@@ -204,9 +205,13 @@ void ParameterEditor::fitValueColumns()
     measure({});
     widths[0] = std::max({widths[0], widths[1], widths[2]}); // the three value columns alike
     widths[1] = widths[2] = widths[0];
+    // The header's own font and margins: "Access" / "Zugriff" is never cut.
+    const QFontMetrics headerMetrics = m_view->header()->fontMetrics();
+    const int headerPadding = 2 * m_view->style()->pixelMetric(QStyle::PM_HeaderMargin);
     for (std::size_t c = 0; c < std::size(columns); ++c) {
         const int header =
-            metrics.horizontalAdvance(m_tree->headerData(columns[c], Qt::Horizontal).toString());
+            headerPadding + headerMetrics.horizontalAdvance(
+                                m_tree->headerData(columns[c], Qt::Horizontal).toString());
         const int want = qMin(kMaxWidth, qMax(widths[c], header) + padding);
         if (m_view->columnWidth(columns[c]) < want)
             m_view->setColumnWidth(columns[c], want);

@@ -198,32 +198,22 @@ void FoldModulesPage::scanNext()
         m_scan->setEnabled(fold() && fold()->online());
         m_count->setEnabled(true);
         m_table->setEnabled(true);
+        std::sort(m_scanFound.begin(), m_scanFound.end(),
+                  [](const auto &a, const auto &b) { return a.address < b.address; });
         if (!m_scanFound.empty()) {
             model::FoldPlan &plan = fold()->editPlan();
-            std::sort(m_scanFound.begin(), m_scanFound.end(),
-                      [](const Found &a, const Found &b) { return a.address < b.address; });
-            const model::FoldPlan fresh = model::defaultFoldPlan(plan.node, m_scanFound.size());
-            std::vector<model::FoldModule> modules = fresh.modules;
+            plan = model::foldPlanFromNode(plan, m_scanFound);
             std::vector<int> found;
-            for (std::size_t i = 0; i < modules.size(); ++i) {
-                modules[i].version = m_scanFound[i].version;
-                modules[i].mode = m_scanFound[i].mode;
-                modules[i].address = m_scanFound[i].address;
-                if (i < plan.modules.size()) {
-                    modules[i].options = plan.modules[i].options;
-                    modules[i].name = plan.modules[i].name;
-                }
-                found.push_back(m_scanFound[i].address);
-            }
-            plan.modules = modules;
+            for (const model::FoldModule &m : plan.modules)
+                found.push_back(m.address);
             fold()->setFoundAddresses(found);
             m_filling = true;
-            m_count->setValue(static_cast<int>(modules.size()));
+            m_count->setValue(static_cast<int>(plan.modules.size()));
             m_filling = false;
             fillTable();
         }
         QStringList where;
-        for (const Found &f : m_scanFound)
+        for (const model::FoldNodeModule &f : m_scanFound)
             where << QString::number(f.address);
         m_status->setText(m_scanFound.empty() ? tr("Scan finished: no module answered.")
                                               : tr("Scan finished: %n module(s) at address %1.", "",

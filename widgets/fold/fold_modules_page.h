@@ -3,6 +3,7 @@
 // offline planning.
 #pragma once
 
+#include "model/fold/fold_node_check.h"
 #include "widgets/fold/fold_page.h"
 
 #include <vector>
@@ -50,11 +51,7 @@ private:
     unsigned m_scanGeneration = 0;
     std::vector<int> m_scanAddresses;
     std::size_t m_scanCursor = 0;
-    struct Found
-    {
-        int address, version, mode;
-    };
-    std::vector<Found> m_scanFound;
+    std::vector<model::FoldNodeModule> m_scanFound;
 };
 
 } // namespace vt::ui

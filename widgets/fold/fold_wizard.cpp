@@ -74,6 +74,7 @@ void FoldWizard::readNode(std::function<void()> done)
 {
     const int generation = ++m_readGeneration;
     m_node.clear();
+    m_nodeType.reset();
     m_nodeRead = false;
     if (!online()) {
         done();
@@ -88,6 +89,8 @@ void FoldWizard::readNode(std::function<void()> done)
             return;
         if (i >= addresses->size() || !online()) {
             m_nodeRead = online();
+            if (m_nodeRead && !m_node.empty() && m_planPath.isEmpty())
+                startFromNode();
             done();
             *next = nullptr; // ends the cycle the lambda holds on itself
             return;
@@ -97,13 +100,30 @@ void FoldWizard::readNode(std::function<void()> done)
                                                   this](const model::IdentifyResult &r) {
             if (!self || generation != m_readGeneration || !*next)
                 return;
-            if (r.ok)
+            if (r.ok) {
                 m_node.push_back({address, dev::majorVersionNumber(r.module.identification.version),
                                   r.module.mode});
+                if (!m_nodeType)
+                    m_nodeType = model::foldNodeOfFamily(r.module.identification.family);
+            }
             (*next)(i + 1);
         });
     };
     (*next)(0);
+}
+
+void FoldWizard::startFromNode()
+{
+    // The node as read, not a default plan: its type, and each module's version, mode and
+    // address (issue #23). A plan file opened later is checked against it on the check page.
+    model::FoldPlan base = m_plan;
+    if (m_nodeType && *m_nodeType != base.node)
+        base = model::defaultFoldPlan(*m_nodeType, 0);
+    setPlan(model::foldPlanFromNode(base, m_node));
+    std::vector<int> found;
+    for (const model::FoldModule &m : m_plan.modules)
+        found.push_back(m.address);
+    m_found = std::move(found);
 }
 
 void FoldWizard::setPlan(const model::FoldPlan &plan)

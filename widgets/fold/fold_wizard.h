@@ -13,6 +13,7 @@
 #include <QPointer>
 #include <QWizard>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace vt::dev {
@@ -65,7 +66,8 @@ public:
 
     // Identifies every address of the connection (version and mode of each module, as a scan
     // does) and calls `done` when all have answered or not; the main window shows the wizard
-    // only then, so its first page already knows the node. Offline: `done` at once.
+    // only then, so its first page already knows the node. Unless a plan file is open, the plan
+    // then becomes the node as read (type, versions, modes, addresses). Offline: `done` at once.
     void readNode(std::function<void()> done);
     // What the node reported at the last readNode(); nodeRead() false before one finished.
     const std::vector<model::FoldNodeModule> &nodeModules() const { return m_node; }
@@ -79,6 +81,7 @@ protected:
 
 private:
     void retranslate();
+    void startFromNode();
 
     const dev::DictionarySet &m_dictionaries;
     QPointer<model::Connection> m_connection;
@@ -86,6 +89,7 @@ private:
     QString m_planPath;
     std::vector<int> m_found;
     std::vector<model::FoldNodeModule> m_node;
+    std::optional<model::FoldNode> m_nodeType; // from the first module that answered
     bool m_nodeRead = false;
     int m_readGeneration = 0;
 };

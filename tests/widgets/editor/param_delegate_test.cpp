@@ -10,6 +10,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QHeaderView>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
@@ -234,6 +235,28 @@ TEST(ParameterEditorWidget, FiltersAndANewDocumentKeepTheOpenBlocks)
     view->collapse(blockOf("E22"));
     editor.findChild<QCheckBox *>(QStringLiteral("filterInactive"))->toggle();
     EXPECT_FALSE(view->isExpanded(blockOf("E22")));
+}
+
+TEST(ParameterEditorWidget, AccessColumnShowsItsWholeHeaderAndValues)
+{
+    const dev::Dictionary &dma = *dev::builtinDictionaries()->find("dma-pn-v51");
+    model::ParameterDocument doc;
+    ui::ParameterEditor editor(doc);
+    editor.resize(700, 400); // narrower than all columns: the last one is not stretched wider
+    editor.show();
+    doc.createNew({&dma, "51", "3", 3, 1}, *dev::builtinDictionaries());
+    QTreeView *view = editor.view();
+    const int column = model::ParameterTreeModel::ColAccess;
+    ASSERT_FALSE(view->isColumnHidden(column));
+    const QString header = editor.treeModel()->headerData(column, Qt::Horizontal).toString();
+    ASSERT_FALSE(header.isEmpty());
+    EXPECT_GT(view->columnWidth(column), view->header()->fontMetrics().horizontalAdvance(header))
+        << header.toStdString();
+    const QModelIndex c107 = editor.treeModel()->indexOf(0, dma.find("C1.07"), column);
+    const QString access = c107.data().toString();
+    ASSERT_FALSE(access.isEmpty());
+    EXPECT_GT(view->columnWidth(column), view->fontMetrics().horizontalAdvance(access))
+        << access.toStdString();
 }
 
 } // namespace

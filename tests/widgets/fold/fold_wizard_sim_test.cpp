@@ -15,6 +15,7 @@
 
 #include <QAbstractButton>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QLabel>
 #include <QRadioButton>
 #include <QSignalSpy>
@@ -226,6 +227,66 @@ TEST(FoldWizardSim, TheCheckPageFlagsAPlanThatDoesNotMatchTheNode)
         m.mode = 3;
     }
     EXPECT_TRUE(model::checkPlanAgainstNode(matching, wizard.nodeModules()).empty());
+}
+
+// Opened on a connected node, the wizard starts from the node as read: the Modules page shows
+// each module's real version and mode (V51, mode 3 here), not the default plan (V13, mode 1);
+// a plan changed afterwards is flagged on the check page.
+TEST(FoldWizardSim, OpensOnTheConnectedNodesRealModules)
+{
+    auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}});
+    ASSERT_TRUE(c);
+    dev::sim::HcsNode &node = *c->simEndpoint()->node();
+    node.module(2).setAddress(5); // addresses 1, 2, 5: the plan takes them as they are
+    FoldWizard wizard(*dev::builtinDictionaries(), c->connection.get());
+    bool read = false;
+    wizard.readNode([&] { read = true; });
+    ASSERT_TRUE(waitUntil([&] { return read; }, kWaitMs));
+    ASSERT_TRUE(wizard.nodeRead());
+    ASSERT_EQ(wizard.nodeModules().size(), 3u);
+
+    EXPECT_EQ(wizard.plan().node, model::FoldNode::DmaProfinet);
+    ASSERT_EQ(wizard.plan().modules.size(), 3u);
+    const int addresses[] = {1, 2, 5};
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(wizard.plan().modules[i].version, 51) << i;
+        EXPECT_EQ(wizard.plan().modules[i].mode, 3) << i;
+        EXPECT_EQ(wizard.plan().modules[i].address, addresses[i]) << i;
+    }
+    EXPECT_EQ(wizard.foundAddresses(), (std::vector<int>{1, 2, 5}));
+
+    wizard.show();
+    wizard.restart();
+    nextTo(wizard, FoldWizard::ModulesPageId);
+    auto *table = wizard.currentPage()->findChild<QTableWidget *>();
+    ASSERT_NE(table, nullptr);
+    ASSERT_EQ(table->rowCount(), 3);
+    for (int row = 0; row < 3; ++row) {
+        auto *version = qobject_cast<QComboBox *>(table->cellWidget(row, 1));
+        auto *mode = qobject_cast<QComboBox *>(table->cellWidget(row, 2));
+        ASSERT_TRUE(version && mode);
+        EXPECT_EQ(version->currentData().toInt(), 51) << row;
+        EXPECT_EQ(version->currentText(), "V51");
+        EXPECT_EQ(mode->currentData().toInt(), 3) << row;
+        EXPECT_TRUE(mode->currentText().startsWith("Mode 3")) << mode->currentText().toStdString();
+    }
+    nextTo(wizard, FoldWizard::CheckPageId);
+    auto *check = static_cast<FoldCheckPage *>(wizard.currentPage());
+    auto mismatches = [&] {
+        int n = 0;
+        for (const model::FoldFinding &f : check->findings())
+            n += f.code == model::FoldCheckCode::NodeMismatch ? 1 : 0;
+        return n;
+    };
+    EXPECT_EQ(mismatches(), 0); // the plan is the node
+
+    // A plan that differs from the node (mode 4 on module 2, as a plan file may say) is flagged.
+    model::FoldPlan changed = wizard.plan();
+    changed.modules[1].mode = 4;
+    wizard.setPlan(changed);
+    nextTo(wizard, FoldWizard::CheckPageId);
+    check = static_cast<FoldCheckPage *>(wizard.currentPage());
+    EXPECT_EQ(mismatches(), 1);
 }
 
 } // namespace
