@@ -4545,6 +4545,160 @@ Senden?</translation>
     </message>
 </context>
 <context>
+    <name>vt::ui::RunList</name>
+    <message>
+        <source>Save Run</source>
+        <translation>Lauf speichern</translation>
+    </message>
+    <message>
+        <source>run-%1.csv</source>
+        <translation>lauf-%1.csv</translation>
+    </message>
+    <message>
+        <source>Run recordings (*.csv)</source>
+        <translation>Laufaufzeichnungen (*.csv)</translation>
+    </message>
+    <message>
+        <source>Saved %1 and its .json.</source>
+        <translation>%1 und die zugehörige .json gespeichert.</translation>
+    </message>
+    <message>
+        <source>Load Runs</source>
+        <translation>Läufe laden</translation>
+    </message>
+    <message>
+        <source>Runs (*.json *.csv)</source>
+        <translation>Läufe (*.json *.csv)</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>Läufe</translation>
+    </message>
+    <message>
+        <source>Save Run…</source>
+        <translation>Lauf speichern …</translation>
+    </message>
+    <message>
+        <source>Load Runs…</source>
+        <translation>Läufe laden …</translation>
+    </message>
+    <message>
+        <source>The current run is drawn with its marks; tick others to overlay them and to compare their settings.</source>
+        <translation>Der aktuelle Lauf wird mit seinen Markierungen gezeichnet; weitere ankreuzen, um sie zu überlagern und ihre Einstellungen zu vergleichen.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::RunResultsTabs</name>
+    <message>
+        <source>No response row was recorded: nothing to analyse.</source>
+        <translation>Keine Antwortzeile aufgezeichnet: nichts auszuwerten.</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>Frequenz (Hz)</translation>
+    </message>
+    <message>
+        <source>Gain (dB)</source>
+        <translation>Verstärkung (dB)</translation>
+    </message>
+    <message>
+        <source>Phase (°)</source>
+        <translation>Phase (°)</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>Güte</translation>
+    </message>
+    <message>
+        <source>Valid</source>
+        <translation>Gültig</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>−3 dB at</source>
+        <translation>−3 dB bei</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>nicht erreicht</translation>
+    </message>
+    <message>
+        <source>−90° at</source>
+        <translation>−90° bei</translation>
+    </message>
+    <message>
+        <source>Step (%1)</source>
+        <translation>Sprung (%1)</translation>
+    </message>
+    <message>
+        <source>Dead time (s)</source>
+        <translation>Totzeit (s)</translation>
+    </message>
+    <message>
+        <source>Rise time (s)</source>
+        <translation>Anstiegszeit (s)</translation>
+    </message>
+    <message>
+        <source>Overshoot (%)</source>
+        <translation>Überschwingen (%)</translation>
+    </message>
+    <message>
+        <source>Peak time (s)</source>
+        <translation>Spitzenzeit (s)</translation>
+    </message>
+    <message>
+        <source>Settling 2 % (s)</source>
+        <translation>Ausregelzeit 2 % (s)</translation>
+    </message>
+    <message>
+        <source>Settling 5 % (s)</source>
+        <translation>Ausregelzeit 5 % (s)</translation>
+    </message>
+    <message>
+        <source>Steady-state error (%1)</source>
+        <translation>Bleibende Regelabweichung (%1)</translation>
+    </message>
+    <message>
+        <source>Final value</source>
+        <translation>Endwert</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Tick a second run to compare its settings</source>
+        <translation>Einen zweiten Lauf ankreuzen, um seine Einstellungen zu vergleichen</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Run %1</source>
+        <translation>Lauf %1</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation>Ergebnisse</translation>
+    </message>
+    <message>
+        <source>Setting differences</source>
+        <translation>Unterschiede der Einstellungen</translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::SerialLineFields</name>
     <message>
         <source>&amp;Baud rate:</source>
@@ -5043,130 +5197,6 @@ Senden?</translation>
         <translation>Werkbank: Lauf %1 beendet, Werte NICHT zurückgesetzt.</translation>
     </message>
     <message>
-        <source>No response row was recorded: nothing to analyse.</source>
-        <translation>Keine Antwortzeile aufgezeichnet: nichts auszuwerten.</translation>
-    </message>
-    <message>
-        <source>Frequency (Hz)</source>
-        <translation>Frequenz (Hz)</translation>
-    </message>
-    <message>
-        <source>Gain (dB)</source>
-        <translation>Verstärkung (dB)</translation>
-    </message>
-    <message>
-        <source>Phase (°)</source>
-        <translation>Phase (°)</translation>
-    </message>
-    <message>
-        <source>Quality</source>
-        <translation>Güte</translation>
-    </message>
-    <message>
-        <source>Valid</source>
-        <translation>Gültig</translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation>ja</translation>
-    </message>
-    <message>
-        <source>−3 dB at</source>
-        <translation>−3 dB bei</translation>
-    </message>
-    <message>
-        <source> Hz</source>
-        <translation> Hz</translation>
-    </message>
-    <message>
-        <source>not reached</source>
-        <translation>nicht erreicht</translation>
-    </message>
-    <message>
-        <source>−90° at</source>
-        <translation>−90° bei</translation>
-    </message>
-    <message>
-        <source>Step (%1)</source>
-        <translation>Sprung (%1)</translation>
-    </message>
-    <message>
-        <source>Dead time (s)</source>
-        <translation>Totzeit (s)</translation>
-    </message>
-    <message>
-        <source>Rise time (s)</source>
-        <translation>Anstiegszeit (s)</translation>
-    </message>
-    <message>
-        <source>Overshoot (%)</source>
-        <translation>Überschwingen (%)</translation>
-    </message>
-    <message>
-        <source>Peak time (s)</source>
-        <translation>Spitzenzeit (s)</translation>
-    </message>
-    <message>
-        <source>Settling 2 % (s)</source>
-        <translation>Ausregelzeit 2 % (s)</translation>
-    </message>
-    <message>
-        <source>Settling 5 % (s)</source>
-        <translation>Ausregelzeit 5 % (s)</translation>
-    </message>
-    <message>
-        <source>Steady-state error (%1)</source>
-        <translation>Bleibende Regelabweichung (%1)</translation>
-    </message>
-    <message>
-        <source>Final value</source>
-        <translation>Endwert</translation>
-    </message>
-    <message>
-        <source>%1 → %2</source>
-        <translation>%1 → %2</translation>
-    </message>
-    <message>
-        <source>Tick a second run to compare its settings</source>
-        <translation>Einen zweiten Lauf ankreuzen, um seine Einstellungen zu vergleichen</translation>
-    </message>
-    <message>
-        <source>Parameter</source>
-        <translation>Parameter</translation>
-    </message>
-    <message>
-        <source>Run %1</source>
-        <translation>Lauf %1</translation>
-    </message>
-    <message>
-        <source>not read</source>
-        <translation>nicht gelesen</translation>
-    </message>
-    <message>
-        <source>Save Run</source>
-        <translation>Lauf speichern</translation>
-    </message>
-    <message>
-        <source>run-%1.csv</source>
-        <translation>lauf-%1.csv</translation>
-    </message>
-    <message>
-        <source>Run recordings (*.csv)</source>
-        <translation>Laufaufzeichnungen (*.csv)</translation>
-    </message>
-    <message>
-        <source>Saved %1 and its .json.</source>
-        <translation>%1 und die zugehörige .json gespeichert.</translation>
-    </message>
-    <message>
-        <source>Load Runs</source>
-        <translation>Läufe laden</translation>
-    </message>
-    <message>
-        <source>Runs (*.json *.csv)</source>
-        <translation>Läufe (*.json *.csv)</translation>
-    </message>
-    <message>
         <source>Module</source>
         <translation>Modul</translation>
     </message>
@@ -5187,10 +5217,6 @@ Senden?</translation>
         <translation>so schnell wie möglich</translation>
     </message>
     <message>
-        <source>Runs</source>
-        <translation>Läufe</translation>
-    </message>
-    <message>
         <source>Travel window</source>
         <translation>Verfahrfenster</translation>
     </message>
@@ -5205,26 +5231,6 @@ Senden?</translation>
     <message>
         <source>Stop (Esc)</source>
         <translation>Stopp (Esc)</translation>
-    </message>
-    <message>
-        <source>Save Run…</source>
-        <translation>Lauf speichern …</translation>
-    </message>
-    <message>
-        <source>Load Runs…</source>
-        <translation>Läufe laden …</translation>
-    </message>
-    <message>
-        <source>Results</source>
-        <translation>Ergebnisse</translation>
-    </message>
-    <message>
-        <source>Setting differences</source>
-        <translation>Unterschiede der Einstellungen</translation>
-    </message>
-    <message>
-        <source>The current run is drawn with its marks; tick others to overlay them and to compare their settings.</source>
-        <translation>Der aktuelle Lauf wird mit seinen Markierungen gezeichnet; weitere ankreuzen, um sie zu überlagern und ihre Einstellungen zu vergleichen.</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,8 @@
 #include "model/text_language.h"
 #include "model/tuning/workbench_rows.h"
 #include "response_plot.h"
+#include "run_list.h"
+#include "run_results_tabs.h"
 #include "signal_form.h"
 #include "widgets/actuator_confirm.h"
 #include "widgets/number_box.h"
@@ -49,17 +51,6 @@ QString rowText(const dev::ParamMeta &row)
     const QString label = QString::fromStdString(row.label.in(model::textLanguage()));
     return label.isEmpty() ? QString::fromStdString(row.name)
                            : QStringLiteral("%1 (%2)").arg(QString::fromStdString(row.name), label);
-}
-
-void setRow(QTableWidget *table, int row, const QStringList &cells)
-{
-    for (int c = 0; c < cells.size(); ++c) {
-        auto *item = new QTableWidgetItem(cells[c]);
-        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-        if (c > 0)
-            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        table->setItem(row, c, item);
-    }
 }
 
 } // namespace
@@ -124,17 +115,8 @@ void WorkbenchView::build()
     m_window->setValue(1);
     limits->addRow(m_useWindow, m_window);
     column->addLayout(limits);
-    m_runsLabel = new QLabel(settings);
-    column->addWidget(m_runsLabel);
-    m_runList = new QListWidget(settings);
-    m_runList->setMinimumHeight(60);
-    column->addWidget(m_runList, 1);
-    auto *files = new QHBoxLayout;
-    m_save = new QPushButton(settings);
-    m_load = new QPushButton(settings);
-    files->addWidget(m_save);
-    files->addWidget(m_load);
-    column->addLayout(files);
+    m_runs = new RunList(settings);
+    column->addWidget(m_runs, 1);
     scroll->setWidget(settings);
     leftLayout->addWidget(scroll, 1);
     auto *buttons = new QHBoxLayout;
@@ -156,17 +138,7 @@ void WorkbenchView::build()
     m_bode = new BodePlot(m_plots);
     m_plots->addWidget(m_response);
     m_plots->addWidget(m_bode);
-    m_tabs = new QTabWidget(right);
-    m_results = new QTableWidget(m_tabs);
-    m_differences = new QTableWidget(m_tabs);
-    for (QTableWidget *t : {m_results, m_differences}) {
-        t->verticalHeader()->setVisible(false);
-        t->setEditTriggers(QAbstractItemView::NoEditTriggers);
-        t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-        t->setMinimumHeight(60);
-    }
-    m_tabs->addTab(m_results, QString());
-    m_tabs->addTab(m_differences, QString());
+    m_tabs = new RunResultsTabs(right);
     buildGuided();
     right->setStretchFactor(0, 3);
     right->setStretchFactor(1, 2);
@@ -177,11 +149,12 @@ void WorkbenchView::build()
     connect(m_setValue, &QComboBox::currentIndexChanged, this, &WorkbenchView::setValueChosen);
     connect(m_start, &QPushButton::clicked, this, &WorkbenchView::start);
     connect(m_stop, &QPushButton::clicked, this, &WorkbenchView::stop);
-    connect(m_save, &QPushButton::clicked, this, &WorkbenchView::saveCurrent);
-    connect(m_load, &QPushButton::clicked, this, &WorkbenchView::loadRuns);
     connect(m_useWindow, &QCheckBox::toggled, this, &WorkbenchView::updateEnabled);
-    connect(m_runList, &QListWidget::currentRowChanged, this, &WorkbenchView::showCurrent);
-    connect(m_runList, &QListWidget::itemChanged, this, &WorkbenchView::showCurrent);
+    connect(m_runs, &RunList::selectionChanged, this, &WorkbenchView::showCurrent);
+    connect(m_runs, &RunList::statusMessage, this, [this](const QString &text) {
+        m_status = text;
+        m_statusLabel->setText(text);
+    });
     connect(m_form, &SignalForm::changed, this, &WorkbenchView::updateEnabled);
 }
 
@@ -200,10 +173,8 @@ void WorkbenchView::buildGuided()
     };
     hooks.busy = [this] { return isRunning(); };
     hooks.addRun = [this](std::unique_ptr<model::TuningRun> run, bool overlayPrevious) {
-        run->number = m_nextNumber;
-        addRun(std::move(run));
-        if (overlayPrevious && m_runList->count() >= 2)
-            m_runList->item(m_runList->count() - 2)->setCheckState(Qt::Checked);
+        run->number = m_runs->nextNumber();
+        m_runs->addRun(std::move(run), overlayPrevious);
     };
     hooks.written = [this](int module, const std::vector<model::WriteItem> &items) {
         emit written(module, items);
@@ -342,13 +313,27 @@ void WorkbenchView::updateEnabled()
     m_rate->setEnabled(!running);
     m_useWindow->setEnabled(!running);
     m_window->setEnabled(!running && m_useWindow->isChecked());
-    m_load->setEnabled(!running);
-    m_save->setEnabled(!running && m_runList->currentRow() >= 0);
+    m_runs->setFilesEnabled(!running);
 }
 
 bool WorkbenchView::isRunning() const
 {
     return m_test && m_test->isRunning();
+}
+
+const std::vector<std::unique_ptr<model::TuningRun>> &WorkbenchView::runs() const
+{
+    return m_runs->runs();
+}
+
+QTableWidget *WorkbenchView::resultsTable() const
+{
+    return m_tabs->resultsTable();
+}
+
+QTableWidget *WorkbenchView::differencesTable() const
+{
+    return m_tabs->differencesTable();
 }
 
 QString WorkbenchView::statusText() const
@@ -411,7 +396,7 @@ void WorkbenchView::begin(model::TestRunSetup setup)
 {
     if (!m_access || isRunning())
         return;
-    m_live = model::newRun(m_nextNumber, setup, m_access->image());
+    m_live = model::newRun(m_runs->nextNumber(), setup, m_access->image());
     m_test = std::make_unique<model::TestRun>(*m_access, std::move(setup));
     connect(m_test.get(), &model::TestRun::sampled, this, [this] {
         if (!m_redraw.isActive())
@@ -535,49 +520,21 @@ void WorkbenchView::onFinished(const model::TestOutcome &outcome)
     if (const auto signal = model::TestSignal::make(run->spec))
         run->analysis =
             model::analyseRun(*signal, run->recording, run->responseRow, run->setValueRow);
-    ++m_nextNumber;
     m_lastOutcome = outcome;
     m_status = outcomeText(outcome);
     m_statusLabel->setText(m_status);
-    emit statusMessage(
-        outcome.restored
-            ? tr("Workbench: run %1 done, values restored.").arg(m_nextNumber - 1)
-            : tr("Workbench: run %1 ended, values NOT restored.").arg(m_nextNumber - 1));
+    emit statusMessage(outcome.restored
+                           ? tr("Workbench: run %1 done, values restored.").arg(run->number)
+                           : tr("Workbench: run %1 ended, values NOT restored.").arg(run->number));
     if (!outcome.restore.empty())
         emit written(run->module, outcome.restore);
-    addRun(std::move(run));
+    m_runs->addRun(std::move(run));
     updateEnabled();
-}
-
-void WorkbenchView::addRun(std::unique_ptr<model::TuningRun> run)
-{
-    m_nextNumber = std::max(m_nextNumber, run->number + 1);
-    auto *item = new QListWidgetItem(model::runTitle(*run));
-    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-    item->setCheckState(Qt::Unchecked);
-    m_runs.push_back(std::move(run));
-    const QSignalBlocker block(m_runList);
-    m_runList->addItem(item);
-    m_runList->setCurrentItem(item);
-    showCurrent();
-}
-
-std::vector<const model::TuningRun *> WorkbenchView::shownRuns() const
-{
-    std::vector<const model::TuningRun *> out;
-    const int current = m_runList->currentRow();
-    if (current < 0 || current >= static_cast<int>(m_runs.size()))
-        return out;
-    out.push_back(m_runs[static_cast<std::size_t>(current)].get());
-    for (int i = 0; i < m_runList->count(); ++i)
-        if (i != current && m_runList->item(i)->checkState() == Qt::Checked)
-            out.push_back(m_runs[static_cast<std::size_t>(i)].get());
-    return out;
 }
 
 void WorkbenchView::showCurrent()
 {
-    const auto runs = shownRuns();
+    const auto runs = m_runs->shownRuns();
     updateEnabled();
     if (runs.empty() || isRunning())
         return;
@@ -590,124 +547,7 @@ void WorkbenchView::showCurrent()
         m_response->showRuns(runs);
         m_plots->setCurrentWidget(m_response);
     }
-    fillResults(*runs.front());
-    fillDifferences();
-}
-
-void WorkbenchView::fillResults(const model::TuningRun &run)
-{
-    m_results->clear();
-    const model::RunAnalysis &a = run.analysis;
-    const QString unit =
-        run.setValueRow ? QString::fromStdString(run.setValueRow->unit) : QString();
-    if (!a.hasResponse) {
-        m_results->setRowCount(0);
-        m_results->setColumnCount(1);
-        m_results->setHorizontalHeaderLabels(
-            {tr("No response row was recorded: nothing to analyse.")});
-        return;
-    }
-    if (!a.points.empty() && run.spec.kind != model::SignalKind::Square) {
-        m_results->setColumnCount(5);
-        m_results->setHorizontalHeaderLabels(
-            {tr("Frequency (Hz)"), tr("Gain (dB)"), tr("Phase (°)"), tr("Quality"), tr("Valid")});
-        m_results->setRowCount(static_cast<int>(a.points.size()) + 2);
-        int r = 0;
-        for (const model::FrequencyPoint &p : a.points)
-            setRow(m_results, r++,
-                   {num(p.frequencyHz, 3), num(p.gainDb, 2), num(p.phaseDeg, 1), num(p.quality, 3),
-                    p.valid ? tr("yes") : frequencyProblemText(p.problem)});
-        setRow(m_results, r++,
-               {tr("−3 dB at"), a.f3dB ? num(*a.f3dB, 2) + tr(" Hz") : tr("not reached")});
-        setRow(m_results, r++,
-               {tr("−90° at"), a.f90deg ? num(*a.f90deg, 2) + tr(" Hz") : tr("not reached")});
-        return;
-    }
-    m_results->setColumnCount(9);
-    m_results->setHorizontalHeaderLabels(
-        {tr("Step (%1)").arg(unit), tr("Dead time (s)"), tr("Rise time (s)"), tr("Overshoot (%)"),
-         tr("Peak time (s)"), tr("Settling 2 % (s)"), tr("Settling 5 % (s)"),
-         tr("Steady-state error (%1)").arg(unit), tr("Final value")});
-    m_results->setRowCount(static_cast<int>(a.steps.size()));
-    int r = 0;
-    for (const model::StepResult &s : a.steps) {
-        const QString step = tr("%1 → %2").arg(num(s.edge.from, 3), num(s.edge.to, 3));
-        if (!s.metrics) {
-            setRow(m_results, r++, {step, s.problem ? stepProblemText(*s.problem) : QString()});
-            continue;
-        }
-        const model::StepMetrics &m = *s.metrics;
-        setRow(m_results, r++,
-               {step, num(m.deadTime, 3), num(m.riseTime, 3), num(m.overshootPct, 1),
-                num(m.peakTime, 3), num(m.settlingTime2, 3), num(m.settlingTime5, 3),
-                num(m.steadyStateError, 3), num(m.finalValue, 3)});
-    }
-}
-
-void WorkbenchView::fillDifferences()
-{
-    m_differences->clear();
-    const auto runs = shownRuns();
-    m_differences->setColumnCount(3);
-    if (runs.size() < 2) {
-        m_differences->setRowCount(0);
-        m_differences->setHorizontalHeaderLabels(
-            {tr("Tick a second run to compare its settings"), QString(), QString()});
-        return;
-    }
-    const model::TuningRun &a = *runs[0];
-    const model::TuningRun &b = *runs[1];
-    m_differences->setHorizontalHeaderLabels(
-        {tr("Parameter"), tr("Run %1").arg(a.number), tr("Run %1").arg(b.number)});
-    const auto diffs = model::settingDifferences(a, b);
-    m_differences->setRowCount(static_cast<int>(diffs.size()));
-    const auto text = [](const model::TuningRun &run, const std::string &name,
-                         const std::optional<double> &raw) {
-        if (!raw)
-            return tr("not read");
-        const dev::ParamMeta *row = run.dictionary ? run.dictionary->find(name) : nullptr;
-        return row ? QString::fromStdString(dev::formatValue(*row, *raw, model::textLanguage()))
-                   : QString::number(*raw);
-    };
-    int r = 0;
-    for (const model::SettingDifference &d : diffs)
-        setRow(m_differences, r++,
-               {QString::fromStdString(d.name), text(a, d.name, d.a), text(b, d.name, d.b)});
-}
-
-void WorkbenchView::saveCurrent()
-{
-    const auto runs = shownRuns();
-    if (runs.empty())
-        return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Run"),
-                                                      tr("run-%1.csv").arg(runs.front()->number),
-                                                      tr("Run recordings (*.csv)"));
-    if (path.isEmpty())
-        return;
-    const QString error = model::saveRun(*runs.front(), path);
-    m_status = error.isEmpty() ? tr("Saved %1 and its .json.").arg(path) : error;
-    m_statusLabel->setText(m_status);
-}
-
-void WorkbenchView::loadRuns()
-{
-    const QStringList paths =
-        QFileDialog::getOpenFileNames(this, tr("Load Runs"), QString(), tr("Runs (*.json *.csv)"));
-    QStringList problems;
-    for (const QString &path : paths) {
-        QString why;
-        auto run = model::loadRun(path, *dev::builtinDictionaries(), &why);
-        if (!run) {
-            problems << why;
-            continue;
-        }
-        addRun(std::make_unique<model::TuningRun>(std::move(*run)));
-    }
-    if (!problems.isEmpty()) {
-        m_status = problems.join(QLatin1Char('\n'));
-        m_statusLabel->setText(m_status);
-    }
+    m_tabs->showRuns(runs);
 }
 
 void WorkbenchView::changeEvent(QEvent *event)
@@ -725,21 +565,12 @@ void WorkbenchView::retranslate()
     m_rate->setToolTip(tr("Set-value writes and reads per second; 0: as fast as the link "
                           "allows (at most 1000)."));
     m_rate->setSpecialValueText(tr("as fast as possible"));
-    m_runsLabel->setText(tr("Runs"));
     m_useWindow->setText(tr("Travel window"));
     m_window->setToolTip(tr("Stop the test when the actual value leaves the signal's range by "
                             "more than this."));
     m_start->setText(tr("Start Test"));
     m_stop->setText(tr("Stop (Esc)"));
-    m_save->setText(tr("Save Run…"));
-    m_load->setText(tr("Load Runs…"));
-    m_tabs->setTabText(0, tr("Results"));
-    m_tabs->setTabText(1, tr("Setting differences"));
     m_tabs->setTabText(2, tr("Guided tuning"));
-    m_runList->setToolTip(tr("The current run is drawn with its marks; tick others to overlay "
-                             "them and to compare their settings."));
-    for (int i = 0; i < m_runList->count() && i < static_cast<int>(m_runs.size()); ++i)
-        m_runList->item(i)->setText(model::runTitle(*m_runs[static_cast<std::size_t>(i)]));
     for (int i = 0; i < m_module->count() && i < static_cast<int>(m_modules.size()); ++i) {
         const model::ModuleInfo &m = m_modules[static_cast<std::size_t>(i)];
         m_module->setItemText(i, tr("Module %1 (%2)")
@@ -753,7 +584,7 @@ void WorkbenchView::retranslate()
         m_status = outcomeText(*m_lastOutcome);
         m_statusLabel->setText(m_status);
     }
-    if (!m_runs.empty() && !isRunning())
+    if (!m_runs->runs().empty() && !isRunning())
         showCurrent();
 }
 

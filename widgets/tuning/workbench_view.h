@@ -32,6 +32,8 @@ class BodePlot;
 class GuidedPanel;
 class NumberBox;
 class ResponsePlot;
+class RunList;
+class RunResultsTabs;
 class SignalForm;
 
 class WorkbenchView : public QWidget
@@ -55,15 +57,12 @@ public:
     void stop();
     bool isRunning() const;
 
-    const std::vector<std::unique_ptr<model::TuningRun>> &runs() const { return m_runs; }
-    // Adds a run (a loaded one) and shows it.
-    void addRun(std::unique_ptr<model::TuningRun> run);
+    const std::vector<std::unique_ptr<model::TuningRun>> &runs() const;
+    RunList *runList() const { return m_runs; }
     QString statusText() const;
-    QTableWidget *resultsTable() const { return m_results; }
-    QTableWidget *differencesTable() const { return m_differences; }
+    QTableWidget *resultsTable() const;
+    QTableWidget *differencesTable() const;
     GuidedPanel *guidedPanel() const { return m_guided; }
-    // Runs checked for the overlay (the current one first).
-    std::vector<const model::TuningRun *> shownRuns() const;
 
 signals:
     // The set value written back, the source switched and restored: for the monitor's journal.
@@ -86,18 +85,12 @@ private:
     void onFinished(const model::TestOutcome &outcome);
     void refreshLive();
     void showCurrent();
-    void fillResults(const model::TuningRun &run);
-    void fillDifferences();
-    void saveCurrent();
-    void loadRuns();
     QString outcomeText(const model::TestOutcome &outcome) const;
 
     model::DeviceAccess *m_access = nullptr;
     std::vector<model::ModuleInfo> m_modules; // those with a set value
     std::unique_ptr<model::TestRun> m_test;
     std::unique_ptr<model::TuningRun> m_live; // the run being recorded
-    std::vector<std::unique_ptr<model::TuningRun>> m_runs;
-    int m_nextNumber = 1;
     QTimer m_redraw;
     QString m_status;
     std::optional<model::TestOutcome> m_lastOutcome; // of the last finished test
@@ -118,14 +111,9 @@ private:
     QStackedWidget *m_plots = nullptr;
     ResponsePlot *m_response = nullptr;
     BodePlot *m_bode = nullptr;
-    QTabWidget *m_tabs = nullptr;
-    QTableWidget *m_results = nullptr;
-    QTableWidget *m_differences = nullptr;
-    QLabel *m_runsLabel = nullptr;
+    RunResultsTabs *m_tabs = nullptr;
     GuidedPanel *m_guided = nullptr;
-    QListWidget *m_runList = nullptr;
-    QPushButton *m_save = nullptr;
-    QPushButton *m_load = nullptr;
+    RunList *m_runs = nullptr;
 };
 
 } // namespace vt::ui

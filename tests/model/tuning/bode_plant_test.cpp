@@ -54,8 +54,7 @@ FrequencyPoint plantResponse(double frequencyHz)
         actual.t.push_back(t + kStepUs * 1e-6);
         actual.y.push_back(module.storage().get("d1.11") / 1000.0);
     }
-    return frequencyPoint(set, actual, frequencyHz, kSettling / frequencyHz, kCycles,
-                          {2000, 2000});
+    return frequencyPoint(set, actual, frequencyHz, kSettling / frequencyHz, kCycles, {2000, 2000});
 }
 
 TEST(WorkbenchOnTheSimulator, TheMeasuredBodeMatchesThePlantsOwnResponse)
@@ -66,9 +65,8 @@ TEST(WorkbenchOnTheSimulator, TheMeasuredBodeMatchesThePlantsOwnResponse)
     // up the rest of the way.
     {
         std::optional<Outcome> done;
-        rig->access().write(rig->module().address, rig->row("A1.01"),
-                            dev::RawValue{kOffset * 1000}, Priority::User,
-                            [&](const Outcome &o) { done = o; });
+        rig->access().write(rig->module().address, rig->row("A1.01"), dev::RawValue{kOffset * 1000},
+                            Priority::User, [&](const Outcome &o) { done = o; });
         ASSERT_TRUE(test::waitFor(done));
     }
     SignalSpec s;

@@ -7,6 +7,7 @@
 #include "sim_rig.h"
 #include "widgets/tuning/guided_panel.h"
 #include "widgets/tuning/signal_form.h"
+#include "widgets/tuning/run_list.h"
 #include "widgets/tuning/workbench_view.h"
 
 #include <QSignalSpy>
@@ -75,7 +76,7 @@ TEST(GuidedPanel, ReachesTheTargetListsTheIterationsOverlaysThemAndKeepsTheGain)
     const int iterations = static_cast<int>(g->iterations().size());
     EXPECT_EQ(b.view.guidedPanel()->iterationsTable()->rowCount(), iterations);
     EXPECT_EQ(static_cast<int>(b.view.runs().size()), iterations);
-    EXPECT_EQ(static_cast<int>(b.view.shownRuns().size()), iterations); // all overlaid
+    EXPECT_EQ(static_cast<int>(b.view.runList()->shownRuns().size()), iterations); // all overlaid
     const double kept = g->best()->p;
     b.view.guidedPanel()->keep();
     ASSERT_TRUE(b.waitFor(model::GuidedState::Done));
