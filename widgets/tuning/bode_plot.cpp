@@ -29,7 +29,7 @@ BodePlot::BodePlot(QWidget *parent) : QCustomPlot(parent)
     connect(m_gain->axis(QCPAxis::atBottom), qOverload<const QCPRange &>(&QCPAxis::rangeChanged),
             m_phase->axis(QCPAxis::atBottom), qOverload<const QCPRange &>(&QCPAxis::setRange));
     setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    setMinimumHeight(160);
+    setMinimumHeight(120);
     retranslate();
 }
 

@@ -179,8 +179,14 @@ void WorkbenchView::buildGuided()
     hooks.written = [this](int module, const std::vector<model::WriteItem> &items) {
         emit written(module, items);
     };
-    m_guided = new GuidedPanel(std::move(hooks), m_tabs);
-    m_tabs->addTab(m_guided, QString());
+    // In a scroll area: its form would otherwise set the height of every tab and of the docks
+    // tabbed with the workbench.
+    auto *scroll = new QScrollArea(m_tabs);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_guided = new GuidedPanel(std::move(hooks), scroll);
+    scroll->setWidget(m_guided);
+    m_tabs->addTab(scroll, QString());
     connect(m_guided, &GuidedPanel::activeChanged, this, &WorkbenchView::updateEnabled);
 }
 
@@ -577,6 +583,11 @@ void WorkbenchView::retranslate()
                                      .arg(m.address)
                                      .arg(QString::fromStdString(m.identification.family)));
     }
+    if (const model::ModuleInfo *m = currentModule())
+        for (int i = 0; i < m_setValue->count(); ++i)
+            if (const dev::ParamMeta *row =
+                    m->dictionary->find(m_setValue->itemData(i).toString().toStdString()))
+                m_setValue->setItemText(i, rowText(*row));
     setValueChosen();
     // The last outcome is said again in the new language (the device's or the engine's reason
     // inside it stays as it was said).
