@@ -6,8 +6,8 @@
 #include "loop_bench.h"
 #include "sim_rig.h"
 #include "widgets/tuning/guided_panel.h"
-#include "widgets/tuning/signal_form.h"
 #include "widgets/tuning/run_list.h"
+#include "widgets/tuning/signal_form.h"
 #include "widgets/tuning/workbench_view.h"
 
 #include <QSignalSpy>
