@@ -322,9 +322,8 @@ int runTest(const QStringList &argsIn, Context &ctx)
     // The gate shows what the test does: the set value's range and every source row it switches.
     const auto rules = model::SetValueStep::activationRules(dict, mode);
     std::vector<GateItem> gated;
-    const double factor = setValue->scale.factor != 0 ? setValue->scale.factor : 1.0;
-    const dev::RawValue highest{std::round(signal->maximum() / factor)};
-    const dev::RawValue lowest{std::round(signal->minimum() / factor)};
+    const dev::RawValue highest{model::setValueRaw(*setValue, signal->maximum())};
+    const dev::RawValue lowest{model::setValueRaw(*setValue, signal->minimum())};
     gated.push_back({&*module, setValue, highest, {}});
     gated.push_back({&*module, setValue, lowest, {}});
     for (const dev::SetValueActivation *rule : rules)

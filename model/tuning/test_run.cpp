@@ -104,9 +104,7 @@ double TestRun::elapsed() const
 
 double TestRun::raw(double display) const
 {
-    const double factor =
-        m_setup.setValueRow->scale.factor != 0 ? m_setup.setValueRow->scale.factor : 1.0;
-    return std::round(display / factor);
+    return setValueRaw(*m_setup.setValueRow, display);
 }
 
 TestRunSetup TestRun::setupFor(const ModuleInfo &module, const dev::ParamMeta &setValue,
@@ -133,11 +131,10 @@ QString TestRun::rangeProblem(const TestRunSetup &setup)
         return tr("The module has no set value a test can drive.");
     if (!row->writable() || row->isString())
         return tr("%1 cannot be written.").arg(rowName(*row));
-    const double factor = row->scale.factor != 0 ? row->scale.factor : 1.0;
     for (double v : {setup.signal.minimum(), setup.signal.maximum()}) {
-        if (const auto error = dev::checkWrite(*row, std::round(v / factor)))
+        if (const auto error = dev::checkWrite(*row, setValueRaw(*row, v)))
             return tr("The signal reaches %1, outside %2: %3")
-                .arg(displayText(*row, std::round(v / factor)), rowName(*row),
+                .arg(displayText(*row, setValueRaw(*row, v)), rowName(*row),
                      QString::fromStdString(error->message.in(textLanguage())));
     }
     if (setup.window && !(*setup.window > 0))

@@ -1,6 +1,7 @@
 #include "workbench_rows.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vt::model {
 
@@ -50,6 +51,12 @@ std::vector<const dev::ParamMeta *> recordedRows(const dev::Dictionary &dictiona
         answer && std::find(rows.begin(), rows.end(), answer) == rows.end())
         rows.push_back(answer);
     return rows;
+}
+
+double setValueRaw(const dev::ParamMeta &setValue, double display)
+{
+    const double factor = setValue.scale.factor != 0 ? setValue.scale.factor : 1.0;
+    return std::round(display / factor);
 }
 
 const dev::FaultRow *faultCheck(const dev::Dictionary &dictionary, const std::string &mode)

@@ -26,6 +26,10 @@ std::vector<const dev::ParamMeta *> recordedRows(const dev::Dictionary &dictiona
                                                  const std::string &mode,
                                                  const dev::ParamMeta &setValue);
 
+// The raw value a set value of `display` units is written as (nearest raw step, as the step and
+// the signal range check send it).
+double setValueRaw(const dev::ParamMeta &setValue, double display);
+
 // The row whose value says the module is in error (the dictionary's "monitor"."fault"), or null.
 const dev::FaultRow *faultCheck(const dev::Dictionary &dictionary, const std::string &mode);
 

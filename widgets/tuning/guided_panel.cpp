@@ -179,22 +179,21 @@ void GuidedPanel::start()
     if (const QString problem = model::GuidedTuning::setupProblem(setup); !problem.isEmpty())
         return setStatus(problem);
 
-    const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
     const dev::Language lang = model::textLanguage();
     const auto before = access->image().value(module->address, row);
     const QStringList lines = {
         actuatorWriteLine(module->address, *row, before,
-                          dev::RawValue{std::round(setup.step.to / f)}, lang),
+                          dev::RawValue{model::setValueRaw(*row, setup.step.to)}, lang),
         tr("Guided tuning: up to %1 steps from %2 to %3, each held %4 s; every change of %5 is "
            "asked for (or allowed); Abort puts the gains back, and %6 is written back after "
            "each step.")
             .arg(setup.maxIterations)
-            .arg(
-                QString::fromStdString(
-                    dev::formatValue(*row, std::round(setup.step.from / f), lang)),
-                QString::fromStdString(dev::formatValue(*row, std::round(setup.step.to / f), lang)),
-                num(setup.step.hold, 2), QString::fromStdString(setup.gains.p->name),
-                QString::fromStdString(row->name))};
+            .arg(QString::fromStdString(
+                     dev::formatValue(*row, model::setValueRaw(*row, setup.step.from), lang)),
+                 QString::fromStdString(
+                     dev::formatValue(*row, model::setValueRaw(*row, setup.step.to), lang)),
+                 num(setup.step.hold, 2), QString::fromStdString(setup.gains.p->name),
+                 QString::fromStdString(row->name))};
     confirmActuatorWrites(this, lines, [this, setup, guard = QPointer<GuidedPanel>(this)] {
         if (guard)
             begin(setup);

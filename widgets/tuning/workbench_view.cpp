@@ -375,18 +375,18 @@ void WorkbenchView::start()
 
     // The question names the module, the set value, the range the signal will drive it through
     // and how long; the values go back afterwards.
-    const double f = row->scale.factor != 0 ? row->scale.factor : 1.0;
     const auto before = m_access->image().value(module->address, row);
     const dev::Language lang = model::textLanguage();
-    const QString rangeLine = actuatorWriteLine(
-        module->address, *row, before, dev::RawValue{std::round(signal->maximum() / f)}, lang);
+    const QString rangeLine =
+        actuatorWriteLine(module->address, *row, before,
+                          dev::RawValue{model::setValueRaw(*row, signal->maximum())}, lang);
     const QStringList lines = {
         rangeLine, tr("%1 test of %2 s between %3 and %4; afterwards %5 is written back.")
                        .arg(m_form->kindText(), num(signal->duration(), 1),
-                            QString::fromStdString(
-                                dev::formatValue(*row, std::round(signal->minimum() / f), lang)),
-                            QString::fromStdString(
-                                dev::formatValue(*row, std::round(signal->maximum() / f), lang)),
+                            QString::fromStdString(dev::formatValue(
+                                *row, model::setValueRaw(*row, signal->minimum()), lang)),
+                            QString::fromStdString(dev::formatValue(
+                                *row, model::setValueRaw(*row, signal->maximum()), lang)),
                             QString::fromStdString(row->name))};
     confirmActuatorWrites(this, lines, [this, setup, guard = QPointer<WorkbenchView>(this)] {
         if (guard)
