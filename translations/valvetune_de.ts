@@ -2798,6 +2798,10 @@
         <source>down</source>
         <translation>ab</translation>
     </message>
+    <message>
+        <source>Time response</source>
+        <translation>Zeitverlauf</translation>
+    </message>
 </context>
 <context>
     <name>vt::model::SampleStore</name>

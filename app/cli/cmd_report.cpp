@@ -13,6 +13,7 @@
 #include "node_read.h"
 
 #include <QGuiApplication>
+#include <QLocale>
 
 namespace vt::cli {
 
@@ -88,8 +89,27 @@ bool loadExtras(const ReportOptions &o, const dev::DictionarySet &dictionaries, 
     return true;
 }
 
+// The number format of the report's language for texts made with QLocale() (a run's title) while
+// the report is written; the process's default again afterwards.
+class ReportLocale
+{
+public:
+    explicit ReportLocale(dev::Language lang)
+    {
+        QLocale::setDefault(
+            QLocale(lang == dev::Language::German ? QLocale::German : QLocale::English));
+    }
+    ~ReportLocale() { QLocale::setDefault(m_before); }
+    ReportLocale(const ReportLocale &) = delete;
+    ReportLocale &operator=(const ReportLocale &) = delete;
+
+private:
+    QLocale m_before;
+};
+
 int finish(Context &ctx, const ReportOptions &o, const model::Report &report, int code)
 {
+    const ReportLocale locale(report.lang);
     if (const auto error = model::writeReport(report, o.out))
         return ctx.fail(kExitUsage, str(*error));
     if (ctx.json)

@@ -15,7 +15,8 @@ PlotSpec responsePlot(const TuningRun &run)
 {
     const QString unit = run.setValueRow ? reportQs(run.setValueRow->unit) : QString();
     PlotSpec spec;
-    spec.title = ReportText::tr("Step response");
+    spec.title = run.spec.kind == SignalKind::Step ? ReportText::tr("Step response")
+                                                   : ReportText::tr("Time response");
     spec.xLabel = ReportText::tr("time (s)");
     spec.yLabel = unit.isEmpty() ? ReportText::tr("value") : ReportText::tr("value (%1)").arg(unit);
     spec.series.push_back(

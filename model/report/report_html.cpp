@@ -116,7 +116,7 @@ QString modulesSection(const Report &r)
                   ReportText::tr("Mode"), ReportText::tr("Type code / serial"),
                   ReportText::tr("Settings"), ReportText::tr("Not default"),
                   ReportText::tr("Differ from reference")},
-                 rows);
+                 rows, {}, {10, 23, 10, 7, 15, 11, 11, 13});
 }
 
 // The longest parameter name of the module, in characters: HCS names are 4–5 ("C1.07"), Wandfluh
@@ -132,7 +132,7 @@ qsizetype nameWidth(const ReportModule &m)
 QString settingsSection(const Report &r, const ReportModule &m)
 {
     const Language lang = r.lang;
-    static const std::vector<int> widthsShort{9, 25, 17, 19, 16, 14};
+    static const std::vector<int> widthsShort{11, 25, 16, 18, 16, 14};
     static const std::vector<int> widthsLong{33, 20, 13, 14, 11, 9};
     std::vector<QStringList> rows;
     std::vector<bool> marked;

@@ -9,12 +9,16 @@
 #include "model/params/param_file_io.h"
 #include "model/report/report_render.h"
 #include "model/tuning/run_file.h"
+#include "widgets/report/report_dialog.h"
 
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QLineEdit>
+#include <QListWidget>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <cmath>
 #include <set>
@@ -298,6 +302,41 @@ TEST(ReportContents, WritesRunsReferenceMarksAndDriftReachJsonAndHtml)
     EXPECT_TRUE(bareHtml.contains(QStringLiteral("No writes recorded.")));
     EXPECT_FALSE(bareHtml.contains(QStringLiteral("Drift")));
     EXPECT_TRUE(Json::parse(model::reportJson(empty))["drift"].is_null());
+}
+
+TEST(ReportDialogTest, SavesWhatItsMakerGivesAndRemembersTheHeader)
+{
+    QSettings().remove(QStringLiteral("report"));
+    QTemporaryDir dir;
+    const QString vtpar = dir.filePath(QStringLiteral("node.vtpar"));
+    ASSERT_EQ(cli({"read", "--sim", "opat", "--out", vtpar}).code, cli::kExitOk);
+    const auto file = model::readParamFile(vtpar, dev::Language::English);
+    ASSERT_TRUE(file.ok());
+    const auto &dictionaries = dev::builtinDictionaries();
+    ui::ReportChoice seen;
+    const ui::ReportMaker maker = [&](const ui::ReportChoice &choice, const auto &use) {
+        seen = choice;
+        model::ReportInput input;
+        input.header = choice.header;
+        input.settings = *file;
+        use(model::assembleReport(input, *dictionaries, choice.lang));
+        return QString();
+    };
+    {
+        ui::ReportDialog dialog({QStringLiteral("Run 1 · step")}, dev::Language::German, maker);
+        dialog.findChild<QLineEdit *>(QStringLiteral("reportCustomer"))->setText("ACME");
+        dialog.findChild<QListWidget *>(QStringLiteral("reportRuns"))
+            ->item(0)
+            ->setCheckState(Qt::Checked);
+        EXPECT_EQ(dialog.saveTo(dir.filePath(QStringLiteral("r.json"))), QString());
+    }
+    EXPECT_EQ(seen.lang, dev::Language::German);
+    EXPECT_EQ(seen.runs, std::vector<int>{0});
+    const Json json = readJson(dir.filePath(QStringLiteral("r.json")));
+    EXPECT_EQ(json["header"]["customer"], "ACME");
+    EXPECT_EQ(json["language"], "de");
+    ui::ReportDialog again({}, dev::Language::English, maker);
+    EXPECT_EQ(again.findChild<QLineEdit *>(QStringLiteral("reportCustomer"))->text(), "ACME");
 }
 
 TEST(ReportCli, RefusesAnUnknownFormatAndAMissingOut)

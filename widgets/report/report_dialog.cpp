@@ -169,6 +169,7 @@ void ReportDialog::preview()
 
 QString ReportDialog::saveTo(const QString &path)
 {
+    remember();
     QString error;
     const QString why = m_maker(choice(), [&](const model::Report &report) {
         if (const auto failed = model::writeReport(report, path))
@@ -179,7 +180,6 @@ QString ReportDialog::saveTo(const QString &path)
 
 void ReportDialog::save()
 {
-    remember();
     const QString suffix = m_format->currentData().toString();
     QString path = QFileDialog::getSaveFileName(this, tr("Save Commissioning Report"),
                                                 tr("commissioning-report.%1").arg(suffix),

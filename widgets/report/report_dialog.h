@@ -42,7 +42,8 @@ public:
     ~ReportDialog() override;
 
     ReportChoice choice() const;
-    // Writes the report to `path` in the format its suffix names; empty, or why not.
+    // Remembers the header, then writes the report to `path` in the format its suffix names;
+    // empty, or why not.
     QString saveTo(const QString &path);
 
 private:
