@@ -491,6 +491,10 @@
         <source>Workbench</source>
         <translation>Werkbank</translation>
     </message>
+    <message>
+        <source>Commissioning Re&amp;port…</source>
+        <translation>Inbetriebnahme&amp;protokoll…</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::QuitController</name>
@@ -575,6 +579,13 @@
     <message>
         <source>Stopping the workbench test before quitting…</source>
         <translation>Der Test der Werkbank wird vor dem Beenden gestoppt …</translation>
+    </message>
+</context>
+<context>
+    <name>vt::app::ReportController</name>
+    <message>
+        <source>There is nothing to report: connect to a node or open a parameter file first.</source>
+        <translation>Es gibt nichts zu protokollieren: zuerst mit einem Knoten verbinden oder eine Parameterdatei öffnen.</translation>
     </message>
 </context>
 <context>
@@ -2331,6 +2342,465 @@
     <message>
         <source>Module %1: %2: %3 (%4)</source>
         <translation>Modul %1: %2: %3 (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::model::Report</name>
+    <message>
+        <source>Step response</source>
+        <translation>Sprungantwort</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>value (%1)</source>
+        <translation>Wert (%1)</translation>
+    </message>
+    <message>
+        <source>set value %1</source>
+        <translation>Sollwert %1</translation>
+    </message>
+    <message>
+        <source>response %1</source>
+        <translation>Antwort %1</translation>
+    </message>
+    <message>
+        <source>Bode plot: gain</source>
+        <translation>Bode-Diagramm: Verstärkung</translation>
+    </message>
+    <message>
+        <source>frequency (Hz)</source>
+        <translation>Frequenz (Hz)</translation>
+    </message>
+    <message>
+        <source>gain (dB)</source>
+        <translation>Verstärkung (dB)</translation>
+    </message>
+    <message>
+        <source>gain</source>
+        <translation>Verstärkung</translation>
+    </message>
+    <message>
+        <source>Bode plot: phase</source>
+        <translation>Bode-Diagramm: Phase</translation>
+    </message>
+    <message>
+        <source>phase (°)</source>
+        <translation>Phase (°)</translation>
+    </message>
+    <message>
+        <source>phase</source>
+        <translation>Phase</translation>
+    </message>
+    <message>
+        <source>Module %1 · %2</source>
+        <translation>Modul %1 · %2</translation>
+    </message>
+    <message>
+        <source>reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>jetzt</translation>
+    </message>
+    <message>
+        <source>Customer</source>
+        <translation>Kunde</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Bearbeiter</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Bemerkung</translation>
+    </message>
+    <message>
+        <source>Date and time</source>
+        <translation>Datum und Uhrzeit</translation>
+    </message>
+    <message>
+        <source>ValveTune version</source>
+        <translation>ValveTune-Version</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Parameter file (offline)</source>
+        <translation>Parameterdatei (offline)</translation>
+    </message>
+    <message>
+        <source>Reference file</source>
+        <translation>Referenzdatei</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>Inbetriebnahmeprotokoll</translation>
+    </message>
+    <message>
+        <source>unknown device</source>
+        <translation>unbekanntes Gerät</translation>
+    </message>
+    <message>
+        <source>not in the reference</source>
+        <translation>nicht in der Referenz</translation>
+    </message>
+    <message>
+        <source>Modules</source>
+        <translation>Module</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>Software</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Type code / serial</source>
+        <translation>Typschlüssel / Seriennummer</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Not default</source>
+        <translation>Nicht Vorgabe</translation>
+    </message>
+    <message>
+        <source>Differ from reference</source>
+        <translation>Abweichend von Referenz</translation>
+    </message>
+    <message>
+        <source>≠ default</source>
+        <translation>≠ Vorgabe</translation>
+    </message>
+    <message>
+        <source>≠ reference: %1</source>
+        <translation>≠ Referenz: %1</translation>
+    </message>
+    <message>
+        <source>No settings known for this module.</source>
+        <translation>Für dieses Modul sind keine Einstellungen bekannt.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <source>Marks</source>
+        <translation>Markierungen</translation>
+    </message>
+    <message>
+        <source>Write log</source>
+        <translation>Schreibprotokoll</translation>
+    </message>
+    <message>
+        <source>No writes recorded.</source>
+        <translation>Keine Schreibvorgänge aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Module</source>
+        <translation>Modul</translation>
+    </message>
+    <message>
+        <source>Old → new</source>
+        <translation>Alt → neu</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>Workbench runs</source>
+        <translation>Werkbank-Läufe</translation>
+    </message>
+    <message>
+        <source>No workbench runs chosen for the report.</source>
+        <translation>Keine Werkbank-Läufe für das Protokoll gewählt.</translation>
+    </message>
+    <message>
+        <source>Started %1; %2 set-value writes.</source>
+        <translation>Gestartet %1; %2 Sollwert-Schreibvorgänge.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>Frequenz (Hz)</translation>
+    </message>
+    <message>
+        <source>Gain (dB)</source>
+        <translation>Verstärkung (dB)</translation>
+    </message>
+    <message>
+        <source>Phase (°)</source>
+        <translation>Phase (°)</translation>
+    </message>
+    <message>
+        <source>Valid</source>
+        <translation>Gültig</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>nicht erreicht</translation>
+    </message>
+    <message>
+        <source>−3 dB at %1, −90° at %2.</source>
+        <translation>−3 dB bei %1, −90° bei %2.</translation>
+    </message>
+    <message>
+        <source>Fold / PLC configuration</source>
+        <translation>Knoten / SPS-Konfiguration</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>GSD file</source>
+        <translation>GSD-Datei</translation>
+    </message>
+    <message>
+        <source>GSD device</source>
+        <translation>GSD-Gerät</translation>
+    </message>
+    <message>
+        <source>GSD module</source>
+        <translation>GSD-Modul</translation>
+    </message>
+    <message>
+        <source>Output bytes (PLC → node)</source>
+        <translation>Ausgangsbytes (SPS → Knoten)</translation>
+    </message>
+    <message>
+        <source>Input bytes (node → PLC)</source>
+        <translation>Eingangsbytes (Knoten → SPS)</translation>
+    </message>
+    <message>
+        <source>%1 … %2</source>
+        <translation>%1 … %2</translation>
+    </message>
+    <message>
+        <source>SADR</source>
+        <translation>SADR</translation>
+    </message>
+    <message>
+        <source>Output bytes</source>
+        <translation>Ausgangsbytes</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>Belegung</translation>
+    </message>
+    <message>
+        <source>Drift against the reference</source>
+        <translation>Drift gegenüber der Referenz</translation>
+    </message>
+    <message>
+        <source>Reference fingerprint</source>
+        <translation>Referenz-Fingerabdruck</translation>
+    </message>
+    <message>
+        <source>Taken</source>
+        <translation>Aufgenommen</translation>
+    </message>
+    <message>
+        <source>Parameter differences</source>
+        <translation>Parameterabweichungen</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>Jetzt</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Step figures</source>
+        <translation>Sprungkennwerte</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>± %1 %</source>
+        <translation>± %1 %</translation>
+    </message>
+    <message>
+        <source>exceeded</source>
+        <translation>überschritten</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>Test</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>Kennwert</translation>
+    </message>
+    <message>
+        <source>Change</source>
+        <translation>Änderung</translation>
+    </message>
+    <message>
+        <source>Threshold</source>
+        <translation>Schwelle</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <source>Signatures</source>
+        <translation>Unterschriften</translation>
+    </message>
+    <message>
+        <source>Commissioned by (date, name, signature)</source>
+        <translation>In Betrieb genommen von (Datum, Name, Unterschrift)</translation>
+    </message>
+    <message>
+        <source>Accepted by the customer (date, name, signature)</source>
+        <translation>Abgenommen vom Kunden (Datum, Name, Unterschrift)</translation>
+    </message>
+    <message>
+        <source>Commissioning report · %1</source>
+        <translation>Inbetriebnahmeprotokoll · %1</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+    <message>
+        <source>%1: the report&apos;s file name must end in .pdf, .html or .json.</source>
+        <translation>%1: Der Dateiname des Protokolls muss auf .pdf, .html oder .json enden.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Module %1 · %2, software %3</source>
+        <translation>Modul %1 · %2, Software %3</translation>
+    </message>
+    <message>
+        <source>Module %1 · %2, software %3, mode %4</source>
+        <translation>Modul %1 · %2, Software %3, Modus %4</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Sprung</translation>
+    </message>
+    <message>
+        <source>Set value (%1)</source>
+        <translation>Sollwert (%1)</translation>
+    </message>
+    <message>
+        <source>Dead time (s)</source>
+        <translation>Totzeit (s)</translation>
+    </message>
+    <message>
+        <source>Rise time (s)</source>
+        <translation>Anstiegszeit (s)</translation>
+    </message>
+    <message>
+        <source>Overshoot (%)</source>
+        <translation>Überschwingen (%)</translation>
+    </message>
+    <message>
+        <source>Settling ±2 % (s)</source>
+        <translation>Ausregelzeit ±2 % (s)</translation>
+    </message>
+    <message>
+        <source>Settling ±5 % (s)</source>
+        <translation>Ausregelzeit ±5 % (s)</translation>
+    </message>
+    <message>
+        <source>Steady-state error (%1)</source>
+        <translation>Bleibende Regeldifferenz (%1)</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>auf</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>ab</translation>
+    </message>
+    <message>
+        <source>Time response</source>
+        <translation>Zeitverlauf</translation>
     </message>
 </context>
 <context>
@@ -4519,6 +4989,97 @@ Senden?</translation>
     <message>
         <source>Help on This Parameter</source>
         <translation>Hilfe zu diesem Parameter</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ReportDialog</name>
+    <message>
+        <source>Commissioning Report</source>
+        <translation>Inbetriebnahmeprotokoll</translation>
+    </message>
+    <message>
+        <source>No workbench runs in this session.</source>
+        <translation>Keine Werkbank-Läufe in dieser Sitzung.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Reference parameter file</source>
+        <translation>Referenz-Parameterdatei</translation>
+    </message>
+    <message>
+        <source>Parameter files (*.vtpar)</source>
+        <translation>Parameterdateien (*.vtpar)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <source>HTML page (*.html)</source>
+        <translation>HTML-Seite (*.html)</translation>
+    </message>
+    <message>
+        <source>JSON data (*.json)</source>
+        <translation>JSON-Daten (*.json)</translation>
+    </message>
+    <message>
+        <source>Customer:</source>
+        <translation>Kunde:</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Maschine:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Achse:</translation>
+    </message>
+    <message>
+        <source>Operator:</source>
+        <translation>Bearbeiter:</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Bemerkung:</translation>
+    </message>
+    <message>
+        <source>Workbench runs:</source>
+        <translation>Werkbank-Läufe:</translation>
+    </message>
+    <message>
+        <source>Reference file:</source>
+        <translation>Referenzdatei:</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <source>Format:</source>
+        <translation>Format:</translation>
+    </message>
+    <message>
+        <source>Print Preview…</source>
+        <translation>Druckvorschau…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Save Commissioning Report</source>
+        <translation>Inbetriebnahmeprotokoll speichern</translation>
+    </message>
+    <message>
+        <source>commissioning-report.%1</source>
+        <translation>inbetriebnahmeprotokoll.%1</translation>
     </message>
 </context>
 <context>

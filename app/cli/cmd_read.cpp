@@ -7,10 +7,10 @@
 #include "device_run.h"
 #include "files/file_rows.h"
 #include "files/param_file.h"
+#include "node_read.h"
 
 #include <QSaveFile>
 #include <algorithm>
-#include <chrono>
 
 namespace vt::cli {
 
@@ -18,12 +18,6 @@ namespace {
 
 const char kName[] = "read";
 const char kSynopsis[] = "read CONNECTION [--module ADDRESS] [--out FILE] [--lang en|de] [--json]";
-
-struct ModuleRead
-{
-    model::ModuleInfo module;
-    model::ReadResult result;
-};
 
 Json failuresJson(const model::ReadResult &result, dev::Language lang)
 {
@@ -37,43 +31,10 @@ Json failuresJson(const model::ReadResult &result, dev::Language lang)
     return list;
 }
 
-// One line per distinct reason (a lost link fails every exchange still queued alike).
-void reportFailures(Context &ctx, int address, const model::ReadResult &result, dev::Language lang)
-{
-    std::vector<std::pair<std::string, std::vector<std::string>>> byReason;
-    for (const model::RowFailure &f : result.failures) {
-        const std::string reason = outcomeText(f.outcome, lang);
-        auto it = std::find_if(byReason.begin(), byReason.end(),
-                               [&](const auto &r) { return r.first == reason; });
-        if (it == byReason.end())
-            it = byReason.insert(byReason.end(), {reason, {}});
-        for (const dev::ParamMeta *row : f.rows)
-            it->second.push_back(row->name);
-    }
-    for (const auto &[reason, names] : byReason)
-        ctx.err << "valvetune-cli: module " << address << ": " << names.size()
-                << " row(s) not read (" << names.front() << (names.size() > 1 ? " …" : "")
-                << "): " << reason << '\n';
-}
-
 std::optional<std::string> save(const QString &path, const std::vector<ModuleRead> &reads,
                                 const dev::DictionarySet &dictionaries, dev::Language lang)
 {
-    dev::files::ParamFile file;
-    file.tool = std::string("ValveTune ") + VT_VERSION;
-    file.created = dev::files::isoUtc(std::chrono::system_clock::now());
-    for (const ModuleRead &r : reads) {
-        dev::files::ModuleRecord record;
-        record.address = r.module.address;
-        record.family = r.module.identification.family;
-        record.version = r.module.identification.version;
-        record.mode = r.module.identification.mode;
-        for (const model::RowValue &v : r.result.values)
-            if (dev::files::isFileRow(*v.row))
-                record.values.push_back(dev::files::makeValueRow(*v.row, v.value));
-        file.modules.push_back(std::move(record));
-    }
-    const std::string text = dev::files::writeParamFile(file, &dictionaries, lang);
+    const std::string text = dev::files::writeParamFile(paramFileOf(reads), &dictionaries, lang);
     QSaveFile out(path); // atomic: a failed save never leaves half a file
     if (!out.open(QIODevice::WriteOnly))
         return "cannot write " + str(path) + ": " + str(out.errorString());
@@ -109,36 +70,10 @@ int runRead(const QStringList &argsIn, Context &ctx)
     DeviceRun run(ctx, *options);
     if (const int c = run.connect())
         return c;
-    const auto identified = run.identifyModules(&code);
-    if (!identified)
+    const auto node = readNode(run, &code);
+    if (!node)
         return code;
-
-    std::vector<ModuleRead> reads;
-    for (const model::IdentifyResult &r : *identified) {
-        // A file that misses a module of the node is no backup of it: a module that does not
-        // identify ends the command before anything is saved.
-        auto module = run.accept(r, &code);
-        if (!module)
-            return code;
-        const int address = module->address;
-        auto result = run.read(address, model::readableRows(*module->dictionary,
-                                                            module->identification.version,
-                                                            module->identification.mode));
-        if (!result)
-            return run.failDeadline("module " + std::to_string(address) + ": read");
-        reportFailures(ctx, address, *result, run.lang());
-        printWarnings(ctx.err, address, result->values, run.lang());
-        for (const model::RowFailure &f : result->failures) {
-            // Rows this protocol cannot carry (the field device status over HART) are reported,
-            // not an error.
-            if (f.outcome.status != model::OutcomeStatus::NotEncodable || f.outcome.sent)
-                code =
-                    std::max(code, run.linkLost() ? int(kExitConnection) : exitCodeOf(f.outcome));
-        }
-        reads.push_back({*module, *result});
-        if (run.linkLost())
-            break;
-    }
+    const std::vector<ModuleRead> &reads = *node;
 
     if (outPath) {
         if (const auto error = save(*outPath, reads, run.dictionaries(), run.lang()))

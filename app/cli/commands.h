@@ -21,6 +21,9 @@ int runMonitor(const QStringList &args, Context &ctx);
 // The tuning workbench: a test signal on a set value, analysed (cmd_test.cpp).
 int runTest(const QStringList &args, Context &ctx);
 
+// The commissioning report of a node or a parameter file (cmd_report.cpp).
+int runReport(const QStringList &args, Context &ctx);
+
 // Module-fold PLC plan: cmd_fold.cpp.
 int runFold(const QStringList &args, Context &ctx);
 

@@ -14,14 +14,14 @@ _valvetune_cli()
 {
     local cur=${COMP_WORDS[COMP_CWORD]}
     local prev=${COMP_WORDS[COMP_CWORD - 1]}
-    local commands="decode encode dictionary info scan read get set write diff monitor test fold"
+    local commands="decode encode dictionary info scan read get set write diff monitor test report fold"
     local connection="--sim --factory --port --baud --parity --stop --tcp --protocol --can --node --hart
         --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
         --module --fault --product --turnaround --lang --json --help"
 
     # The values of options that take one of a known set; a path for those that take a file.
     case $prev in
-        --port | --hart | --out)
+        --port | --hart | --out | --file | --reference | --run)
             mapfile -t COMPREPLY < <(compgen -f -- "$cur")
             return
             ;;
@@ -52,7 +52,8 @@ _valvetune_cli()
             ;;
         --baud | --tcp | --can | --unit | --module | --fault | --turnaround | --timeout | \
             --rate | --duration | --tadr | --sadr | --id | --count | --value | --cob-id | \
-            --profile | --modules | --out-register | --in-register)
+            --profile | --modules | --out-register | --in-register | --customer | --machine | \
+            --axis | --operator | --comment)
             return
             ;;
     esac
@@ -114,6 +115,10 @@ _valvetune_cli()
 --points-per-decade"
             [[ $((COMP_CWORD - i)) -eq 1 ]] && words="step square triangle sine sweep"
             [[ $prev == --direction ]] && words="up down both"
+            ;;
+        report)
+            options="$connection --out --file --reference --run --customer --machine --axis \
+--operator --comment"
             ;;
         *) return ;;
     esac

@@ -11,6 +11,7 @@
 #include "model/params/curve_binding.h"
 #include "model/recent_files.h"
 #include "quit_controller.h"
+#include "report_controller.h"
 #include "transports/link.h"
 #include "welcome_page.h"
 #include "widgets/about_dialog.h"
@@ -62,6 +63,9 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     createActions();
     createMenus();
     createDocks();
+    m_report = new ReportController(*m_workspace, m_language, *m_workbench, this);
+    connect(m_device, &DeviceController::written, m_report, &ReportController::recordWrites);
+    connect(m_reportAction, &QAction::triggered, this, [this] { m_report->openDialog(this); });
     m_quitController = new QuitController(*m_workspace, *m_files, *m_device, m_workbench,
                                           m_monitor->stepControl(), this);
     connect(m_quitController, &QuitController::statusMessage, this, &MainWindow::showStatus);
@@ -122,6 +126,7 @@ void MainWindow::createActions()
     m_save = make("actionSave", QKeySequence::Save);
     m_saveAs = make("actionSaveAs", QKeySequence::SaveAs);
     m_export = make("actionExport");
+    m_reportAction = make("actionReport");
     m_compareFile = make("actionCompareFile");
     m_quit = make("actionQuit", QKeySequence::Quit);
     // Not QUndoStack::createUndoAction(): its "Undo %1" is fixed in the language the action was
@@ -204,6 +209,8 @@ void MainWindow::createMenus()
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recentMenu->setObjectName(QStringLiteral("menuRecent"));
     m_fileMenu->addActions({m_export, m_compareFile});
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_reportAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
 
@@ -363,6 +370,7 @@ void MainWindow::updateActions()
     m_save->setEnabled(hasModules);
     m_saveAs->setEnabled(hasModules);
     m_export->setEnabled(hasModules);
+    m_reportAction->setEnabled(hasModules);
     m_compareFile->setEnabled(hasModules);
     m_revertDevice->setEnabled(hasModules);
     m_revertFile->setEnabled(doc.hasFile());
@@ -405,6 +413,7 @@ void MainWindow::retranslate()
     m_save->setText(tr("&Save"));
     m_saveAs->setText(tr("Save &As…"));
     m_export->setText(tr("&Export CSV…"));
+    m_reportAction->setText(tr("Commissioning Re&port…"));
     m_compareFile->setText(tr("Compare with &File…"));
     m_quit->setText(tr("&Quit"));
     updateUndoActions();

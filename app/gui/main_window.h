@@ -43,6 +43,7 @@ class DeviceController;
 class FileController;
 class Language;
 class QuitController;
+class ReportController;
 class WelcomePage;
 class Workspace;
 
@@ -131,6 +132,7 @@ private:
     QAction *m_save = nullptr;
     QAction *m_saveAs = nullptr;
     QAction *m_export = nullptr;
+    QAction *m_reportAction = nullptr;
     QAction *m_compareFile = nullptr;
     QAction *m_quit = nullptr;
     QAction *m_undo = nullptr;
@@ -154,6 +156,7 @@ private:
     QDockWidget *m_monitorDock = nullptr;
     QDockWidget *m_workbenchDock = nullptr;
     ui::WorkbenchView *m_workbench = nullptr;
+    ReportController *m_report = nullptr;
     QDockWidget *m_telegramsDock = nullptr;
     QDockWidget *m_curveDock = nullptr;
     ui::LinkStatusWidget *m_linkStatus = nullptr;

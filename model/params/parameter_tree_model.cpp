@@ -299,9 +299,8 @@ QString ParameterTreeModel::deviceAgeText(int module, const dev::ParamMeta &row)
                : tr("Read from the device %1.").arg(age);
 }
 
-QString ParameterTreeModel::rangeText(const dev::ParamMeta &row) const
+QString ParameterTreeModel::rangeText(const dev::ParamMeta &row, dev::Language lang)
 {
-    const dev::Language lang = m_document.language();
     if (row.isString())
         return tr("text, at most %n characters", nullptr, row.length);
     if (!row.enums.empty())
@@ -323,7 +322,7 @@ QString ParameterTreeModel::helpText(int module, const dev::ParamMeta &row) cons
     if (!row.description.in(lang).empty())
         text += QStringLiteral("\n\n") + qs(row.description.in(lang));
     text += QStringLiteral("\n\n") + tr("Address: %1").arg(qs(row.addressText()));
-    text += QLatin1Char('\n') + tr("Range: %1").arg(rangeText(row));
+    text += QLatin1Char('\n') + tr("Range: %1").arg(rangeText(row, lang));
     text += QLatin1Char('\n') + tr("Access: %1").arg(qs(dev::accessText(row.access).in(lang)));
     if (row.defaultValue && !row.isString())
         text += QLatin1Char('\n') + tr("Default: %1").arg(formatRaw(row, *row.defaultValue, lang));
@@ -381,7 +380,7 @@ QVariant ParameterTreeModel::paramData(const Node &node, int column, int role) c
         case ColValue: return valueText(module, row, Layer::Working);
         case ColDevice: return valueText(module, row, Layer::Device);
         case ColFile: return valueText(module, row, Layer::File);
-        case ColRange: return rangeText(row);
+        case ColRange: return rangeText(row, m_document.language());
         case ColAccess: return qs(dev::accessText(row.access).in(lang));
         default: return {};
         }

@@ -49,6 +49,8 @@ public:
     int moduleAt(const QModelIndex &index) const; // -1 for an invalid index
     // The last refusal of setData, in the document's language.
     const QString &lastError() const { return m_lastError; }
+    // The Range column's text: "0,000 … 10,000 V", "4 choices", "bit field" (also the report's).
+    static QString rangeText(const dev::ParamMeta &row, dev::Language lang);
 
 signals:
     // An edit was refused; `message` names why (the limits in display units for a range error).
@@ -74,7 +76,6 @@ private:
     QVariant paramData(const Node &node, int column, int role) const;
     QVariant moduleData(const Node &node, int column, int role) const;
     QString valueText(int module, const dev::ParamMeta &row, Layer layer) const;
-    QString rangeText(const dev::ParamMeta &row) const;
     // "Read 12 seconds ago", or why the device value is not current; empty without one.
     QString deviceAgeText(int module, const dev::ParamMeta &row) const;
     QString helpText(int module, const dev::ParamMeta &row) const;

@@ -1,8 +1,8 @@
 #include "guided_panel.h"
 
-#include "analysis_texts.h"
 #include "dict/cooking.h"
 #include "model/text_language.h"
+#include "model/tuning/analysis_texts.h"
 #include "model/tuning/workbench_rows.h"
 #include "widgets/actuator_confirm.h"
 #include "widgets/number_box.h"
@@ -273,7 +273,7 @@ void GuidedPanel::addIteration(int index)
                                value(s.gains.p, it.gains.p),
                                s.gains.i ? value(s.gains.i, it.gains.i) : QStringLiteral("–"),
                                it.metrics   ? num(it.metrics->overshootPct, 1)
-                               : it.problem ? stepProblemText(*it.problem)
+                               : it.problem ? model::stepProblemText(*it.problem)
                                             : QStringLiteral("–"),
                                it.metrics ? num(it.metrics->riseTime, 3) : QStringLiteral("–"),
                                it.metrics ? num(it.metrics->settlingTime2, 3)

@@ -1,8 +1,8 @@
 #include "run_results_tabs.h"
 
-#include "analysis_texts.h"
 #include "dict/cooking.h"
 #include "model/text_language.h"
+#include "model/tuning/analysis_texts.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -77,7 +77,7 @@ void RunResultsTabs::fillResults(const model::TuningRun &run)
         for (const model::FrequencyPoint &p : a.points)
             setRow(m_results, r++,
                    {num(p.frequencyHz, 3), num(p.gainDb, 2), num(p.phaseDeg, 1), num(p.quality, 3),
-                    p.valid ? tr("yes") : frequencyProblemText(p.problem)});
+                    p.valid ? tr("yes") : model::frequencyProblemText(p.problem)});
         setRow(m_results, r++,
                {tr("−3 dB at"), a.f3dB ? num(*a.f3dB, 2) + tr(" Hz") : tr("not reached")});
         setRow(m_results, r++,
@@ -94,7 +94,8 @@ void RunResultsTabs::fillResults(const model::TuningRun &run)
     for (const model::StepResult &s : a.steps) {
         const QString step = tr("%1 → %2").arg(num(s.edge.from, 3), num(s.edge.to, 3));
         if (!s.metrics) {
-            setRow(m_results, r++, {step, s.problem ? stepProblemText(*s.problem) : QString()});
+            setRow(m_results, r++,
+                   {step, s.problem ? model::stepProblemText(*s.problem) : QString()});
             continue;
         }
         const model::StepMetrics &m = *s.metrics;

@@ -1,6 +1,5 @@
 #include "workbench_view.h"
 
-#include "analysis_texts.h"
 #include "bode_plot.h"
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"

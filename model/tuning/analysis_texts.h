@@ -1,5 +1,6 @@
 // Why the analysis has no figures, as sentences for people (the analysis itself keeps stable
-// English keys: step_metrics.h, frequency_response.h). GUI thread.
+// English keys: step_metrics.h, frequency_response.h). GUI thread. The workbench and the
+// commissioning report show them.
 #pragma once
 
 #include "model/tuning/frequency_response.h"
@@ -8,7 +9,7 @@
 #include <QCoreApplication>
 #include <QString>
 
-namespace vt::ui {
+namespace vt::model {
 
 // The tr() context of these texts.
 class AnalysisTexts
@@ -16,7 +17,7 @@ class AnalysisTexts
     Q_DECLARE_TR_FUNCTIONS(AnalysisTexts)
 };
 
-QString stepProblemText(model::StepProblem problem);
-QString frequencyProblemText(model::FrequencyProblem problem);
+QString stepProblemText(StepProblem problem);
+QString frequencyProblemText(FrequencyProblem problem);
 
-} // namespace vt::ui
+} // namespace vt::model
