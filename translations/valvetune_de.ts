@@ -4690,20 +4690,12 @@ Senden?</translation>
         <translation>Jetzt</translation>
     </message>
     <message>
-        <source>Change</source>
-        <translation>Änderung</translation>
-    </message>
-    <message>
-        <source>Threshold</source>
-        <translation>Schwelle</translation>
-    </message>
-    <message>
         <source>Verdict</source>
         <translation>Bewertung</translation>
     </message>
     <message>
         <source>%1 points</source>
-        <translation>%1 Prozentpunkte</translation>
+        <translation>%1 Pkt.</translation>
     </message>
     <message>
         <source>%1 %</source>
@@ -4711,7 +4703,7 @@ Senden?</translation>
     </message>
     <message>
         <source>%1%2 points</source>
-        <translation>%1%2 Prozentpunkte</translation>
+        <translation>%1%2 Pkt.</translation>
     </message>
     <message>
         <source>%1%2 %</source>
@@ -4756,6 +4748,10 @@ Senden?</translation>
     <message>
         <source>reference</source>
         <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>Change (limit)</source>
+        <translation>Änderung (Grenze)</translation>
     </message>
 </context>
 <context>

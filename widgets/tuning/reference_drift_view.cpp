@@ -45,6 +45,15 @@ QTableWidgetItem *cell(const QString &text, bool number)
     return item;
 }
 
+// A change with its sign, one decimal; never "-0.0".
+QString signedNumber(double v)
+{
+    const double rounded = std::round(v * 10) / 10;
+    if (rounded == 0)
+        return QLocale().toString(0.0, 'f', 1);
+    return (rounded > 0 ? QStringLiteral("+") : QString()) + QLocale().toString(rounded, 'f', 1);
+}
+
 // Decimals a figure is shown with.
 int decimalsOf(model::DriftMetric m)
 {
@@ -80,8 +89,10 @@ ReferenceDriftView::ReferenceDriftView(QWidget *parent) : QWidget(parent)
     m_plots->addWidget(m_response);
     m_plots->addWidget(m_bode);
     plotLayout->addWidget(m_plots, 1);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
+    // The plot as wide as the tables: the overlay is what a person looks at first.
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 1);
+    split->setSizes({660, 340});
     layout->addWidget(split, 1);
     connect(m_plotChoice, &QComboBox::currentIndexChanged, this, &ReferenceDriftView::showPlot);
     retranslate();
@@ -161,8 +172,8 @@ void ReferenceDriftView::fill()
 
     // The figures: the reference's own, or the drift.
     m_metrics->clear();
-    const QStringList heads = {tr("Test"),   tr("Figure"),    tr("Reference"), tr("Now"),
-                               tr("Change"), tr("Threshold"), tr("Verdict")};
+    const QStringList heads = {tr("Test"), tr("Figure"),         tr("Reference"),
+                               tr("Now"),  tr("Change (limit)"), tr("Verdict")};
     m_metrics->setColumnCount(m_comparison ? static_cast<int>(heads.size()) : 3);
     m_metrics->setHorizontalHeaderLabels(m_comparison ? heads : heads.mid(0, 3));
     if (m_comparison) {
@@ -172,10 +183,10 @@ void ReferenceDriftView::fill()
             const int dec = decimalsOf(d.metric);
             const QString unit = QString::fromStdString(d.unit);
             const bool points = d.metric == model::DriftMetric::Overshoot;
-            const QString change = std::isfinite(d.deltaPercent)
-                                       ? (points ? tr("%1 points") : tr("%1 %"))
-                                             .arg(QLocale().toString(d.deltaPercent, 'f', 1))
-                                       : QStringLiteral("–");
+            const QString change =
+                std::isfinite(d.deltaPercent)
+                    ? (points ? tr("%1 points") : tr("%1 %")).arg(signedNumber(d.deltaPercent))
+                    : QStringLiteral("–");
             const QString sign = points ? QStringLiteral("+") : QStringLiteral("±");
             const QString threshold =
                 (points ? tr("%1%2 points") : tr("%1%2 %"))
@@ -185,12 +196,11 @@ void ReferenceDriftView::fill()
                                        metricText(d.metric),
                                        tr("%1 %2").arg(num(d.reference, dec), unit),
                                        tr("%1 %2").arg(num(d.now, dec), unit),
-                                       change,
-                                       threshold,
+                                       tr("%1 (%2)").arg(change, threshold),
                                        d.exceeded ? tr("exceeded") : tr("ok")};
             for (int c = 0; c < cells.size(); ++c)
-                m_metrics->setItem(r, c, cell(cells[c], c >= 2 && c <= 5));
-            m_metrics->item(r, 6)->setForeground(d.exceeded ? QColor(200, 0, 0)
+                m_metrics->setItem(r, c, cell(cells[c], c >= 2 && c <= 4));
+            m_metrics->item(r, 5)->setForeground(d.exceeded ? QColor(200, 0, 0)
                                                             : QColor(0, 130, 0));
             ++r;
         }

@@ -90,6 +90,7 @@ ReferencePanel::ReferencePanel(ReferenceHooks hooks, QWidget *parent)
     column->addLayout(limits);
     column->addStretch(1);
     scroll->setWidget(controls);
+    scroll->setMaximumWidth(controls->sizeHint().width() + 24); // the drift view takes the rest
     auto *left = new QVBoxLayout;
     left->addWidget(scroll, 1);
     auto *buttons = new QHBoxLayout;
@@ -104,9 +105,9 @@ ReferencePanel::ReferencePanel(ReferenceHooks hooks, QWidget *parent)
     m_statusLabel->setWordWrap(true);
     m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     left->addWidget(m_statusLabel);
-    outer->addLayout(left, 2);
+    outer->addLayout(left, 0);
     m_view = new ReferenceDriftView(this);
-    outer->addWidget(m_view, 5);
+    outer->addWidget(m_view, 1);
 
     connect(m_sweep, &QCheckBox::toggled, this, &ReferencePanel::updateEnabled);
     connect(m_save, &QPushButton::clicked, this, [this] {
@@ -188,8 +189,16 @@ model::DriftThresholds ReferencePanel::thresholds() const
 
 void ReferencePanel::setStatus(const QString &text)
 {
+    m_statusText = {};
     m_status = text;
     m_statusLabel->setText(text);
+}
+
+void ReferencePanel::setStatus(std::function<QString()> text)
+{
+    m_statusText = std::move(text);
+    m_status = m_statusText();
+    m_statusLabel->setText(m_status);
 }
 
 void ReferencePanel::updateEnabled()
@@ -241,7 +250,9 @@ void ReferencePanel::compareWith(const QString &path)
         return setStatus(tr("Connect and choose a module and its set value first."));
     if (const QString problem = model::referenceFitProblem(loaded->file, *module);
         !problem.isEmpty())
-        return setStatus(tr("This reference does not fit: %1").arg(problem));
+        return setStatus([file = loaded->file, fit = *module] {
+            return tr("This reference does not fit: %1").arg(model::referenceFitProblem(file, fit));
+        });
     m_reference = std::move(*loaded);
     m_comparison.reset();
     m_now.clear();
@@ -357,18 +368,22 @@ void ReferencePanel::onFinished(bool complete)
         m_comparison.reset();
         m_now.clear();
         m_view->show(*m_reference, {}, std::nullopt);
-        return setStatus(tr("Reference saved to %1: %2 settings, %3 test(s); the set value is "
-                            "restored.")
-                             .arg(m_path)
-                             .arg(m_reference->file.settings.size())
-                             .arg(m_reference->runs.size()));
+        return setStatus([this, path = m_path, settings = m_reference->file.settings.size(),
+                          runs = m_reference->runs.size()] {
+            return tr("Reference saved to %1: %2 settings, %3 test(s); the set value is restored.")
+                .arg(path)
+                .arg(settings)
+                .arg(runs);
+        });
     }
     m_now = session->runs();
     m_nowSettings = session->settings();
     recompute();
-    QStringList notes = model::referenceNotes(m_reference->file, setup.module);
-    notes.prepend(tr("Compared with %1; the set value is restored.").arg(m_path));
-    setStatus(notes.join(QLatin1Char(' ')));
+    setStatus([this, path = m_path, file = m_reference->file, module = setup.module] {
+        QStringList notes = model::referenceNotes(file, module);
+        notes.prepend(tr("Compared with %1; the set value is restored.").arg(path));
+        return notes.join(QLatin1Char(' '));
+    });
 }
 
 void ReferencePanel::recompute()
@@ -423,6 +438,10 @@ void ReferencePanel::retranslate()
     m_save->setText(tr("Save as Reference…"));
     m_compare->setText(tr("Compare with Reference…"));
     m_stop->setText(tr("Stop"));
+    if (m_statusText) {
+        m_status = m_statusText();
+        m_statusLabel->setText(m_status);
+    }
     if (m_status.isEmpty())
         m_statusLabel->setText(tr("A reference keeps the module's settings and its responses to "
                                   "these tests in one file; comparing repeats the tests."));

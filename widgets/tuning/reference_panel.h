@@ -75,6 +75,8 @@ private:
     enum class Purpose { Save, Compare };
     void retranslate();
     void setStatus(const QString &text);
+    // A status said again in the new language when the language changes.
+    void setStatus(std::function<QString()> text);
     void ask(const model::ReferenceSetup &setup, Purpose purpose);
     void run(model::ReferenceSetup setup, Purpose purpose);
     void onFinished(bool complete);
@@ -90,6 +92,7 @@ private:
     std::vector<model::RunSetting> m_nowSettings;
     std::optional<model::ReferenceComparison> m_comparison;
     QString m_status;
+    std::function<QString()> m_statusText; // when the status follows the language
 
     QLabel *m_centreLabel = nullptr;
     NumberBox *m_centre = nullptr;

@@ -6,6 +6,7 @@
 #include "model/tuning/reference_session.h"
 
 #include <QTemporaryDir>
+#include <cmath>
 
 namespace vt::model {
 namespace {
@@ -126,9 +127,11 @@ TEST(ReferenceOnTheSimulator, AnUnchangedModuleComparesWithinEveryThreshold)
         compareWithReference(reference, now.runs, now.settings, {}, dev::Language::English);
     EXPECT_TRUE(c.params.empty());
     EXPECT_EQ(c.metrics.size(), 8u); // four figures of each step
-    for (const MetricDrift &d : c.metrics)
+    for (const MetricDrift &d : c.metrics) {
+        EXPECT_TRUE(std::isfinite(d.reference) && std::isfinite(d.now)) << d.test << " " << d.label;
         EXPECT_FALSE(d.exceeded) << d.test << " " << d.label << " " << d.reference << " → "
                                  << d.now;
+    }
 }
 
 TEST(ReferenceOnTheSimulator, AReferenceOfAnotherFamilyOrModeIsRefusedWithTheReason)
