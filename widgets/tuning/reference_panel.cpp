@@ -17,7 +17,6 @@
 #include <QLocale>
 #include <QPointer>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QVBoxLayout>
 #include <cmath>
 #include <utility>
@@ -46,13 +45,12 @@ ReferencePanel::ReferencePanel(ReferenceHooks hooks, QWidget *parent)
     : QWidget(parent), m_hooks(std::move(hooks))
 {
     auto *outer = new QHBoxLayout(this);
-    // Left: the plan, the thresholds and the buttons (scrolling when the tab is low).
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    auto *controls = new QWidget(scroll);
+    // Left: the plan, the thresholds and the buttons (the workbench puts the whole panel in a
+    // scroll area for a low dock).
+    auto *controls = new QWidget(this);
     auto *column = new QVBoxLayout(controls);
     auto *planForm = new QFormLayout;
+    planForm->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint); // room for the drift
     const model::DriftThresholds defaults;
     m_centreLabel = new QLabel(controls);
     m_centre = box(controls, 3, -1e6, 1e6, 0);
@@ -75,6 +73,7 @@ ReferencePanel::ReferencePanel(ReferenceHooks hooks, QWidget *parent)
     m_thresholdsLabel = new QLabel(controls);
     column->addWidget(m_thresholdsLabel);
     auto *limits = new QFormLayout;
+    limits->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
     const auto limit = [&](QLabel *&label, NumberBox *&b, double value) {
         label = new QLabel(controls);
         b = box(controls, 1, 0, 1000, value);
@@ -89,10 +88,9 @@ ReferencePanel::ReferencePanel(ReferenceHooks hooks, QWidget *parent)
     limit(m_phaseLabel, m_phase, defaults.phase90Pct);
     column->addLayout(limits);
     column->addStretch(1);
-    scroll->setWidget(controls);
-    scroll->setMaximumWidth(controls->sizeHint().width() + 24); // the drift view takes the rest
+    column->setContentsMargins(0, 0, 0, 0);
     auto *left = new QVBoxLayout;
-    left->addWidget(scroll, 1);
+    left->addWidget(controls, 1);
     auto *buttons = new QHBoxLayout;
     m_save = new QPushButton(this);
     m_compare = new QPushButton(this);

@@ -67,8 +67,13 @@ void WorkbenchView::buildReference()
     hooks.written = [this](int module, const std::vector<model::WriteItem> &items) {
         emit written(module, items);
     };
-    m_reference = new ReferencePanel(std::move(hooks), m_tabs);
-    m_tabs->addTab(m_reference, QString());
+    // In a scroll area, as the guided panel: a low dock keeps the form readable.
+    auto *scroll = new QScrollArea(m_tabs);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_reference = new ReferencePanel(std::move(hooks), scroll);
+    scroll->setWidget(m_reference);
+    m_tabs->addTab(scroll, QString());
     connect(m_reference, &ReferencePanel::activeChanged, this, &WorkbenchView::updateEnabled);
 }
 
