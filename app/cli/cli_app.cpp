@@ -89,6 +89,8 @@ const std::vector<Command> &commands()
         {"monitor", "poll display values at a rate for a time (--csv)", runMonitor},
         {"test", "drive the set value with a step, sine or sweep; step figures, gain and phase",
          runTest},
+        {"reference", "save a module's settings and step/sweep responses; compare them later",
+         runReference},
         {"fold", "plan a multi-module node's PLC configuration (GSD, byte map)", runFold},
     };
     return list;

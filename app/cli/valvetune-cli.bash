@@ -14,7 +14,7 @@ _valvetune_cli()
 {
     local cur=${COMP_WORDS[COMP_CWORD]}
     local prev=${COMP_WORDS[COMP_CWORD - 1]}
-    local commands="decode encode dictionary info scan read get set write diff monitor test fold"
+    local commands="decode encode dictionary info scan read get set write diff monitor test reference fold"
     local connection="--sim --factory --port --baud --parity --stop --tcp --protocol --can --node --hart
         --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
         --module --fault --product --turnaround --lang --json --help"
@@ -114,6 +114,13 @@ _valvetune_cli()
 --points-per-decade"
             [[ $((COMP_CWORD - i)) -eq 1 ]] && words="step square triangle sine sweep"
             [[ $prev == --direction ]] && words="up down both"
+            ;;
+        reference)
+            options="$connection --yes --rate --window --out --centre --amplitude --hold --sweep \
+--from-hz --to-hz --points-per-decade --branch --rise-time --overshoot --settling --steady-state \
+--bandwidth --phase-90"
+            [[ $((COMP_CWORD - i)) -eq 1 ]] && words="save compare"
+            [[ $((COMP_CWORD - i)) -eq 2 && $prev == compare ]] && files=vtref
             ;;
         *) return ;;
     esac
