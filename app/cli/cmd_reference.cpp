@@ -153,12 +153,11 @@ std::unique_ptr<model::ReferenceSession> runSet(DeviceRun &run, ConfirmGate &gat
                          model::SetValueStep::ruleWriteRow(dict, *rule),
                          dev::RawValue{rule->value},
                          {}});
-    const std::string what = "a reference test set (" + std::to_string(setup.tests.size()) +
-                             " test(s), about " +
-                             fixed(model::ReferenceSession::duration(setup), 0) + " s) on " +
-                             row.name + " between " + displayOf(row, lowest, run.lang()) +
-                             " and " + displayOf(row, highest, run.lang()) +
-                             "; afterwards everything is written back";
+    const std::string what =
+        "a reference test set (" + std::to_string(setup.tests.size()) + " test(s), about " +
+        fixed(model::ReferenceSession::duration(setup), 0) + " s) on " + row.name + " between " +
+        displayOf(row, lowest, run.lang()) + " and " + displayOf(row, highest, run.lang()) +
+        "; afterwards everything is written back";
     if ((*code = gate.pass(run, std::move(gated), what)) != kExitOk)
         return nullptr;
     setup.switchSource = true; // the confirmation listed the source rows
@@ -196,9 +195,8 @@ std::unique_ptr<model::ReferenceSession> runSet(DeviceRun &run, ConfirmGate &gat
     if (!session->complete()) {
         const model::TestOutcome &o = session->lastOutcome();
         *code = ctx.fail(run.linkLost() || o.end == model::TestEnd::LinkLost ? kExitConnection
-                         : !o.restore.empty() && !o.restored
-                             ? exitCodeOf(o.restore, run.linkLost())
-                             : kExitDeviceError,
+                         : !o.restore.empty() && !o.restored ? exitCodeOf(o.restore, run.linkLost())
+                                                             : kExitDeviceError,
                          str(session->statusText()));
         return nullptr;
     }
@@ -232,9 +230,8 @@ int save(QStringList &args, Context &ctx, ConfirmGate &gate, const DeviceOptions
     auto session = runSet(run, gate, setup, &code);
     if (!session)
         return code;
-    const model::Reference reference =
-        model::makeReference(*module, *setValue, o.plan, session->settings(), session->runs(),
-                             run.lang());
+    const model::Reference reference = model::makeReference(
+        *module, *setValue, o.plan, session->settings(), session->runs(), run.lang());
     if (const QString error = model::saveReference(reference, o.out); !error.isEmpty())
         return ctx.fail(kExitUsage, str(error));
     if (ctx.json) {
@@ -286,13 +283,11 @@ int compare(QStringList &args, Context &ctx, ConfirmGate &gate, DeviceOptions op
     if (!module)
         return code;
     if (const QString problem = model::referenceFitProblem(reference->file, *module);
-        !problem.isEmpty())
-    {
+        !problem.isEmpty()) {
         std::string reason = str(problem);
         if (!reason.empty() && reason.back() == '.')
             reason.pop_back();
-        return ctx.fail(kExitUsage,
-                        "the reference does not fit: " + reason + "; nothing was sent");
+        return ctx.fail(kExitUsage, "the reference does not fit: " + reason + "; nothing was sent");
     }
     for (const QString &note : model::referenceNotes(reference->file, *module))
         ctx.err << "valvetune-cli: note: " << str(note) << '\n';
@@ -346,8 +341,8 @@ int compare(QStringList &args, Context &ctx, ConfirmGate &gate, DeviceOptions op
             ctx.out << "  " << m.test << ' ' << model::driftMetricKey(m.metric) << ' '
                     << fixed(m.reference, 3) << " -> " << fixed(m.now, 3) << ' ' << m.unit
                     << "  change " << fixed(m.deltaPercent, 1) << " (limit "
-                    << fixed(m.thresholdPercent, 1) << ")  "
-                    << (m.exceeded ? "EXCEEDED" : "ok") << '\n';
+                    << fixed(m.thresholdPercent, 1) << ")  " << (m.exceeded ? "EXCEEDED" : "ok")
+                    << '\n';
         ctx.out << "restored: the set value after each test\n";
     }
     if (c.exceeded())

@@ -66,12 +66,13 @@ void ReferenceSession::readSettings()
     m_status = tr("Reading the settings of module %1…").arg(module.address);
     emit progress();
     const auto alive = m_alive;
+    m_reading = true;
     // Rows that fail to read are left out of the snapshot: it holds what the device confirmed.
     m_read = m_access.read(module.address, std::move(rows), Priority::User,
                            [this, alive](const ReadResult &r) {
                                if (!*alive || !m_active)
                                    return;
-                               m_read.reset();
+                               m_reading = false;
                                if (m_stopRequested || r.cancelled)
                                    return finish(false, tr("Stopped before a test ran."));
                                m_settings = settingsSnapshot(m_access.image(), m_setup.module);
@@ -147,9 +148,9 @@ void ReferenceSession::stop()
     if (!m_active)
         return;
     m_stopRequested = true;
-    if (m_read) {
-        const auto read = std::move(m_read);
-        read->cancel();
+    if (m_reading && m_read) {
+        m_reading = false;
+        m_read->cancel();
         if (m_active)
             finish(false, tr("Stopped before a test ran."));
         return;

@@ -75,6 +75,7 @@ private:
     bool m_active = false;
     bool m_complete = false;
     bool m_stopRequested = false;
+    bool m_reading = false; // the settings are being read (m_read)
     QString m_status;
     TestOutcome m_outcome;
     std::vector<RunSetting> m_settings;

@@ -21,8 +21,8 @@ protected:
     }
     QStringList save(const QString &path) const
     {
-        return {"reference", "save", "--out",  path, "--centre", "4", "--amplitude",
-                "1",         "--hold", "0.6"};
+        return {"reference", "save",        "--out", path,     "--centre",
+                "4",         "--amplitude", "1",     "--hold", "0.6"};
     }
     QTemporaryDir m_dir;
     const QString m_path = m_dir.filePath(QStringLiteral("axis.vtref"));
