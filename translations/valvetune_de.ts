@@ -91,12 +91,48 @@
         <translation>%1 ist ein Lauf von %2, einer Gerätefamilie, die dieses ValveTune nicht kennt.</translation>
     </message>
     <message>
-        <source>%1 names a signal or a set value that does not exist.</source>
-        <translation>%1 nennt ein Signal oder einen Sollwert, den es nicht gibt.</translation>
+        <source>%1 is not a readable reference: %2</source>
+        <translation>%1 ist keine lesbare Referenz: %2</translation>
     </message>
     <message>
-        <source>%1 records %2, which %3 does not have.</source>
-        <translation>%1 zeichnet %2 auf, das %3 nicht hat.</translation>
+        <source>%1 is a reference of %2, a family this ValveTune does not know.</source>
+        <translation>%1 ist eine Referenz von %2, einer Gerätefamilie, die dieses ValveTune nicht kennt.</translation>
+    </message>
+    <message>
+        <source>%1: test %2: %3</source>
+        <translation>%1: Test %2: %3</translation>
+    </message>
+    <message>
+        <source>The reference was taken on a %1 module; module %2 is a %3.</source>
+        <translation>Die Referenz wurde an einem %1-Modul aufgenommen; Modul %2 ist ein %3.</translation>
+    </message>
+    <message>
+        <source>The reference was taken in mode %1; module %2 runs in mode %3: its set values and responses are other rows.</source>
+        <translation>Die Referenz wurde in Modus %1 aufgenommen; Modul %2 läuft in Modus %3: Sollwerte und Antworten sind dort andere Zeilen.</translation>
+    </message>
+    <message>
+        <source>Module %1 has no set value %2 a test can drive.</source>
+        <translation>Modul %1 hat keinen Sollwert %2, den ein Test vorgeben kann.</translation>
+    </message>
+    <message>
+        <source>The reference was taken with software %1; the module has %2.</source>
+        <translation>Die Referenz wurde mit Software %1 aufgenommen; das Modul hat %2.</translation>
+    </message>
+    <message>
+        <source>The reference was taken at address %1; this module is at %2.</source>
+        <translation>Die Referenz wurde an Adresse %1 aufgenommen; dieses Modul hat Adresse %2.</translation>
+    </message>
+    <message>
+        <source>It names a signal or a set value that does not exist.</source>
+        <translation>Sie nennt ein Signal oder einen Sollwert, den es nicht gibt.</translation>
+    </message>
+    <message>
+        <source>It records %1, which %2 does not have.</source>
+        <translation>Sie zeichnet %1 auf, das %2 nicht hat.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2801,6 +2837,54 @@
     <message>
         <source>Time response</source>
         <translation>Zeitverlauf</translation>
+    <name>vt::model::ReferenceSession</name>
+    <message>
+        <source>Choose a module and a set value first.</source>
+        <translation>Wählen Sie zuerst ein Modul und einen Sollwert.</translation>
+    </message>
+    <message>
+        <source>The reference has no tests.</source>
+        <translation>Die Referenz enthält keine Tests.</translation>
+    </message>
+    <message>
+        <source>The test %1 cannot be run: %2</source>
+        <translation>Der Test %1 kann nicht laufen: %2</translation>
+    </message>
+    <message>
+        <source>Reading the settings of module %1…</source>
+        <translation>Einstellungen von Modul %1 werden gelesen…</translation>
+    </message>
+    <message>
+        <source>Stopped before a test ran.</source>
+        <translation>Gestoppt, bevor ein Test lief.</translation>
+    </message>
+    <message>
+        <source>The test %1 cannot be run.</source>
+        <translation>Der Test %1 kann nicht laufen.</translation>
+    </message>
+    <message>
+        <source>Test %1 of %2 runs…</source>
+        <translation>Test %1 von %2 läuft…</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Gestoppt.</translation>
+    </message>
+    <message>
+        <source>Test %1 of %2 ended early: %3</source>
+        <translation>Test %1 von %2 endete vorzeitig: %3</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <source>The set value is NOT restored after test %1: check the valve.</source>
+        <translation>Der Sollwert ist nach Test %1 NICHT wiederhergestellt: prüfen Sie das Ventil.</translation>
+    </message>
+    <message>
+        <source>All %1 tests ran; the set value is restored.</source>
+        <translation>Alle %1 Tests sind gelaufen; der Sollwert ist wiederhergestellt.</translation>
     </message>
 </context>
 <context>
@@ -5080,6 +5164,284 @@ Senden?</translation>
     <message>
         <source>commissioning-report.%1</source>
         <translation>inbetriebnahmeprotokoll.%1</translation>
+    <name>vt::ui::ReferenceDriftView</name>
+    <message>
+        <source>step up</source>
+        <translation>Sprung aufwärts</translation>
+    </message>
+    <message>
+        <source>step down</source>
+        <translation>Sprung abwärts</translation>
+    </message>
+    <message>
+        <source>sweep</source>
+        <translation>Sweep</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>Sprünge</translation>
+    </message>
+    <message>
+        <source>rise time 10–90 %</source>
+        <translation>Anstiegszeit 10–90 %</translation>
+    </message>
+    <message>
+        <source>overshoot</source>
+        <translation>Überschwingen</translation>
+    </message>
+    <message>
+        <source>settling time 2 %</source>
+        <translation>Ausregelzeit 2 %</translation>
+    </message>
+    <message>
+        <source>steady-state error</source>
+        <translation>bleibende Regelabweichung</translation>
+    </message>
+    <message>
+        <source>bandwidth (−3 dB)</source>
+        <translation>Bandbreite (−3 dB)</translation>
+    </message>
+    <message>
+        <source>frequency at −90°</source>
+        <translation>Frequenz bei −90°</translation>
+    </message>
+    <message>
+        <source>No reference yet: save one, or compare the module with one.</source>
+        <translation>Noch keine Referenz: speichern Sie eine, oder vergleichen Sie das Modul mit einer.</translation>
+    </message>
+    <message>
+        <source>Reference of module %1 (%2, software %3, mode %4), %5 settings.</source>
+        <translation>Referenz von Modul %1 (%2, Software %3, Modus %4), %5 Einstellungen.</translation>
+    </message>
+    <message>
+        <source>%1 of %2 figures drifted beyond their thresholds.</source>
+        <translation>%1 von %2 Kennwerten sind über ihre Schwellen hinaus abgewichen.</translation>
+    </message>
+    <message>
+        <source>All %1 figures are within their thresholds.</source>
+        <translation>Alle %1 Kennwerte liegen innerhalb ihrer Schwellen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the reference.</source>
+        <translation>
+            <numerusform>%n Einstellung weicht von der Referenz ab.</numerusform>
+            <numerusform>%n Einstellungen weichen von der Referenz ab.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>Test</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>Kennwert</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>Jetzt</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Bewertung</translation>
+    </message>
+    <message>
+        <source>%1 points</source>
+        <translation>%1 Pkt.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1%2 points</source>
+        <translation>%1%2 Pkt.</translation>
+    </message>
+    <message>
+        <source>%1%2 %</source>
+        <translation>%1%2 %</translation>
+    </message>
+    <message>
+        <source> of the step</source>
+        <translation> des Sprungs</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>exceeded</source>
+        <translation>überschritten</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>jetzt</translation>
+    </message>
+    <message>
+        <source>reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>Change (limit)</source>
+        <translation>Änderung (Grenze)</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ReferencePanel</name>
+    <message>
+        <source>Save as Reference</source>
+        <translation>Als Referenz speichern</translation>
+    </message>
+    <message>
+        <source>ValveTune references (*.vtref)</source>
+        <translation>ValveTune-Referenzen (*.vtref)</translation>
+    </message>
+    <message>
+        <source>Compare with Reference</source>
+        <translation>Mit Referenz vergleichen</translation>
+    </message>
+    <message>
+        <source>Connect and choose a module and its set value first.</source>
+        <translation>Verbinden Sie zuerst und wählen Sie ein Modul und seinen Sollwert.</translation>
+    </message>
+    <message>
+        <source>This reference does not fit: %1</source>
+        <translation>Diese Referenz passt nicht: %1</translation>
+    </message>
+    <message>
+        <source>A test is running; start the reference tests after it.</source>
+        <translation>Ein Test läuft; starten Sie die Referenztests danach.</translation>
+    </message>
+    <message>
+        <source>a stepped-sine sweep from %1 to %2 Hz</source>
+        <translation>ein Sinus-Sweep in Stufen von %1 bis %2 Hz</translation>
+    </message>
+    <message>
+        <source>a step up and a step down, each level held %1 s</source>
+        <translation>ein Sprung aufwärts und ein Sprung abwärts, jede Stufe %1 s gehalten</translation>
+    </message>
+    <message>
+        <source>Reference tests: %1; between %2 and %3, about %4 s in all; afterwards %5 is written back.</source>
+        <translation>Referenztests: %1; zwischen %2 und %3, insgesamt etwa %4 s; danach wird %5 zurückgeschrieben.</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> und </translation>
+    </message>
+    <message>
+        <source>For the tests only: afterwards the values are written back.</source>
+        <translation>Nur für die Tests: danach werden die Werte zurückgeschrieben.</translation>
+    </message>
+    <message>
+        <source>Reference saved to %1: %2 settings, %3 test(s); the set value is restored.</source>
+        <translation>Referenz in %1 gespeichert: %2 Einstellungen, %3 Test(s); der Sollwert ist wiederhergestellt.</translation>
+    </message>
+    <message>
+        <source>Compared with %1; the set value is restored.</source>
+        <translation>Mit %1 verglichen; der Sollwert ist wiederhergestellt.</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Mitte</translation>
+    </message>
+    <message>
+        <source>The set value the tests move around.</source>
+        <translation>Der Sollwert, um den sich die Tests bewegen.</translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <source>The steps go from centre − amplitude to centre + amplitude and back; the sweep swings by ± amplitude.</source>
+        <translation>Die Sprünge gehen von Mitte − Amplitude nach Mitte + Amplitude und zurück; der Sweep schwingt um ± Amplitude.</translation>
+    </message>
+    <message>
+        <source>Hold (s)</source>
+        <translation>Haltezeit (s)</translation>
+    </message>
+    <message>
+        <source>How long each level of the steps is held: several settling times.</source>
+        <translation>Wie lange jede Stufe der Sprünge gehalten wird: mehrere Ausregelzeiten.</translation>
+    </message>
+    <message>
+        <source>Also a stepped-sine sweep</source>
+        <translation>Zusätzlich ein Sinus-Sweep in Stufen</translation>
+    </message>
+    <message>
+        <source>Sweep from (Hz)</source>
+        <translation>Sweep von (Hz)</translation>
+    </message>
+    <message>
+        <source>Sweep to (Hz)</source>
+        <translation>Sweep bis (Hz)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Drift thresholds&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Schwellen für Abweichungen&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Rise time ± (%)</source>
+        <translation>Anstiegszeit ± (%)</translation>
+    </message>
+    <message>
+        <source>Overshoot + (points)</source>
+        <translation>Überschwingen + (Prozentpunkte)</translation>
+    </message>
+    <message>
+        <source>Settling time ± (%)</source>
+        <translation>Ausregelzeit ± (%)</translation>
+    </message>
+    <message>
+        <source>Steady-state error ± (% of the step)</source>
+        <translation>Bleibende Regelabweichung ± (% des Sprungs)</translation>
+    </message>
+    <message>
+        <source>Bandwidth ± (%)</source>
+        <translation>Bandbreite ± (%)</translation>
+    </message>
+    <message>
+        <source>−90° frequency ± (%)</source>
+        <translation>Frequenz bei −90° ± (%)</translation>
+    </message>
+    <message>
+        <source>Save as Reference…</source>
+        <translation>Als Referenz speichern…</translation>
+    </message>
+    <message>
+        <source>Compare with Reference…</source>
+        <translation>Mit Referenz vergleichen…</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>A reference keeps the module&apos;s settings and its responses to these tests in one file; comparing repeats the tests.</source>
+        <translation>Eine Referenz hält die Einstellungen des Moduls und seine Antworten auf diese Tests in einer Datei fest; ein Vergleich wiederholt die Tests.</translation>
     </message>
 </context>
 <context>
@@ -5792,6 +6154,10 @@ Senden?</translation>
     <message>
         <source>Stop (Esc)</source>
         <translation>Stopp (Esc)</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Referenz</translation>
     </message>
 </context>
 <context>

@@ -215,6 +215,16 @@
     </message>
 </context>
 <context>
+    <name>vt::ui::ReferenceDriftView</name>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the reference.</source>
+        <translation>
+            <numerusform>%n setting differs from the reference.</numerusform>
+            <numerusform>%n settings differ from the reference.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vt::ui::WriteDialog</name>
     <message numerus="yes">
         <source>%n change(s) will be written to the device, one at a time, each read back.</source>

@@ -91,6 +91,8 @@ const std::vector<Command> &commands()
          runTest},
         {"report", "commissioning report of a node or a .vtpar file (PDF, HTML or JSON)",
          runReport},
+        {"reference", "save a module's settings and step/sweep responses; compare them later",
+         runReference},
         {"fold", "plan a multi-module node's PLC configuration (GSD, byte map)", runFold},
     };
     return list;

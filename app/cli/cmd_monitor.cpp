@@ -33,13 +33,6 @@ std::optional<double> parseNumber(const QString &text, double min, double max)
     return v;
 }
 
-std::string fixed(double v, int decimals)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
 } // namespace
 
 int runMonitor(const QStringList &argsIn, Context &ctx)

@@ -49,32 +49,6 @@ extern "C" void onInterrupt(int)
     g_interrupted = true;
 }
 
-std::string fixed(double v, int decimals)
-{
-    if (!std::isfinite(v))
-        return "-";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
-Json number(double v)
-{
-    return std::isfinite(v) ? Json(v) : Json(nullptr);
-}
-
-// A number in the language's notation, refusing the other language's decimal sign.
-std::optional<double> parseDecimal(const QString &text, dev::Language lang)
-{
-    QLocale locale(lang == dev::Language::German ? QLocale::German : QLocale::C);
-    locale.setNumberOptions(QLocale::RejectGroupSeparator);
-    bool ok = false;
-    const double v = locale.toDouble(text.trimmed(), &ok);
-    if (!ok || !std::isfinite(v))
-        return std::nullopt;
-    return v;
-}
-
 struct Parsed
 {
     model::SignalSpec spec;
@@ -209,14 +183,14 @@ Json stepJson(const model::StepResult &s)
            {"time_s", s.edge.time}};
     if (s.metrics) {
         const model::StepMetrics &m = *s.metrics;
-        j["dead_time_s"] = number(m.deadTime);
-        j["rise_time_s"] = number(m.riseTime);
-        j["overshoot_pct"] = number(m.overshootPct);
-        j["peak_time_s"] = number(m.peakTime);
-        j["settling_time_2pct_s"] = number(m.settlingTime2);
-        j["settling_time_5pct_s"] = number(m.settlingTime5);
-        j["steady_state_error"] = number(m.steadyStateError);
-        j["final_value"] = number(m.finalValue);
+        j["dead_time_s"] = numberOrNull(m.deadTime);
+        j["rise_time_s"] = numberOrNull(m.riseTime);
+        j["overshoot_pct"] = numberOrNull(m.overshootPct);
+        j["peak_time_s"] = numberOrNull(m.peakTime);
+        j["settling_time_2pct_s"] = numberOrNull(m.settlingTime2);
+        j["settling_time_5pct_s"] = numberOrNull(m.settlingTime5);
+        j["steady_state_error"] = numberOrNull(m.steadyStateError);
+        j["final_value"] = numberOrNull(m.finalValue);
     } else if (s.problem) {
         j["problem"] = std::string(model::stepProblemKey(*s.problem));
     }
@@ -392,9 +366,9 @@ int runTest(const QStringList &argsIn, Context &ctx)
             Json points = Json::array();
             for (const model::FrequencyPoint &pt : analysis.points) {
                 Json q{{"frequency_hz", pt.frequencyHz},
-                       {"gain_db", number(pt.gainDb)},
-                       {"phase_deg", number(pt.phaseDeg)},
-                       {"quality", number(pt.quality)},
+                       {"gain_db", numberOrNull(pt.gainDb)},
+                       {"phase_deg", numberOrNull(pt.phaseDeg)},
+                       {"quality", numberOrNull(pt.quality)},
                        {"valid", pt.valid}};
                 if (!pt.valid)
                     q["problem"] = std::string(model::frequencyProblemKey(pt.problem));

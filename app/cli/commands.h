@@ -20,6 +20,9 @@ int runDiff(const QStringList &args, Context &ctx);
 int runMonitor(const QStringList &args, Context &ctx);
 // The tuning workbench: a test signal on a set value, analysed (cmd_test.cpp).
 int runTest(const QStringList &args, Context &ctx);
+// The reference fingerprint: save the settings and a standard test set, compare
+// (cmd_reference.cpp).
+int runReference(const QStringList &args, Context &ctx);
 
 // The commissioning report of a node or a parameter file (cmd_report.cpp).
 int runReport(const QStringList &args, Context &ctx);

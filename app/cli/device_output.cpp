@@ -3,7 +3,9 @@
 #include "dict/cooking.h"
 #include "exit_codes.h"
 
+#include <QLocale>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 
 namespace vt::cli {
@@ -170,6 +172,31 @@ void printWarnings(std::ostream &err, int module, const std::vector<model::RowVa
         if (v.warningCode != 0 && v.row)
             err << "valvetune-cli: warning: module " << module << ": " << v.row->name << ": "
                 << v.warning.in(lang) << " (" << v.warningCode << ")\n";
+}
+
+std::string fixed(double v, int decimals)
+{
+    if (!std::isfinite(v))
+        return "-";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+Json numberOrNull(double v)
+{
+    return std::isfinite(v) ? Json(v) : Json(nullptr);
+}
+
+std::optional<double> parseDecimal(const QString &text, dev::Language lang)
+{
+    QLocale locale(lang == dev::Language::German ? QLocale::German : QLocale::C);
+    locale.setNumberOptions(QLocale::RejectGroupSeparator);
+    bool ok = false;
+    const double v = locale.toDouble(text.trimmed(), &ok);
+    if (!ok || !std::isfinite(v))
+        return std::nullopt;
+    return v;
 }
 
 } // namespace vt::cli

@@ -11,6 +11,7 @@
 #include "model/session/write_record.h"
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,6 +21,13 @@ namespace vt::cli {
 using Json = nlohmann::ordered_json;
 
 std::string str(const QString &text);
+// "1.500" with `decimals` decimals (C notation, for logs and tables); "-" when not finite.
+std::string fixed(double v, int decimals);
+// A number, or null when it is not finite (JSON has no NaN).
+Json numberOrNull(double v);
+// A number typed in the language's notation ("1.5", German "1,5"), refusing the other language's
+// decimal sign; nullopt when it is not a finite number.
+std::optional<double> parseDecimal(const QString &text, dev::Language lang);
 // "valvetune-cli: warning: module 0: hart_DeviceSpecificStatus: status bytes mismatch … (14)" on
 // `err` for each value that arrived with a device warning (HART-7 manual §4.4.1 "Status").
 void printWarnings(std::ostream &err, int module, const std::vector<model::RowValue> &values,

@@ -14,7 +14,7 @@ _valvetune_cli()
 {
     local cur=${COMP_WORDS[COMP_CWORD]}
     local prev=${COMP_WORDS[COMP_CWORD - 1]}
-    local commands="decode encode dictionary info scan read get set write diff monitor test report fold"
+    local commands="decode encode dictionary info scan read get set write diff monitor test report reference fold"
     local connection="--sim --factory --port --baud --parity --stop --tcp --protocol --can --node --hart
         --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
         --module --fault --product --turnaround --lang --json --help"
@@ -119,6 +119,12 @@ _valvetune_cli()
         report)
             options="$connection --out --file --reference --run --customer --machine --axis \
 --operator --comment"
+        reference)
+            options="$connection --yes --rate --window --out --centre --amplitude --hold --sweep \
+--from-hz --to-hz --points-per-decade --branch --rise-time --overshoot --settling --steady-state \
+--bandwidth --phase-90"
+            [[ $((COMP_CWORD - i)) -eq 1 ]] && words="save compare"
+            [[ $((COMP_CWORD - i)) -eq 2 && $prev == compare ]] && files=vtref
             ;;
         *) return ;;
     esac

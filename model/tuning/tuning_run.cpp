@@ -123,7 +123,7 @@ QString runTitle(const TuningRun &run)
         .arg(row ? QString::fromStdString(row->name) : QString());
 }
 
-QString saveRun(const TuningRun &run, const QString &csvPath)
+RunFileData runFileData(const TuningRun &run)
 {
     RunFileData data;
     data.number = run.number;
@@ -143,6 +143,49 @@ QString saveRun(const TuningRun &run, const QString &csvPath)
         data.channelNames.push_back(row->name);
     data.channels = run.recording.channels;
     data.settings = run.settings;
+    return data;
+}
+
+bool runFromData(const RunFileData &data, const dev::Dictionary &dictionary, TuningRun &run,
+                 QString *why)
+{
+    run.dictionary = &dictionary;
+    const auto signal = TestSignal::make(data.spec);
+    run.setValueRow = dictionary.find(data.setValue);
+    run.responseRow = data.response.empty() ? nullptr : dictionary.find(data.response);
+    if (!signal || !run.setValueRow) {
+        *why = QObject::tr("It names a signal or a set value that does not exist.");
+        return false;
+    }
+    for (const std::string &name : data.channelNames) {
+        const dev::ParamMeta *row = dictionary.find(name);
+        if (!row) {
+            *why = QObject::tr("It records %1, which %2 does not have.")
+                       .arg(QString::fromStdString(name), QString::fromStdString(data.family));
+            return false;
+        }
+        run.recording.rows.push_back(row);
+    }
+    run.number = data.number;
+    run.started = QDateTime::fromString(QString::fromStdString(data.started), Qt::ISODateWithMs);
+    run.module = data.module;
+    run.family = data.family;
+    run.mode = data.mode;
+    run.spec = data.spec;
+    run.recording.channels = data.channels;
+    run.recording.setValue = data.setValueSamples;
+    run.recording.writes = data.writes;
+    run.recording.cycles = data.cycles;
+    run.end = dev::fromKey<TestEnd>(data.end).value_or(TestEnd::Finished);
+    run.restored = data.restored;
+    run.settings = data.settings;
+    run.analysis = analyseRun(*signal, run.recording, run.responseRow, run.setValueRow);
+    return true;
+}
+
+QString saveRun(const TuningRun &run, const QString &csvPath)
+{
+    const RunFileData data = runFileData(run);
     const auto write = [](const QString &path, const std::string &text) -> QString {
         QFile file(path);
         if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
@@ -175,44 +218,18 @@ std::optional<TuningRun> loadRun(const QString &path, const dev::DictionarySet &
         return std::nullopt;
     }
     const RunFileData &data = *parsed;
-    TuningRun run;
-    run.dictionary = dictionaries.find(data.family);
-    if (!run.dictionary) {
+    const dev::Dictionary *dictionary = dictionaries.find(data.family);
+    if (!dictionary) {
         *why = QObject::tr("%1 is a run of %2, a family this ValveTune does not know.")
                    .arg(path, QString::fromStdString(data.family));
         return std::nullopt;
     }
-    const auto signal = TestSignal::make(data.spec);
-    run.setValueRow = run.dictionary->find(data.setValue);
-    run.responseRow = data.response.empty() ? nullptr : run.dictionary->find(data.response);
-    if (!signal || !run.setValueRow) {
-        *why = QObject::tr("%1 names a signal or a set value that does not exist.").arg(path);
+    TuningRun run;
+    QString bad;
+    if (!runFromData(data, *dictionary, run, &bad)) {
+        *why = QObject::tr("%1: %2").arg(path, bad);
         return std::nullopt;
     }
-    for (const std::string &name : data.channelNames) {
-        const dev::ParamMeta *row = run.dictionary->find(name);
-        if (!row) {
-            *why =
-                QObject::tr("%1 records %2, which %3 does not have.")
-                    .arg(path, QString::fromStdString(name), QString::fromStdString(data.family));
-            return std::nullopt;
-        }
-        run.recording.rows.push_back(row);
-    }
-    run.number = data.number;
-    run.started = QDateTime::fromString(QString::fromStdString(data.started), Qt::ISODateWithMs);
-    run.module = data.module;
-    run.family = data.family;
-    run.mode = data.mode;
-    run.spec = data.spec;
-    run.recording.channels = data.channels;
-    run.recording.setValue = data.setValueSamples;
-    run.recording.writes = data.writes;
-    run.recording.cycles = data.cycles;
-    run.end = dev::fromKey<TestEnd>(data.end).value_or(TestEnd::Finished);
-    run.restored = data.restored;
-    run.settings = data.settings;
-    run.analysis = analyseRun(*signal, run.recording, run.responseRow, run.setValueRow);
     return run;
 }
 

@@ -57,6 +57,12 @@ std::vector<SettingDifference> settingDifferences(const TuningRun &a, const Tuni
 // A one-line description for lists: "Run 3 · step 3.000 → 5.000 V · module 1 A1.01".
 QString runTitle(const TuningRun &run);
 
+// The run as its files hold it, and back: rows resolved in `dictionary`, the analysis computed
+// again (false with why, for people, when a row or the signal does not exist).
+RunFileData runFileData(const TuningRun &run);
+bool runFromData(const RunFileData &data, const dev::Dictionary &dictionary, TuningRun &run,
+                 QString *why);
+
 // Saves `run` to `csvPath` and the JSON beside it (same name, ".json"). Empty on success, else
 // why (for people).
 QString saveRun(const TuningRun &run, const QString &csvPath);

@@ -33,7 +33,7 @@ BodePlot::BodePlot(QWidget *parent) : QCustomPlot(parent)
     retranslate();
 }
 
-void BodePlot::showRuns(const std::vector<const model::TuningRun *> &runs)
+void BodePlot::showRuns(const std::vector<const model::TuningRun *> &runs, const QStringList &names)
 {
     clearGraphs();
     clearItems();
@@ -70,7 +70,8 @@ void BodePlot::showRuns(const std::vector<const model::TuningRun *> &runs)
             (pt.valid ? g : outG)->addData(pt.frequencyHz, pt.gainDb);
             (pt.valid ? p : outP)->addData(pt.frequencyHz, ph);
         }
-        g->setName(tr("run %1").arg(runs[i]->number));
+        g->setName(static_cast<qsizetype>(i) < names.size() ? names[static_cast<qsizetype>(i)]
+                                                            : tr("run %1").arg(runs[i]->number));
         if (i == 0 && a.maxValidHz > 0) {
             for (QCPAxisRect *rect : {m_gain, m_phase}) {
                 auto *line = new QCPItemStraightLine(this);

@@ -17,7 +17,8 @@ class BodePlot : public QCustomPlot
 public:
     explicit BodePlot(QWidget *parent = nullptr);
 
-    void showRuns(const std::vector<const model::TuningRun *> &runs);
+    // `names`, when given, name the runs in the legend instead of "run N" (one per run).
+    void showRuns(const std::vector<const model::TuningRun *> &runs, const QStringList &names = {});
     QCPAxisRect *gainRect() const { return m_gain; }
     QCPAxisRect *phaseRect() const { return m_phase; }
 

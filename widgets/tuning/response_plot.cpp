@@ -46,12 +46,15 @@ double ResponsePlot::alignment(const model::TuningRun &run)
     return run.analysis.steps.empty() ? 0 : run.analysis.steps.front().edge.time;
 }
 
-void ResponsePlot::showRuns(const std::vector<const model::TuningRun *> &runs)
+void ResponsePlot::showRuns(const std::vector<const model::TuningRun *> &runs,
+                            const QStringList &names)
 {
     clearGraphs();
     clearItems();
     for (std::size_t i = 0; i < runs.size(); ++i)
-        addRun(*runs[i], runs[i]->recording, static_cast<int>(i), alignment(*runs[i]), i == 0);
+        addRun(*runs[i], runs[i]->recording, static_cast<int>(i), alignment(*runs[i]), i == 0,
+               static_cast<qsizetype>(i) < names.size() ? names[static_cast<qsizetype>(i)]
+                                                        : QString());
     legend->setVisible(graphCount() > 0);
     rescaleAxes();
     yAxis->scaleRange(1.1, yAxis->range().center());
@@ -70,10 +73,12 @@ void ResponsePlot::showLive(const model::TuningRun &run, const model::TestRecord
 }
 
 void ResponsePlot::addRun(const model::TuningRun &run, const model::TestRecording &recording,
-                          int index, double shift, bool marks)
+                          int index, double shift, bool marks, const QString &name)
 {
     const QColor color = runColor(index);
-    const QString prefix = index == 0 ? QString() : tr("run %1: ").arg(run.number);
+    const QString prefix = !name.isEmpty() ? name + QStringLiteral(": ")
+                           : index == 0    ? QString()
+                                           : tr("run %1: ").arg(run.number);
     if (run.setValueRow) {
         QCPGraph *set = addGraph();
         set->setLineStyle(QCPGraph::lsStepLeft);

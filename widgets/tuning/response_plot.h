@@ -18,7 +18,8 @@ public:
     explicit ResponsePlot(QWidget *parent = nullptr);
 
     // `runs` must outlive the next call; the first is the current one (its marks are drawn).
-    void showRuns(const std::vector<const model::TuningRun *> &runs);
+    // `names`, when given, name the runs in the legend instead of "run N" (one per run).
+    void showRuns(const std::vector<const model::TuningRun *> &runs, const QStringList &names = {});
     // The live run while it records (no marks, not aligned): `run` names the rows, `recording`
     // is the test's own, read in place.
     void showLive(const model::TuningRun &run, const model::TestRecording &recording);
@@ -30,7 +31,7 @@ protected:
 
 private:
     void addRun(const model::TuningRun &run, const model::TestRecording &recording, int index,
-                double shift, bool marks);
+                double shift, bool marks, const QString &name = {});
     void addMarks(const model::TuningRun &run, double shift);
     void retranslate();
 };

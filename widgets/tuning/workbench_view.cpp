@@ -7,6 +7,7 @@
 #include "model/monitor/set_value_step.h"
 #include "model/text_language.h"
 #include "model/tuning/workbench_rows.h"
+#include "reference_panel.h"
 #include "response_plot.h"
 #include "run_list.h"
 #include "run_results_tabs.h"
@@ -60,6 +61,7 @@ WorkbenchView::WorkbenchView(QWidget *parent) : QWidget(parent)
     connect(esc, &QShortcut::activated, this, [this] {
         if (isRunning())
             stop();
+        m_reference->stop();
     });
     retranslate();
     updateEnabled();
@@ -135,6 +137,7 @@ void WorkbenchView::build()
     m_plots->addWidget(m_bode);
     m_tabs = new RunResultsTabs(right);
     buildGuided();
+    buildReference();
     right->setStretchFactor(0, 3);
     right->setStretchFactor(1, 2);
     splitter->setStretchFactor(0, 0);
@@ -151,38 +154,6 @@ void WorkbenchView::build()
         m_statusLabel->setText(text);
     });
     connect(m_form, &SignalForm::changed, this, &WorkbenchView::updateEnabled);
-}
-
-// The guided gain change (guided_panel.h) drives this view's module, set value and step, and
-// hands its iterations to the run list (overlaid) and its writes to the journal.
-void WorkbenchView::buildGuided()
-{
-    GuidedHooks hooks;
-    hooks.access = [this] { return m_access; };
-    hooks.module = [this] { return currentModule(); };
-    hooks.setValue = [this] { return currentSetValue(); };
-    hooks.signal = [this] { return m_form->spec(); };
-    hooks.rateHz = [this] { return m_rate->value(); };
-    hooks.window = [this] {
-        return m_useWindow->isChecked() ? std::optional<double>(m_window->value()) : std::nullopt;
-    };
-    hooks.busy = [this] { return isRunning(); };
-    hooks.addRun = [this](std::unique_ptr<model::TuningRun> run, bool overlayPrevious) {
-        run->number = m_runs->nextNumber();
-        m_runs->addRun(std::move(run), overlayPrevious);
-    };
-    hooks.written = [this](int module, const std::vector<model::WriteItem> &items) {
-        emit written(module, items);
-    };
-    // In a scroll area: its form would otherwise set the height of every tab and of the docks
-    // tabbed with the workbench.
-    auto *scroll = new QScrollArea(m_tabs);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    m_guided = new GuidedPanel(std::move(hooks), scroll);
-    scroll->setWidget(m_guided);
-    m_tabs->addTab(scroll, QString());
-    connect(m_guided, &GuidedPanel::activeChanged, this, &WorkbenchView::updateEnabled);
 }
 
 void WorkbenchView::setConnection(model::DeviceAccess *access,
@@ -214,6 +185,7 @@ void WorkbenchView::clearConnection()
         m_test->stop();
     m_test.reset();
     m_guided->clearConnection();
+    m_reference->clearConnection();
     m_live.reset();
     m_access = nullptr;
     m_modules.clear();
@@ -287,6 +259,9 @@ void WorkbenchView::setValueChosen()
         m_form->setSetValue(QString::fromStdString(row->unit), row->scale.decimals,
                             std::min(limits.min * f, limits.max * f),
                             std::max(limits.min * f, limits.max * f));
+        m_reference->setSetValue(QString::fromStdString(row->unit), row->scale.decimals,
+                                 std::min(limits.min * f, limits.max * f),
+                                 std::max(limits.min * f, limits.max * f));
         const dev::ParamMeta *answer =
             model::responseRow(*m->dictionary, m->identification.mode, *row);
         m_responseLabel->setText(
@@ -304,7 +279,7 @@ void WorkbenchView::setValueChosen()
 void WorkbenchView::updateEnabled()
 {
     const bool running = isRunning();
-    const bool guided = m_guided && m_guided->isActive();
+    const bool guided = (m_guided && m_guided->isActive()) || referenceActive();
     const bool ready = m_access && currentSetValue() && !running && !guided;
     m_start->setEnabled(ready);
     m_stop->setEnabled(running);
@@ -315,6 +290,8 @@ void WorkbenchView::updateEnabled()
     m_useWindow->setEnabled(!running);
     m_window->setEnabled(!running && m_useWindow->isChecked());
     m_runs->setFilesEnabled(!running);
+    if (m_reference)
+        m_reference->updateEnabled();
 }
 
 bool WorkbenchView::isRunning() const
@@ -346,7 +323,7 @@ void WorkbenchView::start()
 {
     const model::ModuleInfo *module = currentModule();
     const dev::ParamMeta *row = currentSetValue();
-    if (!m_access || !module || !row || isRunning() || m_guided->isActive())
+    if (!m_access || !module || !row || isRunning() || m_guided->isActive() || referenceActive())
         return;
     const auto spec = m_form->spec();
     const auto fail = [this](const QString &text) {
@@ -572,6 +549,7 @@ void WorkbenchView::retranslate()
     m_start->setText(tr("Start Test"));
     m_stop->setText(tr("Stop (Esc)"));
     m_tabs->setTabText(2, tr("Guided tuning"));
+    m_tabs->setTabText(3, tr("Reference"));
     for (int i = 0; i < m_module->count() && i < static_cast<int>(m_modules.size()); ++i) {
         const model::ModuleInfo &m = m_modules[static_cast<std::size_t>(i)];
         m_module->setItemText(i, tr("Module %1 (%2)")

@@ -2,7 +2,8 @@
 // a test (model::TestRun) after the person confirmed what it will write, watch the set value and
 // the response while it runs, stop it with Stop or Esc, and read the result: the step figures or
 // the Bode plot, kept as a run (model::TuningRun) with the module's settings at that time. Runs
-// can be overlaid, compared (their setting differences), saved and loaded.
+// can be overlaid, compared (their setting differences), saved and loaded. Beside the results:
+// the guided gain change and the reference fingerprint (workbench_panels.cpp).
 // Owner: the main window; GUI thread. The connection's DeviceAccess must outlive the view's use
 // of it: clearConnection() before the connection goes.
 #pragma once
@@ -30,6 +31,7 @@ namespace vt::ui {
 
 class BodePlot;
 class GuidedPanel;
+class ReferencePanel;
 class NumberBox;
 class ResponsePlot;
 class RunList;
@@ -63,6 +65,7 @@ public:
     QTableWidget *resultsTable() const;
     QTableWidget *differencesTable() const;
     GuidedPanel *guidedPanel() const { return m_guided; }
+    ReferencePanel *referencePanel() const { return m_reference; }
 
 signals:
     // The set value written back, the source switched and restored: for the monitor's journal.
@@ -74,7 +77,9 @@ protected:
 
 private:
     void build();
-    void buildGuided();
+    void buildGuided();    // workbench_panels.cpp
+    void buildReference(); // workbench_panels.cpp
+    bool referenceActive() const;
     void retranslate();
     void moduleChosen();
     void setValueChosen();
@@ -113,6 +118,7 @@ private:
     BodePlot *m_bode = nullptr;
     RunResultsTabs *m_tabs = nullptr;
     GuidedPanel *m_guided = nullptr;
+    ReferencePanel *m_reference = nullptr;
     RunList *m_runs = nullptr;
 };
 
