@@ -2381,6 +2381,57 @@
     </message>
 </context>
 <context>
+    <name>vt::model::ReferenceSession</name>
+    <message>
+        <source>Choose a module and a set value first.</source>
+        <translation>Wählen Sie zuerst ein Modul und einen Sollwert.</translation>
+    </message>
+    <message>
+        <source>The reference has no tests.</source>
+        <translation>Die Referenz enthält keine Tests.</translation>
+    </message>
+    <message>
+        <source>The test %1 cannot be run: %2</source>
+        <translation>Der Test %1 kann nicht laufen: %2</translation>
+    </message>
+    <message>
+        <source>Reading the settings of module %1…</source>
+        <translation>Einstellungen von Modul %1 werden gelesen…</translation>
+    </message>
+    <message>
+        <source>Stopped before a test ran.</source>
+        <translation>Gestoppt, bevor ein Test lief.</translation>
+    </message>
+    <message>
+        <source>The test %1 cannot be run.</source>
+        <translation>Der Test %1 kann nicht laufen.</translation>
+    </message>
+    <message>
+        <source>Test %1 of %2 runs…</source>
+        <translation>Test %1 von %2 läuft…</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Gestoppt.</translation>
+    </message>
+    <message>
+        <source>Test %1 of %2 ended early: %3</source>
+        <translation>Test %1 von %2 endete vorzeitig: %3</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>gestoppt</translation>
+    </message>
+    <message>
+        <source>The set value is NOT restored after test %1: check the valve.</source>
+        <translation>Der Sollwert ist nach Test %1 NICHT wiederhergestellt: prüfen Sie das Ventil.</translation>
+    </message>
+    <message>
+        <source>All %1 tests ran; the set value is restored.</source>
+        <translation>Alle %1 Tests sind gelaufen; der Sollwert ist wiederhergestellt.</translation>
+    </message>
+</context>
+<context>
     <name>vt::model::Report</name>
     <message>
         <source>Step response</source>
@@ -2837,54 +2888,6 @@
     <message>
         <source>Time response</source>
         <translation>Zeitverlauf</translation>
-    <name>vt::model::ReferenceSession</name>
-    <message>
-        <source>Choose a module and a set value first.</source>
-        <translation>Wählen Sie zuerst ein Modul und einen Sollwert.</translation>
-    </message>
-    <message>
-        <source>The reference has no tests.</source>
-        <translation>Die Referenz enthält keine Tests.</translation>
-    </message>
-    <message>
-        <source>The test %1 cannot be run: %2</source>
-        <translation>Der Test %1 kann nicht laufen: %2</translation>
-    </message>
-    <message>
-        <source>Reading the settings of module %1…</source>
-        <translation>Einstellungen von Modul %1 werden gelesen…</translation>
-    </message>
-    <message>
-        <source>Stopped before a test ran.</source>
-        <translation>Gestoppt, bevor ein Test lief.</translation>
-    </message>
-    <message>
-        <source>The test %1 cannot be run.</source>
-        <translation>Der Test %1 kann nicht laufen.</translation>
-    </message>
-    <message>
-        <source>Test %1 of %2 runs…</source>
-        <translation>Test %1 von %2 läuft…</translation>
-    </message>
-    <message>
-        <source>Stopped.</source>
-        <translation>Gestoppt.</translation>
-    </message>
-    <message>
-        <source>Test %1 of %2 ended early: %3</source>
-        <translation>Test %1 von %2 endete vorzeitig: %3</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>gestoppt</translation>
-    </message>
-    <message>
-        <source>The set value is NOT restored after test %1: check the valve.</source>
-        <translation>Der Sollwert ist nach Test %1 NICHT wiederhergestellt: prüfen Sie das Ventil.</translation>
-    </message>
-    <message>
-        <source>All %1 tests ran; the set value is restored.</source>
-        <translation>Alle %1 Tests sind gelaufen; der Sollwert ist wiederhergestellt.</translation>
     </message>
 </context>
 <context>
@@ -5076,94 +5079,6 @@ Senden?</translation>
     </message>
 </context>
 <context>
-    <name>vt::ui::ReportDialog</name>
-    <message>
-        <source>Commissioning Report</source>
-        <translation>Inbetriebnahmeprotokoll</translation>
-    </message>
-    <message>
-        <source>No workbench runs in this session.</source>
-        <translation>Keine Werkbank-Läufe in dieser Sitzung.</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <source>Browse…</source>
-        <translation>Durchsuchen…</translation>
-    </message>
-    <message>
-        <source>Reference parameter file</source>
-        <translation>Referenz-Parameterdatei</translation>
-    </message>
-    <message>
-        <source>Parameter files (*.vtpar)</source>
-        <translation>Parameterdateien (*.vtpar)</translation>
-    </message>
-    <message>
-        <source>PDF document (*.pdf)</source>
-        <translation>PDF-Dokument (*.pdf)</translation>
-    </message>
-    <message>
-        <source>HTML page (*.html)</source>
-        <translation>HTML-Seite (*.html)</translation>
-    </message>
-    <message>
-        <source>JSON data (*.json)</source>
-        <translation>JSON-Daten (*.json)</translation>
-    </message>
-    <message>
-        <source>Customer:</source>
-        <translation>Kunde:</translation>
-    </message>
-    <message>
-        <source>Machine:</source>
-        <translation>Maschine:</translation>
-    </message>
-    <message>
-        <source>Axis:</source>
-        <translation>Achse:</translation>
-    </message>
-    <message>
-        <source>Operator:</source>
-        <translation>Bearbeiter:</translation>
-    </message>
-    <message>
-        <source>Comment:</source>
-        <translation>Bemerkung:</translation>
-    </message>
-    <message>
-        <source>Workbench runs:</source>
-        <translation>Werkbank-Läufe:</translation>
-    </message>
-    <message>
-        <source>Reference file:</source>
-        <translation>Referenzdatei:</translation>
-    </message>
-    <message>
-        <source>Language:</source>
-        <translation>Sprache:</translation>
-    </message>
-    <message>
-        <source>Format:</source>
-        <translation>Format:</translation>
-    </message>
-    <message>
-        <source>Print Preview…</source>
-        <translation>Druckvorschau…</translation>
-    </message>
-    <message>
-        <source>Save…</source>
-        <translation>Speichern…</translation>
-    </message>
-    <message>
-        <source>Save Commissioning Report</source>
-        <translation>Inbetriebnahmeprotokoll speichern</translation>
-    </message>
-    <message>
-        <source>commissioning-report.%1</source>
-        <translation>inbetriebnahmeprotokoll.%1</translation>
     <name>vt::ui::ReferenceDriftView</name>
     <message>
         <source>step up</source>
@@ -5442,6 +5357,97 @@ Senden?</translation>
     <message>
         <source>A reference keeps the module&apos;s settings and its responses to these tests in one file; comparing repeats the tests.</source>
         <translation>Eine Referenz hält die Einstellungen des Moduls und seine Antworten auf diese Tests in einer Datei fest; ein Vergleich wiederholt die Tests.</translation>
+    </message>
+</context>
+<context>
+    <name>vt::ui::ReportDialog</name>
+    <message>
+        <source>Commissioning Report</source>
+        <translation>Inbetriebnahmeprotokoll</translation>
+    </message>
+    <message>
+        <source>No workbench runs in this session.</source>
+        <translation>Keine Werkbank-Läufe in dieser Sitzung.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Reference parameter file</source>
+        <translation>Referenz-Parameterdatei</translation>
+    </message>
+    <message>
+        <source>Parameter files (*.vtpar)</source>
+        <translation>Parameterdateien (*.vtpar)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <source>HTML page (*.html)</source>
+        <translation>HTML-Seite (*.html)</translation>
+    </message>
+    <message>
+        <source>JSON data (*.json)</source>
+        <translation>JSON-Daten (*.json)</translation>
+    </message>
+    <message>
+        <source>Customer:</source>
+        <translation>Kunde:</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Maschine:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Achse:</translation>
+    </message>
+    <message>
+        <source>Operator:</source>
+        <translation>Bearbeiter:</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Bemerkung:</translation>
+    </message>
+    <message>
+        <source>Workbench runs:</source>
+        <translation>Werkbank-Läufe:</translation>
+    </message>
+    <message>
+        <source>Reference file:</source>
+        <translation>Referenzdatei:</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <source>Format:</source>
+        <translation>Format:</translation>
+    </message>
+    <message>
+        <source>Print Preview…</source>
+        <translation>Druckvorschau…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Save Commissioning Report</source>
+        <translation>Inbetriebnahmeprotokoll speichern</translation>
+    </message>
+    <message>
+        <source>commissioning-report.%1</source>
+        <translation>inbetriebnahmeprotokoll.%1</translation>
     </message>
 </context>
 <context>
