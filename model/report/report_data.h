@@ -39,7 +39,7 @@ struct ReportWrite
 };
 
 // A setting that differs from the reference fingerprint.
-struct DriftParam
+struct ReportDriftParam
 {
     int module = 0;
     QString row;
@@ -50,7 +50,7 @@ struct DriftParam
 };
 
 // A step-test figure measured again and compared with the reference's.
-struct DriftMetric
+struct ReportDriftMetric
 {
     int module = 0;
     QString test;   // "step up 3 → 5 V"
@@ -64,7 +64,7 @@ struct DriftMetric
 };
 
 // The reference's and today's response of one test, on one time axis, for an overlay plot.
-struct DriftCurve
+struct ReportDriftCurve
 {
     int module = 0;
     QString test;
@@ -78,9 +78,9 @@ struct ReportDrift
 {
     QString referenceFile;
     QDateTime takenAt;
-    std::vector<DriftParam> params;
-    std::vector<DriftMetric> metrics;
-    std::vector<DriftCurve> curves;
+    std::vector<ReportDriftParam> params;
+    std::vector<ReportDriftMetric> metrics;
+    std::vector<ReportDriftCurve> curves;
 
     bool empty() const
     {

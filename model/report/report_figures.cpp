@@ -55,7 +55,7 @@ std::pair<PlotSpec, PlotSpec> bodePlots(const TuningRun &run)
     return {g, ph};
 }
 
-PlotSpec driftPlot(const DriftCurve &curve)
+PlotSpec driftPlot(const ReportDriftCurve &curve)
 {
     PlotSpec spec;
     spec.title = ReportText::tr("Module %1 · %2").arg(curve.module).arg(curve.test);

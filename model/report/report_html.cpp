@@ -292,7 +292,7 @@ QString driftSection(const Report &r, const std::vector<ReportFigure> &figures,
         html += QStringLiteral("<p>%1</p>").arg(esc(ReportText::tr("none")));
     } else {
         std::vector<QStringList> rows;
-        for (const DriftParam &p : d.params)
+        for (const ReportDriftParam &p : d.params)
             rows.push_back({QString::number(p.module),
                             QStringLiteral("<b>%1</b> %2").arg(esc(p.row), esc(p.name)),
                             esc(p.reference), esc(p.now), esc(p.unit)});
@@ -306,7 +306,7 @@ QString driftSection(const Report &r, const std::vector<ReportFigure> &figures,
     } else {
         std::vector<QStringList> rows;
         std::vector<bool> marked;
-        for (const DriftMetric &m : d.metrics) {
+        for (const ReportDriftMetric &m : d.metrics) {
             rows.push_back(
                 {QString::number(m.module), esc(m.test), esc(m.metric),
                  esc(reportNumber(m.reference, 3, lang) + QLatin1Char(' ') + m.unit),

@@ -146,7 +146,7 @@ Json foldJson(const FoldSheet &fold)
 Json driftJson(const ReportDrift &d)
 {
     Json params = Json::array();
-    for (const DriftParam &p : d.params)
+    for (const ReportDriftParam &p : d.params)
         params.push_back(Json{{"module", p.module},
                               {"row", s(p.row)},
                               {"name", s(p.name)},
@@ -154,7 +154,7 @@ Json driftJson(const ReportDrift &d)
                               {"now", s(p.now)},
                               {"unit", s(p.unit)}});
     Json metrics = Json::array();
-    for (const DriftMetric &m : d.metrics)
+    for (const ReportDriftMetric &m : d.metrics)
         metrics.push_back(Json{{"module", m.module},
                                {"test", s(m.test)},
                                {"metric", s(m.metric)},
@@ -165,7 +165,7 @@ Json driftJson(const ReportDrift &d)
                                {"threshold_pct", number(m.thresholdPercent)},
                                {"exceeded", m.exceeded}});
     Json curves = Json::array();
-    for (const DriftCurve &c : d.curves)
+    for (const ReportDriftCurve &c : d.curves)
         curves.push_back(Json{{"module", c.module},
                               {"test", s(c.test)},
                               {"unit", s(c.unit)},
