@@ -52,8 +52,19 @@ struct SimProcess
         pty = line.section(QLatin1Char(' '), 2);
         return line.startsWith(QLatin1String("listening on "));
     }
-    // What the simulator said on stderr so far (refusals of --wire).
-    QString stderrText() { return QString::fromUtf8(process.readAllStandardError()); }
+    // Stops the simulator; --wire: the requests it refused, from its closing line
+    // "wire: N requests refused" (-1 when it said none).
+    int stopAndCountRefusals()
+    {
+        process.terminate();
+        process.waitForFinished(5000);
+        const QString said = QString::fromUtf8(process.readAllStandardError());
+        const qsizetype at = said.indexOf(QLatin1String(" requests refused"));
+        if (at < 0)
+            return -1;
+        const qsizetype from = said.lastIndexOf(QLatin1Char(' '), at - 1) + 1;
+        return said.mid(from, at - from).toInt();
+    }
     ~SimProcess()
     {
         process.terminate();

@@ -227,7 +227,7 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
                                     QStringLiteral("P"));
     const QCommandLineOption wire(
         QStringLiteral("wire"),
-        QStringLiteral("modbus-rtu on --pty / --serial: keep wire time. Each answer byte takes its "
+        QStringLiteral("Modbus RTU on --pty / --serial: keep wire time. Each answer byte takes its "
                        "character time at --baud, answers follow the request after --turnaround, "
                        "and a request starting before the line was quiet for 3.5 characters is "
                        "ignored and counted, as a strict slave does."));

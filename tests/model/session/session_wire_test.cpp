@@ -84,6 +84,9 @@ TEST(SessionWire, TheMasterNeverTripsAStrictSlaveOverAReadAllOfANode)
     settings.baudRate = 115200;
     model::SessionOptions options;
     options.baudRate = 115200;
+    // Patient: a retry sent while a slow simulator is still answering would collide with the
+    // answer and count as a refusal that is not the master's doing.
+    options.turnaround = std::chrono::milliseconds(1000);
     WireMaster master(settings, options);
     ASSERT_TRUE(master.open());
 
@@ -105,16 +108,17 @@ TEST(SessionWire, TheMasterNeverTripsAStrictSlaveOverAReadAllOfANode)
 
 TEST(SessionWire, AMasterThatDoesNotWaitForTheSilentIntervalIsRefused)
 {
-    // 9600 baud: t3.5 is 4 ms, far more than a master that sends at once needs to turn round.
-    Sim sim({"--device", kFamily, "--pty", "--baud", "9600", "--wire", "--turnaround", "0.5"});
+    // 4800 baud: t3.5 is 8 ms, far more than a master that sends at once needs to turn round,
+    // even on a loaded machine; two short exchanges keep the test at a quarter of a second.
+    Sim sim({"--device", kFamily, "--pty", "--baud", "4800", "--wire", "--turnaround", "0.5"});
     const QString pty = sim.listening();
     ASSERT_FALSE(pty.isEmpty()) << sim.stderrText().toStdString();
     link::SerialSettings settings = link::SerialSettings::hcsDefault(pty);
-    settings.baudRate = 9600;
+    settings.baudRate = 4800;
     settings.silentInterval = false;    // --no-silent-interval
     settings.frameEndBySilence = false; // --frame-end crc: the next request follows the CRC
     model::SessionOptions options;
-    options.baudRate = 9600;
+    options.baudRate = 4800;
     options.turnaround = std::chrono::milliseconds(30);
     WireMaster master(settings, options);
     ASSERT_TRUE(master.open());
