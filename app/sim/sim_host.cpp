@@ -34,7 +34,8 @@ SimHost::SimHost(SimOptions options, QObject *parent)
 SimHost::~SimHost()
 {
     if (m_wire) // the count a test or benchmark reads once the simulator has stopped
-        note("wire: " + std::to_string(m_wire->refusals()) + " requests refused");
+        note("wire: " + std::to_string(m_wire->refusals()) + " requests refused, " +
+             std::to_string(m_wire->collisions()) + " collisions");
     m_timer.stop();
     closeFd();
 }

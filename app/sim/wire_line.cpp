@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <ctime>
 #include <poll.h>
+#include <string>
 #include <unistd.h>
 
 namespace vt::simapp {
@@ -69,9 +70,13 @@ bool WireLine::waitUntil(std::int64_t untilUs)
         const ssize_t n = ::read(m_fd, buf, sizeof buf);
         if (n > 0) {
             const std::int64_t at = m_now();
-            const bool newFrame = at >= m_rxEndUs + m_silenceUs;
-            if (arrived(static_cast<std::size_t>(n), at) && newFrame)
-                refuse(at);
+            if (at >= m_rxEndUs + m_silenceUs) { // a new frame, not the rest of the request
+                ++m_collisions;
+                m_note("wire: collision (" + std::to_string(m_collisions) +
+                       " so far): the master sent while the device's answer was due or on the "
+                       "line; ignored");
+            }
+            m_rxEndUs = std::max(at, m_rxEndUs) + static_cast<std::int64_t>(n) * m_characterUs;
             m_refusing = true;
         }
         if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR))

@@ -5,7 +5,8 @@
 // starts the device turnaround after the request's last byte, and its bytes are written one at
 // a time, each when its stop bit would end. A request that starts before the line was quiet for
 // t3.5 after its last byte in either direction is ignored, as a strict slave drops it, and
-// counted. Transmitting blocks the simulator's thread for the answer's wire time (≤ 256
+// counted; so is what the master sends while the answer is due or on the line (a collision,
+// counted apart). Transmitting blocks the simulator's thread for the answer's wire time (≤ 256
 // characters): the device talks, the line is busy, a half-duplex slave hears nothing meanwhile.
 // Owner: SimHost; main thread.
 #pragma once
@@ -36,7 +37,11 @@ public:
     // simulator's own end-of-frame gap).
     std::int64_t receiveEndsAtUs() const { return m_rxEndUs; }
     std::int64_t silenceUs() const { return m_silenceUs; }
+    // Requests that started too soon after the line's last byte (the master's fault).
     std::uint64_t refusals() const { return m_refusals; }
+    // Frames the master sent while the device's answer was due or on the line: a retry after the
+    // master's timeout meeting a late answer, as on a real half-duplex line.
+    std::uint64_t collisions() const { return m_collisions; }
 
 private:
     // Waits until `untilUs`; bytes the master sends meanwhile collide with ours: read, dropped.
@@ -53,6 +58,7 @@ private:
     std::int64_t m_txEndUs = -1'000'000'000; // the last transmitted byte's, as written
     bool m_refusing = false;                 // the request on the line is being ignored
     std::uint64_t m_refusals = 0;
+    std::uint64_t m_collisions = 0;
 };
 
 } // namespace vt::simapp
