@@ -14,19 +14,15 @@
 #include "model/session/device_access.h"
 #include "model/session/session.h"
 #include "model/session/sim_endpoint.h"
+#include "sim_process_bench.h"
 #include "transports/serial_link.h"
 #include "transports/serial_settings.h"
 #include "transports/sim_link.h"
 
 #include <QCoreApplication>
-#include <QDeadlineTimer>
 #include <QElapsedTimer>
-#include <QEventLoop>
-#include <QFile>
-#include <QProcess>
 #include <QTimer>
 #include <cstdio>
-#include <modbus/modbus.h>
 #include <optional>
 
 namespace {
@@ -34,77 +30,17 @@ namespace {
 using namespace vt;
 
 constexpr int kRounds = 10;
-
-bool spin(const std::function<bool()> &done, int timeoutMs)
-{
-    QDeadlineTimer deadline(timeoutMs);
-    while (!done()) {
-        if (deadline.hasExpired())
-            return false;
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
-    }
-    return true;
-}
-
-struct SimProcess
-{
-    QProcess process;
-    QString pty;
-
-    bool start()
-    {
-        process.setProgram(QStringLiteral(VT_SIM_PATH));
-        process.setArguments(
-            {QStringLiteral("--device"), QStringLiteral("dma-pn-v51"), QStringLiteral("--pty")});
-        process.start();
-        QDeadlineTimer deadline(10'000);
-        while (!process.canReadLine()) {
-            if (deadline.hasExpired() || !process.waitForReadyRead(200))
-                if (deadline.hasExpired())
-                    return false;
-        }
-        const QString line = QString::fromUtf8(process.readLine()).trimmed();
-        pty = line.section(QLatin1Char(' '), 2);
-        return line.startsWith(QLatin1String("listening on "));
-    }
-    ~SimProcess()
-    {
-        process.terminate();
-        if (!process.waitForFinished(5000))
-            process.kill();
-    }
-};
-
-double libmodbusReadAll(const QString &pty, const std::vector<dev::access::HcsBlock> &blocks)
-{
-    modbus_t *ctx = modbus_new_rtu(pty.toLocal8Bit().constData(), 19200, 'E', 8, 1);
-    if (!ctx || modbus_connect(ctx) != 0) {
-        std::fprintf(stderr, "libmodbus cannot open %s\n", qPrintable(pty));
-        return -1;
-    }
-    modbus_set_slave(ctx, 1);
-    modbus_set_response_timeout(ctx, 1, 0);
-    QElapsedTimer timer;
-    timer.start();
-    std::uint16_t dest[8];
-    for (int round = 0; round < kRounds; ++round) {
-        for (const auto &block : blocks) {
-            const int count = static_cast<int>(block.rows.size());
-            if (modbus_read_registers(ctx, block.firstId, count, dest) != count)
-                std::fprintf(stderr, "libmodbus: block %u failed: %s\n", block.firstId,
-                             modbus_strerror(errno));
-        }
-    }
-    const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9 / kRounds;
-    modbus_close(ctx);
-    modbus_free(ctx);
-    return seconds;
-}
+using bench::spin;
 
 double valvetuneReadAll(const QString &pty, const dev::Dictionary &dict,
                         const std::vector<const dev::ParamMeta *> &rows)
 {
-    link::SerialLink serial(link::SerialSettings::hcsDefault(pty));
+    // A pty has no wire time and libmodbus keeps no silent interval: compare like with like
+    // (wire_bench.cpp measures the RTU line timing).
+    link::SerialSettings settings = link::SerialSettings::hcsDefault(pty);
+    settings.silentInterval = false;
+    settings.frameEndBySilence = false;
+    link::SerialLink serial(settings);
     model::SessionOptions options;
     options.baudRate = 19200;
     options.turnaround = std::chrono::milliseconds(1000);
@@ -143,15 +79,16 @@ void benchReadAll()
     const dev::Dictionary &dict = *dev::builtinDictionaries()->find("dma-pn-v51");
     const auto rows = model::readableRows(dict, "51", "3");
     const auto blocks = dev::access::planHcsBlocks(rows);
-    SimProcess sim;
-    if (!sim.start()) {
+    bench::SimProcess sim;
+    if (!sim.start(
+            {QStringLiteral("--device"), QStringLiteral("dma-pn-v51"), QStringLiteral("--pty")})) {
         std::fprintf(stderr, "valvetune-sim did not start\n");
         return;
     }
     // Alternate the two masters so drift in machine load hits both alike.
     double lib = 0, vt = 0;
     for (int pass = 0; pass < 3; ++pass) {
-        lib += libmodbusReadAll(sim.pty, blocks);
+        lib += bench::libmodbusReadAll(sim.pty, 19200, blocks, {1}, kRounds);
         vt += valvetuneReadAll(sim.pty, dict, rows);
     }
     std::printf(

@@ -33,6 +33,10 @@ FaultLink::FaultLink(std::unique_ptr<Link> inner, const FaultSpec &spec, QObject
     connect(m_inner, &Link::stateChanged, this, &FaultLink::onInnerState);
     connect(m_inner, &Link::failed, this, &FaultLink::onInnerFailed);
     connect(m_inner, &Link::received, this, &FaultLink::onInnerReceived);
+    connect(m_inner, &Link::lineQuiet, this, [this] {
+        if (state() == LinkState::Open)
+            emit lineQuiet();
+    });
     setState(m_inner->state());
 }
 

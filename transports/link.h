@@ -34,6 +34,10 @@ public:
 
 signals:
     void received(const QByteArray &bytes);
+    // The line was quiet for a frame's silent interval after the bytes received so far (a serial
+    // link that sees byte timing, Modbus over Serial Line §2.5.1.1): whatever is buffered and not
+    // a frame yet never will be.
+    void lineQuiet();
     void failed(const QString &reason);
     void stateChanged(vt::link::LinkState state);
 

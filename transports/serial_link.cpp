@@ -96,11 +96,14 @@ void SerialLink::onFailed(quint64 session, const QString &reason)
     emit failed(reason);
 }
 
-void SerialLink::onReceived(quint64 session, const QByteArray &bytes)
+void SerialLink::onReceived(quint64 session, const QByteArray &bytes, bool quiet)
 {
     if (session != m_session || state() != LinkState::Open)
         return;
-    emit received(bytes);
+    if (!bytes.isEmpty())
+        emit received(bytes);
+    if (quiet && state() == LinkState::Open)
+        emit lineQuiet();
 }
 
 } // namespace vt::link

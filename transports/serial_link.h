@@ -39,7 +39,7 @@ public:
 private:
     void onOpened(quint64 session);
     void onFailed(quint64 session, const QString &reason);
-    void onReceived(quint64 session, const QByteArray &bytes);
+    void onReceived(quint64 session, const QByteArray &bytes, bool quiet);
     void ensureWorker();
 
     SerialSettings m_settings;

@@ -12,6 +12,8 @@ SerialSettings SerialSettings::hcsDefault(const QString &portName)
     s.dataBits = 8;
     s.parity = Parity::Even;
     s.stopBits = StopBits::One;
+    s.silentInterval = true;
+    s.frameEndBySilence = true;
     return s;
 }
 

@@ -18,8 +18,15 @@ struct SerialSettings
     int dataBits = 8; // 5..8
     Parity parity = Parity::Even;
     StopBits stopBits = StopBits::One;
+    // Modbus RTU line timing (Modbus over Serial Line §2.5.1.1, devices/modbus/rtu_timing.h):
+    // keep t3.5 of silence after the last byte on the line before each write, and deliver what
+    // arrives as one chunk per frame, ended by t3.5 of silence (followed by Link::lineQuiet()).
+    // On for Modbus RTU (hcsDefault), off for other protocols (HART has its own rules).
+    bool silentInterval = false;
+    bool frameEndBySilence = false;
 
-    // ARCHITECTURE.md "Protocol decisions": HCS modules talk Modbus RTU at 19200 8E1 by default.
+    // ARCHITECTURE.md "Protocol decisions": HCS modules talk Modbus RTU at 19200 8E1 by default,
+    // with the RTU line timing on.
     static SerialSettings hcsDefault(const QString &portName);
     // ARCHITECTURE.md "HART": 1200 baud 8O1 through a HART modem.
     static SerialSettings hart(const QString &portName);

@@ -6,6 +6,8 @@
 #include <QSocketNotifier>
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <ctime>
 #include <poll.h>
 
 namespace vt::link {
@@ -20,6 +22,28 @@ bool hungUp(int fd)
     if (::poll(&p, 1, 0) < 0)
         return false;
     return (p.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+}
+
+// A frame read in one go is handed on at this size even if the line never went quiet: a
+// babbling line must not keep the worker reading forever (an RTU frame is at most 256 bytes).
+constexpr qsizetype kMaxFrameRead = 1024;
+// Waits for silence before a write are bounded too (a line that never goes quiet).
+constexpr int kMaxSilenceWaits = 64;
+
+std::int64_t nowUs()
+{
+    using namespace std::chrono;
+    return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+// Waits at most `us` (microsecond precision, unlike a QTimer) for input on `fd`: true when
+// something can be read (or the line hung up), false when the time passed.
+bool inputWithin(int fd, std::int64_t us)
+{
+    pollfd p{fd, POLLIN, 0};
+    const timespec wait{static_cast<time_t>(us / 1'000'000),
+                        static_cast<long>(us % 1'000'000) * 1000};
+    return ::ppoll(&p, 1, &wait, nullptr) > 0;
 }
 
 } // namespace
@@ -82,6 +106,7 @@ void SerialWorker::openPort(quint64 session, const SerialSettings &settings)
         return;
     }
     warnIfNotApplied();
+    m_line.emplace(settings.baudRate, settings.bitsPerCharacter());
     // Whatever a previous user left in the buffers is not an answer to us.
     m_port->flush();
 
@@ -120,27 +145,72 @@ void SerialWorker::write(quint64 session, const QByteArray &bytes)
         bytes.size() * m_settings.bitsPerCharacter() * 1000 / std::max(1, m_settings.baudRate);
     const auto timeout = static_cast<unsigned>(std::min<qint64>(2 * wireMs + 500, 60'000));
     const auto size = static_cast<std::size_t>(bytes.size());
+    if (m_settings.silentInterval) {
+        waitForSilence();
+        if (!m_port || session != m_session)
+            return; // the port failed while the line was watched
+    }
     const long long written = m_port->write(bytes.constData(), size, timeout);
+    if (written > 0)
+        m_line->sent(static_cast<std::size_t>(written), nowUs());
     if (written < 0)
         fail(tr("Write to %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
     else if (static_cast<std::size_t>(written) < size)
         fail(tr("Write to %1 timed out").arg(m_settings.portName));
 }
 
+void SerialWorker::waitForSilence()
+{
+    // Modbus over Serial Line §2.5.1.1: a request starts after at least t3.5 of silence, counted
+    // from the last byte on the line in either direction. Bytes arriving meanwhile (a late
+    // answer, another station) are read, handed on and restart the count.
+    for (int i = 0; i < kMaxSilenceWaits && m_port; ++i) {
+        const std::int64_t wait = m_line->sendAllowedAtUs() - nowUs();
+        if (wait <= 0)
+            return;
+        if (inputWithin(m_port->descriptor(), wait))
+            onReadable();
+    }
+}
+
+bool SerialWorker::readFrame(QByteArray &frame, bool &quiet)
+{
+    std::array<char, 4096> buffer{};
+    quiet = false;
+    for (;;) {
+        const long long n = m_port->read(buffer.data(), buffer.size());
+        if (n < 0 || (n == 0 && hungUp(m_port->descriptor()))) {
+            if (hungUp(m_port->descriptor()))
+                fail(tr("Serial port %1 was disconnected").arg(m_settings.portName));
+            else
+                fail(tr("Read from %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
+            return false;
+        }
+        if (n > 0) {
+            frame.append(buffer.data(), static_cast<qsizetype>(n));
+            m_line->received(nowUs());
+        }
+        if (!m_settings.frameEndBySilence || frame.size() >= kMaxFrameRead)
+            return true;
+        // §2.5.1.1: the frame goes on while bytes follow within t3.5 and ends with the silence.
+        const std::int64_t left = m_line->frameEndsAtUs() - nowUs();
+        if (left <= 0 || !inputWithin(m_port->descriptor(), left)) {
+            quiet = true;
+            return true;
+        }
+    }
+}
+
 void SerialWorker::onReadable()
 {
     if (!m_port)
         return;
-    std::array<char, 4096> buffer{};
-    const long long n = m_port->read(buffer.data(), buffer.size());
-    if (n > 0) {
-        emit received(m_session, QByteArray(buffer.data(), static_cast<qsizetype>(n)));
+    QByteArray frame;
+    bool quiet = false;
+    if (!readFrame(frame, quiet))
         return;
-    }
-    if (hungUp(m_port->descriptor()))
-        fail(tr("Serial port %1 was disconnected").arg(m_settings.portName));
-    else if (n < 0)
-        fail(tr("Read from %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
+    if (!frame.isEmpty() || quiet)
+        emit received(m_session, frame, quiet);
 }
 
 void SerialWorker::fail(const QString &reason)

@@ -3,15 +3,21 @@
 // SerialLink's worker QThread; SerialLink reaches it only through queued calls and it answers
 // only through queued signals (STYLE.md rule 9). Every call and signal carries the session id of
 // the open() it belongs to, so the link can ignore what a previous session left in flight.
+// With the Modbus RTU line timing on (SerialSettings), a write waits on this thread until the
+// line was quiet for t3.5, and what arrives is read until the line is quiet for t3.5 and handed
+// on as one frame (Modbus over Serial Line §2.5.1.1): the worker blocks for at most one frame's
+// time plus t3.5, which is what it is for (STYLE.md rule 9).
 // Created and destroyed by SerialLink; touched only on the worker thread once moved there.
 #pragma once
 
+#include "modbus/rtu_timing.h"
 #include "transports/serial_settings.h"
 
 #include <QByteArray>
 #include <QObject>
 #include <QString>
 #include <memory>
+#include <optional>
 
 class QSocketNotifier;
 
@@ -40,10 +46,15 @@ public:
 signals:
     void opened(quint64 session);
     void failed(quint64 session, const QString &reason);
-    void received(quint64 session, const QByteArray &bytes);
+    // `quiet`: the line went quiet for t3.5 after these bytes (the frame has ended).
+    void received(quint64 session, const QByteArray &bytes, bool quiet);
 
 private:
     void onReadable();
+    // Reads until the line is quiet for t3.5 (or a bound of bytes); false when the port failed.
+    bool readFrame(QByteArray &frame, bool &quiet);
+    // Blocks until t3.5 after the last byte on the line, handing on what arrives meanwhile.
+    void waitForSilence();
     void fail(const QString &reason);
     void release();
     void warnIfNotApplied() const;
@@ -52,6 +63,7 @@ private:
     QSocketNotifier *m_notifier = nullptr;
     quint64 m_session = 0;
     SerialSettings m_settings;
+    std::optional<dev::modbus::RtuLineClock> m_line; // the open port's line timing
 };
 
 } // namespace vt::link

@@ -17,7 +17,8 @@ _valvetune_cli()
     local commands="decode encode dictionary info scan read get set write diff monitor test report reference fold"
     local connection="--sim --factory --port --baud --parity --stop --tcp --protocol --can --node --hart
         --unit --out-register --in-register --in-function --register-bytes --pzd-words --ind-byte
-        --module --fault --product --turnaround --lang --json --help"
+        --module --fault --product --turnaround --no-silent-interval --frame-end --lang --json
+        --help"
 
     # The values of options that take one of a known set; a path for those that take a file.
     case $prev in
@@ -31,6 +32,7 @@ _valvetune_cli()
             ;;
         --parity) mapfile -t COMPREPLY < <(compgen -W "none even odd" -- "$cur") && return ;;
         --stop) mapfile -t COMPREPLY < <(compgen -W "1 2" -- "$cur") && return ;;
+        --frame-end) mapfile -t COMPREPLY < <(compgen -W "silence crc" -- "$cur") && return ;;
         --lang) mapfile -t COMPREPLY < <(compgen -W "en de" -- "$cur") && return ;;
         --direction) mapfile -t COMPREPLY < <(compgen -W "request response" -- "$cur") && return ;;
         --in-function) mapfile -t COMPREPLY < <(compgen -W "3 4" -- "$cur") && return ;;

@@ -16,6 +16,7 @@ const char kConnectionSynopsis[] =
     "dsp408-gateway]\n"
     "       [--factory] (the simulator starts from the dictionary defaults, not commissioned)\n"
     "  --port PATH [--baud B] [--parity none|even|odd] [--stop 1|2]\n"
+    "       [--no-silent-interval] [--frame-end silence|crc] (Modbus RTU line timing)\n"
     "  --tcp HOST:PORT [--protocol modbus-tcp|node-image|dsp408-image|dsp408-gateway]\n"
     "  --can IFACE --node N\n"
     "  --hart PATH\n"
@@ -34,9 +35,9 @@ std::string text(const QString &s)
 }
 
 // Every option takeConnectionOptions() takes, with a value each.
-const char *const kOptions[] = {"--sim",  "--port",   "--tcp",     "--can",       "--hart",
-                                "--baud", "--parity", "--stop",    "--protocol",  "--node",
-                                "--unit", "--fault",  "--product", "--turnaround"};
+const char *const kOptions[] = {"--sim",  "--port",   "--tcp",     "--can",        "--hart",
+                                "--baud", "--parity", "--stop",    "--protocol",   "--node",
+                                "--unit", "--fault",  "--product", "--turnaround", "--frame-end"};
 
 } // namespace
 
@@ -68,7 +69,9 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
     const auto fault = takeOption(args, "--fault", &missing);
     const auto product = takeOption(args, "--product", &missing);
     const auto turnaround = takeOption(args, "--turnaround", &missing);
+    const auto frameEnd = takeOption(args, "--frame-end", &missing);
     const bool factory = takeFlag(args, "--factory");
+    const bool noSilentInterval = takeFlag(args, "--no-silent-interval");
     std::vector<std::pair<QString, QString>> dsp408;
     for (const char *option : kDsp408Options)
         if (const auto value = takeOption(args, option, &missing))
@@ -85,6 +88,8 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
         return Error("give one connection: --sim, --port, --tcp, --can or --hart");
     if ((baud || parity || stop) && !port)
         return Error("--baud, --parity and --stop go with --port");
+    if ((frameEnd || noSilentInterval) && !port)
+        return Error("--no-silent-interval and --frame-end go with --port");
     if (node && !can)
         return Error("--node goes with --can");
     if (protocol && !sim && !tcp)
@@ -129,6 +134,14 @@ dev::Result<model::ConnectionSpec, std::string> takeConnectionOptions(QStringLis
             if (*stop != "1" && *stop != "2")
                 return Error("--stop takes 1 or 2");
             spec.serial.stopBits = *stop == "2" ? link::StopBits::Two : link::StopBits::One;
+        }
+        // Modbus over Serial Line §2.5.1.1: t3.5 of silence before each request, and a frame
+        // ends when the line goes quiet for t3.5 (or, with crc, as soon as its CRC is complete).
+        spec.serial.silentInterval = !noSilentInterval;
+        if (frameEnd) {
+            if (*frameEnd != "silence" && *frameEnd != "crc")
+                return Error("--frame-end takes silence or crc");
+            spec.serial.frameEndBySilence = *frameEnd == "silence";
         }
     } else if (tcp) {
         spec.kind = model::ConnectionKind::Tcp;

@@ -243,6 +243,11 @@ void SimHost::onFdWritable()
 
 void SimHost::writeLine(const std::vector<std::uint8_t> &bytes)
 {
+    if (m_wire) { // every byte in its own time on the wire
+        if (!m_wire->transmit(bytes))
+            fail(errnoText("lost " + m_where.toStdString()));
+        return;
+    }
     std::size_t done = 0;
     if (m_outPending.empty()) {
         while (done < bytes.size()) {

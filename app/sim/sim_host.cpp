@@ -5,6 +5,7 @@
 #include "app/cli/exit_codes.h"
 #include "app/sim/can_socket.h"
 #include "dict/dictionary_loader.h"
+#include "modbus/rtu_timing.h"
 #include "transports/byte_span.h"
 
 #include <QTcpServer>
@@ -16,8 +17,6 @@ namespace vt::simapp {
 namespace {
 
 constexpr int kTickMs = 1;
-// Modbus over Serial Line §2.5.1.1: above 19200 baud the 3.5-character gap is a fixed 1.75 ms.
-constexpr std::int64_t kFastLineGapUs = 1750;
 // --fault cut on a pty / serial port / CAN socket: how long the last answer may wait to leave.
 constexpr std::int64_t kCutGraceUs = 2'000'000;
 
@@ -34,6 +33,9 @@ SimHost::SimHost(SimOptions options, QObject *parent)
 
 SimHost::~SimHost()
 {
+    if (m_wire) // the count a test or benchmark reads once the simulator has stopped
+        note("wire: " + std::to_string(m_wire->refusals()) + " requests refused, " +
+             std::to_string(m_wire->collisions()) + " collisions");
     m_timer.stop();
     closeFd();
 }
@@ -59,12 +61,13 @@ dev::Result<QString, HostError> SimHost::start()
                              : cli::kExitUsage,
                          device.error().message};
     m_device = std::move(device).value();
-    // 3.5 characters of start + 8 data + parity + stop bits (Modbus over Serial Line §2.5.1.1);
-    // the HART de-framer uses the same quiet time to give up a broken frame.
+    // 3.5 characters of start + 8 data + parity + one stop bit (Modbus over Serial Line
+    // §2.5.1.1, fixed 1.75 ms above 19200 baud); the HART de-framer uses 3.5 characters too to
+    // give up a broken frame.
     const int bits = 10 + (m_options.parity == link::Parity::None ? 0 : 1);
-    m_gapUs = m_options.baud > 19200 && !m_options.isHart()
-                  ? kFastLineGapUs
-                  : static_cast<std::int64_t>(std::ceil(3.5 * bits * 1e6 / m_options.baud));
+    m_gapUs = m_options.isHart()
+                  ? static_cast<std::int64_t>(std::ceil(3.5 * bits * 1e6 / m_options.baud))
+                  : dev::modbus::silentIntervalUs(m_options.baud, bits);
     QString where;
     std::optional<HostError> error;
     switch (m_options.endpoint) {
@@ -78,13 +81,22 @@ dev::Result<QString, HostError> SimHost::start()
         return *error;
     m_where = where;
     m_elapsed.start();
+    if (m_options.wire)
+        m_wire.emplace(
+            m_fd, m_options.baud, bits, m_options.turnaroundUs, [this] { return nowUs(); },
+            [this](const std::string &text) { note(text); });
     m_timer.start();
     return where;
 }
 
 void SimHost::received(std::span<const std::uint8_t> bytes)
 {
+    const bool forDevice = !m_wire || m_wire->arrived(bytes.size(), nowUs());
     arrived(bytes, "");
+    if (m_wire) // the request's bytes are still on the wire: its gap counts from their end
+        m_lastByteUs = m_wire->receiveEndsAtUs();
+    if (!forDevice)
+        return; // a strict slave ignores a request that did not wait for the silent interval
     m_device->server().receive(bytes);
     serve();
 }

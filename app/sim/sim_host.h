@@ -13,6 +13,7 @@
 #include "app/sim/fault_filter.h"
 #include "app/sim/host_error.h"
 #include "app/sim/sim_options.h"
+#include "app/sim/wire_line.h"
 #include "core/byte_server.h"
 #include "sim/sim_clock.h"
 #include "sim/sim_device.h"
@@ -123,7 +124,8 @@ private:
     QSocketNotifier *m_writeNotifier = nullptr;
     // Not yet taken by a full pty / serial buffer; on CAN whole 16-byte images.
     std::vector<std::uint8_t> m_outPending;
-    std::int64_t m_gapUs = 0; // 3.5 characters at the line's baud
+    std::int64_t m_gapUs = 0;       // 3.5 characters at the line's baud
+    std::optional<WireLine> m_wire; // --wire
     std::int64_t m_lastByteUs = 0;
     bool m_burst = false; // bytes arrived since the last gap
 

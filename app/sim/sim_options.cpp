@@ -225,10 +225,24 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
     const QCommandLineOption parity(QStringLiteral("parity"),
                                     QStringLiteral("none | even | odd (HCS even, HART odd)."),
                                     QStringLiteral("P"));
+    const QCommandLineOption wire(
+        QStringLiteral("wire"),
+        QStringLiteral("Modbus RTU on --pty / --serial: keep wire time. Each answer byte takes its "
+                       "character time at --baud, answers follow the request after --turnaround, "
+                       "and a request starting before the line was quiet for 3.5 characters is "
+                       "ignored and counted, as a strict slave does."));
+    const QCommandLineOption noWire(QStringLiteral("no-wire"),
+                                    QStringLiteral("Answer at once, without wire time (default)."));
+    const QCommandLineOption turnaround(
+        QStringLiteral("turnaround"),
+        QStringLiteral("--wire: the device's time from the request's last byte to its answer, in "
+                       "milliseconds (default 3, decimals allowed)."),
+        QStringLiteral("MS"));
     const QCommandLineOption verbose(QStringList{QStringLiteral("v"), QStringLiteral("verbose")},
                                      QStringLiteral("Log every frame in and out on stderr."));
-    p.addOptions({device, mode, modules, factory, pty, serial, tcp, can, canFd, node, protocol,
-                  unit, fault, seed, baud, parity, verbose});
+    p.addOptions({device, mode,   modules, factory,  pty,        serial, tcp,
+                  can,    canFd,  node,    protocol, unit,       fault,  seed,
+                  baud,   parity, wire,    noWire,   turnaround, verbose});
     p.addOptions(dsp408);
     const QCommandLineOption help = p.addHelpOption();
     // Not addVersionOption(): its -v would clash with --verbose.
@@ -365,6 +379,22 @@ dev::Result<SimOptions, OptionsExit> parseSimOptions(const QStringList &argument
             o.parity = link::Parity::Odd;
         else
             return usage("--parity '" + v.toStdString() + "': none, even or odd");
+    }
+
+    if (p.isSet(wire) && p.isSet(noWire))
+        return usage("give --wire or --no-wire, not both");
+    o.wire = p.isSet(wire);
+    if (o.wire && (o.protocol != LinkProtocol::ModbusRtu ||
+                   (o.endpoint != Endpoint::Pty && o.endpoint != Endpoint::Serial)))
+        return usage("--wire is for --protocol modbus-rtu on --pty or --serial");
+    if (p.isSet(turnaround)) {
+        if (!o.wire)
+            return usage("--turnaround goes with --wire");
+        const double ms = p.value(turnaround).toDouble(&ok);
+        if (!ok || ms < 0 || ms > 1000)
+            return usage("--turnaround '" + p.value(turnaround).toStdString() +
+                         "': expected milliseconds 0..1000");
+        o.turnaroundUs = static_cast<std::int64_t>(ms * 1000 + 0.5);
     }
 
     if (p.isSet(fault)) {

@@ -36,7 +36,12 @@ struct SimOptions
     dev::LinkProtocol protocol = dev::LinkProtocol::ModbusRtu;
     int baud = 19200; // serial line (on a pty it only sets the 3.5-character gap)
     link::Parity parity = link::Parity::Even; // serial line; a pty takes any parity
-    link::FaultSpec fault;                    // applied to the device's answers (FaultSpec::rx)
+    // --wire (Modbus RTU on --pty / --serial): every answer byte held for its time on the wire,
+    // answers `turnaroundUs` after the request's last byte, and a request that starts less than
+    // t3.5 after the line's last byte is ignored, as a strict slave does (docs/SIMULATOR.md).
+    bool wire = false;
+    std::int64_t turnaroundUs = 3000; // --turnaround MS
+    link::FaultSpec fault;            // applied to the device's answers (FaultSpec::rx)
     std::uint32_t seed = link::FaultSpec::kDefaultSeed; // --seed, else the spec's seed
     bool verbose = false;
     // The ED1's image over TCP: layout, gateway registers (app/cmdline/dsp408_options.h) and the

@@ -62,6 +62,7 @@ public:
     std::size_t expectedReplyBytes(const Transaction &t) const override;
     std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) override;
     void resetFraming() override;
+    void lineQuiet() override { m_deframer.silence(); }
 
 private:
     modbus::RtuDeframer m_deframer{Direction::Response};

@@ -131,6 +131,9 @@ public:
                                       const Transaction &t) = 0;
     // Drops buffered bytes (after a timeout, before a retry, after reconnect).
     virtual void resetFraming() = 0;
+    // The link saw the line quiet for the protocol's silent interval: buffered bytes that are no
+    // frame yet never will be (Modbus RTU, Modbus over Serial Line §2.5.1.1). Default: nothing.
+    virtual void lineQuiet() {}
 };
 
 } // namespace vt::dev::access

@@ -3,6 +3,7 @@
 #include "access/transaction.h"
 #include "core/vt_assert.h"
 #include "dict/dictionary.h"
+#include "modbus/rtu_timing.h"
 #include "model/session/adapter_factory.h"
 #include "sim/sim_device.h"
 #include "transports/can_link.h"
@@ -75,6 +76,9 @@ SessionOptions sessionOptionsFor(const ConnectionSpec &spec)
     if (spec.kind == ConnectionKind::Serial || spec.kind == ConnectionKind::Hart) {
         options.baudRate = spec.serial.baudRate;
         options.bitsPerCharacter = spec.serial.bitsPerCharacter();
+        if (spec.serial.silentInterval || spec.serial.frameEndBySilence)
+            options.lineSilence = std::chrono::microseconds(
+                dev::modbus::silentIntervalUs(options.baudRate, options.bitsPerCharacter));
     } else if (spec.kind == ConnectionKind::Sim && spec.sim.baudRate > 0) {
         options.baudRate = spec.sim.baudRate;
         options.bitsPerCharacter = spec.sim.bitsPerCharacter;

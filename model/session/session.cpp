@@ -41,6 +41,7 @@ Session::Session(link::Link *link, std::unique_ptr<dev::access::ProtocolAdapter>
             sendAttempt();
     });
     connect(m_link, &link::Link::received, this, &Session::onReceived);
+    connect(m_link, &link::Link::lineQuiet, this, [this] { m_adapter->lineQuiet(); });
     connect(m_link, &link::Link::stateChanged, this, &Session::onLinkState);
     connect(m_link, &link::Link::failed, this, &Session::onLinkFailed);
 }

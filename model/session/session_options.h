@@ -17,6 +17,10 @@ struct SessionOptions
     // the scheduling slack of a desktop OS. HCS: DMA Profinet manual §3.4.1 names 25 ms for an
     // EEPROM write; 100 ms leaves room for a USB serial adapter's latency.
     std::chrono::milliseconds turnaround{100};
+    // Modbus RTU line timing on a serial link (Modbus over Serial Line §2.5.1.1): the link may
+    // hold a request for t3.5 and hands an answer on t3.5 after its last byte; both add to the
+    // timeout. Zero without the RTU line timing.
+    std::chrono::microseconds lineSilence{0};
     int retries = 3;                       // attempts after the first one
     std::chrono::milliseconds backoff{20}; // before the first retry; doubles each retry
     std::chrono::milliseconds maxBackoff{500};
@@ -38,7 +42,7 @@ struct SessionOptions
     // `replyBytes` long.
     std::chrono::milliseconds timeout(std::size_t requestBytes, std::size_t replyBytes) const
     {
-        const auto wire = wireTime(requestBytes + replyBytes);
+        const auto wire = wireTime(requestBytes + replyBytes) + 2 * lineSilence;
         return turnaround + std::chrono::ceil<std::chrono::milliseconds>(wire);
     }
 

@@ -111,6 +111,20 @@ TEST(GuiOptions, ConnectTakesTheCliConnectionOptions)
     EXPECT_EQ(serial.connection->serial.baudRate, 115200);
     EXPECT_EQ(serial.connection->serial.parity, vt::link::Parity::None);
     EXPECT_EQ(serial.connection->serial.stopBits, vt::link::StopBits::Two);
+    // Modbus over Serial Line §2.5.1.1: the RTU line timing is on unless turned off.
+    EXPECT_TRUE(serial.connection->serial.silentInterval);
+    EXPECT_TRUE(serial.connection->serial.frameEndBySilence);
+    auto lenient = parseGuiOptions({"valvetune", "--connect", "--port", "/dev/ttyUSB0",
+                                    "--no-silent-interval", "--frame-end", "crc"});
+    ASSERT_TRUE(lenient.connection.has_value()) << lenient.error.toStdString();
+    EXPECT_FALSE(lenient.connection->serial.silentInterval);
+    EXPECT_FALSE(lenient.connection->serial.frameEndBySilence);
+    EXPECT_FALSE(
+        parseGuiOptions({"valvetune", "--connect", "--port", "/dev/ttyUSB0", "--frame-end", "soon"})
+            .connection.has_value());
+    EXPECT_FALSE(
+        parseGuiOptions({"valvetune", "--connect", "--sim", "opat", "--no-silent-interval"})
+            .connection.has_value());
 
     auto can = parseGuiOptions({"valvetune", "--connect", "--can", "vcan0", "--node", "5"});
     ASSERT_TRUE(can.connection.has_value()) << can.error.toStdString();

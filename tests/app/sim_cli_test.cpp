@@ -204,6 +204,12 @@ TEST(SimCli, UsageErrorsExitTwoWithOneLine)
         {"--device", "wandfluh-sd7", "--can", "vcan0"},
         {"--device", "wandfluh-ed1", "--can", "vcan0", "--modules", "2"},
         {"--device", "opat", "--can", "vcan0", "--pty"},
+        // --wire: Modbus RTU on a pty or serial port only; --turnaround with it, 0..1000 ms.
+        {"--device", "opat", "--tcp", ":0", "--wire"},
+        {"--device", "wandfluh-sd7", "--pty", "--wire"},
+        {"--device", "opat", "--pty", "--turnaround", "2"},
+        {"--device", "opat", "--pty", "--wire", "--turnaround", "-1"},
+        {"--device", "opat", "--pty", "--wire", "--no-wire"},
     };
     for (const QStringList &args : cases) {
         const ProcessRun r = run(QStringLiteral(VT_SIM_PATH), args);

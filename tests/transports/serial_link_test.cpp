@@ -3,6 +3,7 @@
 // (no sysfs entry, no modem lines), so this is the termios way of the product code, unchanged:
 // settings, unplug, reopen. The termios a UART would receive (parity, character size, which a
 // pty drops) is checked on applyLineSettings() itself.
+#include "modbus/rtu_timing.h"
 #include "pty_pair.h"
 #include "qt_printers.h"
 #include "test_wait.h"
@@ -10,6 +11,7 @@
 #include "transports/serial_ports.h"
 #include "transports/termios_line.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -90,6 +92,60 @@ TEST_F(SerialLinkPty, OpensAsynchronouslyAndMovesBytesBothWays)
 
     link.close();
     EXPECT_EQ(link.state(), LinkState::Closed);
+}
+
+// Modbus over Serial Line §2.5.1.1: a frame ends when the line is quiet for t3.5. At 1200 baud
+// 8E1 t3.5 is 32 ms, so two writes of the far end a moment apart are one frame, handed on in one
+// piece and followed by lineQuiet(); bytes after the quiet are the next frame.
+TEST_F(SerialLinkPty, AFrameEndsWhenTheLineGoesQuiet)
+{
+    SerialSettings settings = SerialSettings::hcsDefault(portName());
+    settings.baudRate = 1200;
+    ASSERT_TRUE(settings.frameEndBySilence); // the default for Modbus RTU
+    SerialLink link(settings);
+    QSignalSpy received(&link, &SerialLink::received);
+    QSignalSpy quiet(&link, &SerialLink::lineQuiet);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+
+    const QByteArray first = QByteArray::fromHex("0103100001");
+    const QByteArray rest = QByteArray::fromHex("00020003");
+    ASSERT_TRUE(m_pty->write(first));
+    ASSERT_TRUE(m_pty->write(rest));
+    ASSERT_TRUE(waitForCount(quiet, 1));
+    ASSERT_EQ(received.count(), 1);
+    EXPECT_EQ(received.at(0).at(0).toByteArray(), first + rest);
+
+    const QByteArray next = QByteArray::fromHex("0a0b0c");
+    ASSERT_TRUE(m_pty->write(next));
+    ASSERT_TRUE(waitForCount(quiet, 2));
+    ASSERT_EQ(received.count(), 2);
+    EXPECT_EQ(received.at(1).at(0).toByteArray(), next);
+}
+
+// §2.5.1.1: the next request waits t3.5 after the last byte on the line, however soon the
+// session sends it. With the frame ended by its CRC (no wait for the quiet) the session answers
+// at once; the link holds the request until 32 ms (1200 baud 8E1) after the answer's last byte.
+TEST_F(SerialLinkPty, KeepsTheSilentIntervalBeforeARequest)
+{
+    SerialSettings settings = SerialSettings::hcsDefault(portName());
+    settings.baudRate = 1200;
+    settings.frameEndBySilence = false;
+    ASSERT_TRUE(settings.silentInterval); // the default for Modbus RTU
+    SerialLink link(settings);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    m_pty->startReading();
+    const QByteArray request = QByteArray::fromHex("0103000000084a0c");
+    QElapsedTimer sinceAnswer;
+    QObject::connect(
+        &link, &SerialLink::received, &link, [&] { link.send(request); }, Qt::SingleShotConnection);
+    sinceAnswer.start(); // before the write: the link reads the answer after this
+    ASSERT_TRUE(m_pty->write(QByteArray::fromHex("0103020001")));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().size() >= request.size(); }));
+    // A lower bound: the link cannot have sent before the interval it must keep.
+    EXPECT_GE(sinceAnswer.nsecsElapsed(), vt::dev::modbus::silentIntervalUs(1200, 11) * 1000);
+    EXPECT_EQ(m_pty->received(), request);
 }
 
 TEST_F(SerialLinkPty, HcsDefaultIs19200Baud8E1OnTheLine)

@@ -54,6 +54,8 @@ void SerialPage::load(const model::ConnectionSpec &spec)
 {
     m_port->setPortName(spec.serial.portName);
     m_line->setSettings(spec.serial);
+    m_silentInterval = spec.serial.silentInterval;
+    m_frameEndBySilence = spec.serial.frameEndBySilence;
     m_address->setValue(spec.unit.value_or(1));
     m_product->setProduct(spec.product);
 }
@@ -63,6 +65,8 @@ model::ConnectionSpec SerialPage::spec() const
     model::ConnectionSpec spec;
     spec.kind = model::ConnectionKind::Serial;
     spec.serial = m_line->settings(m_port->portName());
+    spec.serial.silentInterval = m_silentInterval;
+    spec.serial.frameEndBySilence = m_frameEndBySilence;
     spec.unit = m_address->value();
     spec.product = m_product->product();
     return spec;

@@ -36,6 +36,9 @@ private:
     QLabel *m_portLabel = nullptr;
     QLabel *m_addressLabel = nullptr;
     QLabel *m_productLabel = nullptr;
+    // Modbus RTU line timing (SerialSettings): on unless the loaded spec turned it off.
+    bool m_silentInterval = true;
+    bool m_frameEndBySilence = true;
 };
 
 } // namespace vt::ui

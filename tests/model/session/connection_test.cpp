@@ -64,6 +64,12 @@ TEST(Connection, SessionOptionsFollowTheWire)
     auto options = model::sessionOptionsFor(serial);
     EXPECT_EQ(options.baudRate, 115200);
     EXPECT_EQ(options.bitsPerCharacter, 10); // 8N1
+    // Modbus over Serial Line §2.5.1.1: t3.5 is 1.75 ms above 19200 baud; the link may hold a
+    // request for it and hands an answer on after it, so the timeout allows for it twice.
+    EXPECT_EQ(options.lineSilence, std::chrono::microseconds(1750));
+    EXPECT_EQ(options.timeout(8, 21), options.turnaround + std::chrono::milliseconds(7));
+    serial.serial.silentInterval = serial.serial.frameEndBySilence = false;
+    EXPECT_EQ(model::sessionOptionsFor(serial).lineSilence, std::chrono::microseconds(0));
     serial.turnaround = std::chrono::milliseconds(40);
     serial.retries = 0;
     options = model::sessionOptionsFor(serial);
@@ -75,6 +81,7 @@ TEST(Connection, SessionOptionsFollowTheWire)
     hart.serial = link::SerialSettings::hart(QStringLiteral("/dev/ttyUSB1"));
     EXPECT_EQ(model::sessionOptionsFor(hart).baudRate, 1200);
     EXPECT_EQ(model::sessionOptionsFor(hart).bitsPerCharacter, 11); // 8O1
+    EXPECT_EQ(model::sessionOptionsFor(hart).lineSilence, std::chrono::microseconds(0));
 
     ConnectionSpec tcp;
     tcp.kind = ConnectionKind::Tcp;
