@@ -491,6 +491,22 @@
         <source>Workbench</source>
         <translation>Werkbank</translation>
     </message>
+    <message>
+        <source>Open Session &amp;Log Folder</source>
+        <translation>Ordner der Sitzungs&amp;protokolle öffnen</translation>
+    </message>
+    <message>
+        <source>Every write of a session is kept in a log file in this folder.</source>
+        <translation>Jeder Schreibvorgang einer Sitzung wird in einer Protokolldatei in diesem Ordner festgehalten.</translation>
+    </message>
+    <message>
+        <source>Session Logs</source>
+        <translation>Sitzungsprotokolle</translation>
+    </message>
+    <message>
+        <source>The session logs are kept in %1.</source>
+        <translation>Die Sitzungsprotokolle liegen in %1.</translation>
+    </message>
 </context>
 <context>
     <name>vt::app::QuitController</name>

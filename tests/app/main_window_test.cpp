@@ -71,7 +71,7 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
               (QStringList{"&File", "&Edit", "&Device", "&View", "&Language", "&Help"}));
     EXPECT_EQ(actionTexts(w, "menuFile"),
               (QStringList{"&New…", "&Open…", "&Save", "Save &As…", "Open &Recent", "&Export CSV…",
-                           "Compare with &File…", "&Quit"}));
+                           "Compare with &File…", "Open Session &Log Folder", "&Quit"}));
     EXPECT_EQ(actionTexts(w, "menuDevice"),
               (QStringList{"&Connect…", "&Disconnect", "&Read All", "&Write Changes…",
                            "Compare with De&vice…", "&Live Display Values", "&Scan Node",
