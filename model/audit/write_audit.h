@@ -31,8 +31,7 @@ enum class AuditOrigin {
 const char *auditOriginKey(AuditOrigin origin);
 
 // A write item as the job left it: status, read back and reason (English, and German when the
-// text is the device's or the session runs in German). An Unchanged item sent nothing and is
-// not logged; one refused before sending is.
+// text is the device's or the session runs in German).
 void auditWrite(int module, const WriteItem &item, AuditOrigin origin);
 // One exchange that wrote `value` to `row` (nullptr: a raw frame, `frameHex` its bytes) without a
 // read back: written, refused, uncertain or not sent, from the outcome.

@@ -102,8 +102,9 @@ TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
     for (const AuditEntry &e : log.entries) {
         EXPECT_EQ(e.origin, QStringLiteral("fold"));
         // E22 moves the module: it is read back at the new address by the apply itself.
-        if (e.row != QStringLiteral("E22"))
+        if (e.row != QStringLiteral("E22")) {
             EXPECT_EQ(e.status, QStringLiteral("verified")) << e.row.toStdString();
+        }
         ++rows[e.row];
     }
     EXPECT_EQ(rows[QStringLiteral("E22")], 3);

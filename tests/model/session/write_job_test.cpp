@@ -9,6 +9,7 @@
 namespace vt::test {
 namespace {
 
+using model::AuditOrigin;
 using model::WriteItem;
 using model::WriteJob;
 using model::WriteStatus;
