@@ -125,4 +125,24 @@ QString Sentence::text() const
     return fill(QCoreApplication::translate(m_context, m_source), values);
 }
 
+QString Sentence::saidInEnglish(const Arg &arg)
+{
+    if (const auto *plain = std::get_if<QString>(&arg))
+        return *plain;
+    if (const auto *local = std::get_if<dev::LocalText>(&arg))
+        return QString::fromStdString(local->en);
+    const auto &sentence = std::get<std::shared_ptr<const Sentence>>(arg);
+    return sentence ? sentence->english() : QString();
+}
+
+QString Sentence::english() const
+{
+    if (!m_source)
+        return saidInEnglish(m_whole);
+    QStringList values;
+    for (const Arg &a : m_args)
+        values << saidInEnglish(a);
+    return fill(QString::fromUtf8(m_source), values);
+}
+
 } // namespace vt::model

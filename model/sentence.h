@@ -39,11 +39,14 @@ public:
 
     // In the catalogue and language in force now.
     QString text() const;
+    // In the source language (English), whatever catalogue is in force: for logs kept on disk.
+    QString english() const;
     bool isEmpty() const;
 
 private:
     using Arg = std::variant<QString, dev::LocalText, std::shared_ptr<const Sentence>>;
     static QString said(const Arg &arg);
+    static QString saidInEnglish(const Arg &arg);
 
     const char *m_context = nullptr;
     const char *m_source = nullptr;

@@ -13,12 +13,15 @@ const char kProgram[] = "valvetune-cli";
 
 void printHelp(std::ostream &out)
 {
-    out << "Usage: " << kProgram << " [--json] COMMAND [ARGS...]\n"
+    out << "Usage: " << kProgram << " [--json] [--audit-dir DIR] COMMAND [ARGS...]\n"
         << "       " << kProgram << " --help | --version\n\n"
         << "ValveTune on the command line: decode and build telegrams, inspect dictionaries and\n"
         << "talk to devices.\n\n"
         << "Options:\n"
         << "  --json      machine-readable output (JSON) on stdout\n"
+        << "  --audit-dir DIR\n"
+        << "              keep the session log of every write in DIR (default\n"
+        << "              ~/.local/share/ValveTune/sessions, or $VT_AUDIT_DIR)\n"
         << "  --help      this text; COMMAND --help for a command's own options\n"
         << "  --version   program version\n\n";
     if (commands().empty()) {
@@ -119,6 +122,12 @@ int runCli(const QStringList &arguments, std::ostream &out, std::ostream &err, C
         }
         if (opt == QLatin1String("--json")) {
             ctx.json = true;
+            continue;
+        }
+        if (opt == QLatin1String("--audit-dir")) {
+            if (rest.isEmpty() || rest.first().isEmpty())
+                return ctx.fail(kExitUsage, "--audit-dir needs a directory");
+            ctx.auditDir = rest.takeFirst();
             continue;
         }
         return ctx.fail(kExitUsage, "unknown option '" + opt.toStdString() + "' (see --help)");

@@ -42,6 +42,8 @@ struct Context
     std::unique_ptr<i18n::Translation> translation{};
     // The same language for the texts devices/ carries in both (device refusals, file errors).
     dev::Language lang = dev::Language::English;
+    // --audit-dir: where a device command's session log goes (empty: AuditLog's default).
+    QString auditDir{};
 
     // Prints "valvetune-cli: <message>" on stderr and returns the code.
     int fail(int code, const std::string &message) const;

@@ -96,7 +96,8 @@ int runSet(const QStringList &argsIn, Context &ctx)
 
     if (const int c = gate.pass(run, *module, items))
         return c;
-    const std::vector<model::WriteItem> done = run.write(*module, std::move(items));
+    const std::vector<model::WriteItem> done =
+        run.write(*module, std::move(items), model::AuditOrigin::CliSet);
     code = exitCodeOf(done, run.linkLost());
     if (ctx.json) {
         Json results = Json::array();

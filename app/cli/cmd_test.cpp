@@ -289,6 +289,7 @@ int runTest(const QStringList &argsIn, Context &ctx)
     model::TestRunSetup setup = model::TestRun::setupFor(*module, *setValue, *signal);
     setup.window = p.window;
     setup.rateHz = p.rate;
+    setup.origin = model::AuditOrigin::CliTest;
     setup.switchSource = true; // the confirmation below lists the source rows
     if (const QString problem = model::TestRun::rangeProblem(setup); !problem.isEmpty())
         return ctx.fail(kExitUsage, str(problem) + "; nothing was sent");

@@ -80,7 +80,7 @@ int runWrite(const QStringList &argsIn, Context &ctx)
             }
             items = std::move(changes);
         } else {
-            items = run.write(plan.module, std::move(items));
+            items = run.write(plan.module, std::move(items), model::AuditOrigin::CliWrite);
             code = std::max(code, exitCodeOf(items, run.linkLost()));
             std::vector<model::WriteItem> reported;
             for (const model::WriteItem &item : items) {

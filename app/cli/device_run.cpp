@@ -112,7 +112,8 @@ readableRowsNamed(const QStringList &names, const model::ModuleInfo &module, Con
 }
 
 DeviceRun::DeviceRun(Context &ctx, DeviceOptions options)
-    : m_ctx(ctx), m_options(std::move(options))
+    : m_ctx(ctx), m_options(std::move(options)),
+      m_audit(QStringLiteral("valvetune-cli"), QStringLiteral(VT_VERSION), ctx.auditDir)
 {
     ensureApplication();
     // Errors are one line on stderr (cli_app.h): the links' log lines (vt.link …) would repeat
@@ -335,10 +336,11 @@ std::optional<model::ReadResult> DeviceRun::read(int address,
 }
 
 std::vector<model::WriteItem> DeviceRun::write(const model::ModuleInfo &module,
-                                               std::vector<model::WriteItem> items)
+                                               std::vector<model::WriteItem> items,
+                                               model::AuditOrigin origin)
 {
     auto job = std::make_unique<model::WriteJob>(access(), module.address, *module.dictionary,
-                                                 std::move(items));
+                                                 std::move(items), origin);
     auto finished = std::make_shared<bool>(false);
     QObject::connect(job.get(), &model::WriteJob::finished, job.get(), [this, finished] {
         *finished = true;

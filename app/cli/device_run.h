@@ -8,6 +8,7 @@
 #include "cli_app.h"
 #include "connection_args.h"
 #include "device_output.h"
+#include "model/audit/audit_log.h"
 #include "model/session/connection.h"
 #include "model/session/write_record.h"
 
@@ -78,8 +79,10 @@ public:
 
     // Runs a safe write (model::WriteJob: range check, changed only, paced, read back) to its end,
     // bounded; the items as the job left them (rows not reached stay NotSent).
+    // The session log names `origin` (the command) for each item.
     std::vector<model::WriteItem> write(const model::ModuleInfo &module,
-                                        std::vector<model::WriteItem> items);
+                                        std::vector<model::WriteItem> items,
+                                        model::AuditOrigin origin);
 
     // Runs the event loop until `done()` holds or `limit` passed (false), or — with stopOnLost —
     // the link is lost (false). Callbacks that change what `done` looks at call wake().
@@ -97,6 +100,9 @@ public:
 private:
     Context &m_ctx;
     DeviceOptions m_options;
+    // The session log of this command's writes; outlives the connection, whose close it logs.
+    model::AuditLog m_audit;
+    model::AuditLog::Scope m_auditScope{m_audit};
     std::unique_ptr<model::Connection> m_connection;
     QEventLoop *m_loop = nullptr; // the innermost waitUntil's loop
     bool m_lost = false;

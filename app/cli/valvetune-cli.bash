@@ -26,6 +26,10 @@ _valvetune_cli()
             mapfile -t COMPREPLY < <(compgen -f -- "$cur")
             return
             ;;
+        --audit-dir)
+            mapfile -t COMPREPLY < <(compgen -d -- "$cur")
+            return
+            ;;
         --sim | --dictionary)
             mapfile -t COMPREPLY < <(compgen -W "$(_valvetune_cli_families)" -- "$cur")
             return
@@ -60,17 +64,19 @@ _valvetune_cli()
             ;;
     esac
 
-    # The command is the first word that is no option.
+    # The command is the first word that is no option (nor --audit-dir's directory).
     local i command=
     for ((i = 1; i < COMP_CWORD; i++)); do
-        if [[ ${COMP_WORDS[i]} != -* ]]; then
+        if [[ ${COMP_WORDS[i]} == --audit-dir ]]; then
+            i=$((i + 1))
+        elif [[ ${COMP_WORDS[i]} != -* ]]; then
             command=${COMP_WORDS[i]}
             break
         fi
     done
     if [[ -z $command ]]; then
         if [[ $cur == -* ]]; then
-            mapfile -t COMPREPLY < <(compgen -W "--json --help --version" -- "$cur")
+            mapfile -t COMPREPLY < <(compgen -W "--json --audit-dir --help --version" -- "$cur")
         else
             mapfile -t COMPREPLY < <(compgen -W "$commands" -- "$cur")
         fi

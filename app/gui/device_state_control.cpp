@@ -106,7 +106,8 @@ void DeviceStateControl::write(int moduleIndex, const dev::ParamMeta &rowRef, do
     item.before = m_workspace.deviceImage().value(module.address, row);
     const int address = module.address;
     m_job = std::make_unique<model::WriteJob>(connection->access(), address, *module.dictionary,
-                                              std::vector<model::WriteItem>{item});
+                                              std::vector<model::WriteItem>{item},
+                                              model::AuditOrigin::State);
     connect(m_job.get(), &model::WriteJob::finished, this, [this, address](bool complete) {
         const std::vector<model::WriteItem> items = m_job->items();
         const model::WriteItem &done = items.front();

@@ -47,7 +47,13 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
         QStringList{QStringLiteral("factory")},
         QStringLiteral("With --simulate: start the simulator from the bare dictionary defaults "
                        "instead of a commissioned machine."));
-    parser.addOptions({lang, simulate, factory, open, connectOption});
+    const QCommandLineOption auditDir(
+        QStringList{QStringLiteral("audit-dir")},
+        QStringLiteral("Keep the session log (every write, one JSON line each) in DIR instead of "
+                       "the default (~/.local/share/ValveTune/sessions, or "
+                       "$VT_AUDIT_DIR)."),
+        QStringLiteral("DIR"));
+    parser.addOptions({lang, simulate, factory, open, connectOption, auditDir});
     // A file manager and the desktop entry (Exec=valvetune %f) pass the file as the argument.
     parser.addPositionalArgument(
         QStringLiteral("FILE"),
@@ -109,6 +115,7 @@ GuiOptions parseGuiOptions(const QStringList &arguments, QString *helpText)
         }
     }
     out.factory = parser.isSet(factory);
+    out.auditDir = parser.value(auditDir);
     if (out.factory && out.simulate.isEmpty())
         return usageError(QStringLiteral("--factory goes with --simulate (or --connect --sim)"));
     if (parser.isSet(open))

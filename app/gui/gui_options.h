@@ -18,6 +18,7 @@ struct GuiOptions
     QString simulate;     // family id, optionally ":MODULES"
     bool factory = false; // --factory: the simulator starts from the dictionary defaults
     QString openFile;     // --open FILE or the positional FILE
+    QString auditDir;     // --audit-dir DIR: where the session log goes (empty: the default)
     // --connect: the link to open at start-up (--tcp, --port, --can, --hart, --sim and their
     // settings, as valvetune-cli takes them).
     std::optional<model::ConnectionSpec> connection;

@@ -7,6 +7,7 @@
 #include "app/gui/main_window.h"
 #include "app/gui/startup.h"
 #include "model/assert_handler.h"
+#include "model/audit/audit_log.h"
 
 #include <QApplication>
 #include <QGuiApplication>
@@ -64,6 +65,11 @@ int main(int argc, char *argv[])
     if (!vt::app::Language::isKnown(code))
         code = vt::app::Language::systemDefault();
     language.setLanguage(code);
+
+    // Every write of this session goes into one log file (model/audit), kept after a crash.
+    vt::model::AuditLog audit(QStringLiteral("valvetune"), QStringLiteral(VT_VERSION),
+                              options.auditDir);
+    const vt::model::AuditLog::Scope auditScope(audit);
 
     vt::app::MainWindow window(settings, language);
     window.show();

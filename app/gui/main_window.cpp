@@ -7,6 +7,7 @@
 #include "file_controller.h"
 #include "language.h"
 #include "layout_memory.h"
+#include "model/audit/audit_log.h"
 #include "model/curve/lcurve_table_model.h"
 #include "model/params/curve_binding.h"
 #include "model/recent_files.h"
@@ -31,15 +32,18 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QCloseEvent>
+#include <QDesktopServices>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QUndoStack>
+#include <QUrl>
 
 namespace vt::app {
 
@@ -128,6 +132,7 @@ void MainWindow::createActions()
     m_export = make("actionExport");
     m_reportAction = make("actionReport");
     m_compareFile = make("actionCompareFile");
+    m_sessionLogs = make("actionSessionLogFolder");
     m_quit = make("actionQuit", QKeySequence::Quit);
     // Not QUndoStack::createUndoAction(): its "Undo %1" is fixed in the language the action was
     // made in, and a run-time switch has to re-render it (updateUndoActions).
@@ -166,6 +171,7 @@ void MainWindow::createActions()
     connect(m_german, &QAction::triggered, this, [this] { chooseLanguage(QStringLiteral("de")); });
     connect(m_quit, &QAction::triggered, this, &QWidget::close);
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
+    connect(m_sessionLogs, &QAction::triggered, this, &MainWindow::openSessionLogFolder);
     connect(m_guide, &QAction::triggered, this, [this] {
         auto *guide = findChild<ui::UserGuideDialog *>();
         if (!guide) {
@@ -211,6 +217,7 @@ void MainWindow::createMenus()
     m_fileMenu->addActions({m_export, m_compareFile});
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_reportAction);
+    m_fileMenu->addAction(m_sessionLogs);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quit);
 
@@ -415,6 +422,8 @@ void MainWindow::retranslate()
     m_export->setText(tr("&Export CSV…"));
     m_reportAction->setText(tr("Commissioning Re&port…"));
     m_compareFile->setText(tr("Compare with &File…"));
+    m_sessionLogs->setText(tr("Open Session &Log Folder"));
+    m_sessionLogs->setToolTip(tr("Every write of a session is kept in a log file in this folder."));
     m_quit->setText(tr("&Quit"));
     updateUndoActions();
     m_revertDevice->setText(tr("Revert to &Device"));
@@ -482,6 +491,17 @@ void MainWindow::showAbout()
 {
     ui::AboutDialog dialog(this);
     dialog.exec();
+}
+
+void MainWindow::openSessionLogFolder()
+{
+    const model::AuditLog *log = model::AuditLog::current();
+    const QString folder = log ? log->directory() : model::AuditLog::defaultDirectory();
+    // The folder exists before the first write, so the file manager has something to show.
+    if (QDir().mkpath(folder) && QDesktopServices::openUrl(QUrl::fromLocalFile(folder)))
+        return;
+    QMessageBox::information(this, tr("Session Logs"),
+                             tr("The session logs are kept in %1.").arg(folder));
 }
 
 void MainWindow::saveLayout()

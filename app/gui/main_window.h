@@ -99,6 +99,7 @@ private:
     void updateTitle();
     void showStatus(const QString &text);
     void showAbout();
+    void openSessionLogFolder(); // where the session log (model/audit) keeps every write
 
     AppSettings &m_settings;
     Language &m_language;
@@ -134,6 +135,7 @@ private:
     QAction *m_export = nullptr;
     QAction *m_reportAction = nullptr;
     QAction *m_compareFile = nullptr;
+    QAction *m_sessionLogs = nullptr;
     QAction *m_quit = nullptr;
     QAction *m_undo = nullptr;
     QAction *m_redo = nullptr;

@@ -225,7 +225,7 @@ void FoldApply::writeOptions(std::size_t index)
                         item.before = value.value;
             FoldApplyModule &mod = m_modules[index];
             auto *job = new WriteJob(m_access, mod.current, *mod.info->dictionary, std::move(items),
-                                     {}, this);
+                                     AuditOrigin::Fold, {}, this);
             m_job = job;
             connect(job, &WriteJob::finished, this, [this, index, job, g](bool) {
                 job->deleteLater();
@@ -324,7 +324,8 @@ void FoldApply::nextMove()
     // The module answers at the new address as soon as E22 is written; the read-back at the old
     // one would time out, so confirmAddress() reads it back where it now is.
     options.verify = false;
-    auto *job = new WriteJob(m_access, move.from, *m.info->dictionary, {item}, options, this);
+    auto *job = new WriteJob(m_access, move.from, *m.info->dictionary, {item}, AuditOrigin::Fold,
+                             options, this);
     m_job = job;
     connect(job, &WriteJob::finished, this, [this, job, move, g = m_generation](bool) {
         job->deleteLater();

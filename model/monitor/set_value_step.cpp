@@ -175,7 +175,7 @@ void SetValueStep::enableBusSetValue()
 void SetValueStep::runJob(std::vector<WriteItem> items)
 {
     m_job = std::make_unique<WriteJob>(m_access, m_module.address, *m_module.dictionary,
-                                       std::move(items));
+                                       std::move(items), AuditOrigin::Monitor);
     connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
         m_busy = false;
         const std::vector<WriteItem> done = m_job->items();

@@ -136,7 +136,8 @@ void WriteChangesJob::next()
     }
     ModuleWriteResult &target = m_results[m_current];
     const ParamModule &m = m_document.module(target.module);
-    m_job = new WriteJob(m_access, m.address, *m.dictionary, target.items, WriteOptions{}, this);
+    m_job = new WriteJob(m_access, m.address, *m.dictionary, target.items, AuditOrigin::Editor,
+                         WriteOptions{}, this);
     WriteJob *job = m_job;
     const int module = target.module;
     connect(job, &WriteJob::itemChanged, this, [this, job, module](int index) {

@@ -47,8 +47,8 @@ void ActuatorRestore::next()
         }
         WriteOptions options;
         options.skipUnchanged = false; // `before` is the tool's own value: always send
-        m_job =
-            std::make_unique<WriteJob>(m_access, module, *dict->second, std::move(items), options);
+        m_job = std::make_unique<WriteJob>(m_access, module, *dict->second, std::move(items),
+                                           AuditOrigin::Restore, options);
         connect(m_job.get(), &WriteJob::finished, this, [this, module](bool) {
             for (const WriteItem &item : m_job->items())
                 m_results.push_back({module, item});

@@ -3,6 +3,7 @@
 #include "access/transaction.h"
 #include "core/vt_assert.h"
 #include "dict/dictionary.h"
+#include "model/audit/write_audit.h"
 #include "modbus/rtu_timing.h"
 #include "model/session/adapter_factory.h"
 #include "sim/sim_device.h"
@@ -235,6 +236,7 @@ void Connection::onLinkFailed(const QString &reason)
 {
     if (m_wasOpen) {
         m_wasOpen = false;
+        auditConnection({});
         emit lost(reason);
     } else {
         emit failed(reason);
@@ -245,9 +247,11 @@ void Connection::onLinkState(link::LinkState state)
 {
     if (state == link::LinkState::Open) {
         m_wasOpen = true;
+        auditConnection(describe()); // the session log names what the writes went to
         emit opened();
     } else if (state == link::LinkState::Closed && m_wasOpen) {
         m_wasOpen = false;
+        auditConnection({});
         if (!m_closing)
             emit lost(tr("the link closed"));
     }

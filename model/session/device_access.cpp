@@ -222,17 +222,20 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
 }
 
 RequestId DeviceAccess::write(int module, const dev::ParamMeta &row, const dev::RawValue &value,
-                              Priority priority, Completion done)
+                              Priority priority, std::optional<AuditOrigin> logAs, Completion done)
 {
     QPointer<DeviceImage> image = &this->image();
-    return m_session.submit(
-        m_session.adapter().planWrite(module, row, value), priority,
-        [image, module, row = &row, value, done = std::move(done)](const Outcome &outcome) {
-            if (outcome.status == OutcomeStatus::Ok && image)
-                image->recordWritten(module, row, value);
-            if (done)
-                done(outcome);
-        });
+    return m_session.submit(m_session.adapter().planWrite(module, row, value), priority,
+                            [image, module, row = &row, value, logAs,
+                             before = image->value(module, &row),
+                             done = std::move(done)](const Outcome &outcome) {
+                                if (logAs)
+                                    auditExchange(module, row, before, value, outcome, *logAs);
+                                if (outcome.status == OutcomeStatus::Ok && image)
+                                    image->recordWritten(module, row, value);
+                                if (done)
+                                    done(outcome);
+                            });
 }
 
 void DeviceAccess::ReadHandle::cancel()

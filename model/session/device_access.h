@@ -6,6 +6,7 @@
 
 #include "dict/dictionary.h"
 #include "dict/identify.h"
+#include "model/audit/write_audit.h"
 #include "model/session/device_image.h"
 #include "model/session/session.h"
 
@@ -97,9 +98,11 @@ public:
                                      ReadProgress progress = {});
 
     // Writes one raw value. The caller range-checks first (dev::checkWrite); this does not read
-    // back. An acknowledged write is recorded in the image as written, not verified.
+    // back. An acknowledged write is recorded in the image as written, not verified. Every write
+    // of a row passes here: with `logAs` its outcome goes into the session log (write_audit.h)
+    // under that origin; nullopt only for a WriteJob, which logs the item with its read back.
     RequestId write(int module, const dev::ParamMeta &row, const dev::RawValue &value,
-                    Priority priority, Completion done);
+                    Priority priority, std::optional<AuditOrigin> logAs, Completion done);
 
 private:
     Session &m_session;

@@ -61,9 +61,10 @@ std::string trimmed(std::string s)
 } // namespace
 
 WriteJob::WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary,
-                   std::vector<WriteItem> items, WriteOptions options, QObject *parent)
+                   std::vector<WriteItem> items, AuditOrigin origin, WriteOptions options,
+                   QObject *parent)
     : QObject(parent), m_access(access), m_module(module), m_dictionary(dictionary),
-      m_items(std::move(items)), m_options(options),
+      m_items(std::move(items)), m_origin(origin), m_options(options),
       m_pacingMs(options.pacingMs.value_or(dictionary.writePacingMs))
 {
     m_pace.setSingleShot(true);
@@ -118,10 +119,12 @@ void WriteJob::start()
             readBackEquals(item, *item.before)) {
             item.status = WriteStatus::Unchanged;
         }
-        if (item.status == WriteStatus::Pending)
+        if (item.status == WriteStatus::Pending) {
             m_order.push_back(static_cast<int>(i));
-        else
+        } else {
+            auditWrite(m_module, item, m_origin);
             emit itemChanged(static_cast<int>(i));
+        }
     }
     run();
 }
@@ -195,8 +198,8 @@ void WriteJob::next()
 void WriteJob::writeItem(int index)
 {
     WriteItem &item = m_items[static_cast<std::size_t>(index)];
-    m_access.write(
-        m_module, *item.row, item.value, Priority::User,
+    m_access.write( // the session log gets the item when it settles, with its read back
+        m_module, *item.row, item.value, Priority::User, std::nullopt,
         [this, guard = QPointer<WriteJob>(this), index](const Outcome &outcome) {
             if (!guard)
                 return; // the job was destroyed while its request was out
@@ -307,6 +310,7 @@ void WriteJob::settle(int index, WriteStatus status, const Sentence &reason,
     item.status = status;
     item.reason = reason;
     item.deviceText = deviceText;
+    auditWrite(m_module, item, m_origin);
     ++m_done;
     emit itemChanged(index);
     emit progress(m_done, static_cast<int>(m_order.size()));
@@ -320,6 +324,7 @@ void WriteJob::stopRemaining(const QString &reason)
             item.status = WriteStatus::NotSent;
             item.reason = said(QT_TR_NOOP("not sent: the write stopped (%1)")).arg(reason);
             item.deviceText = {};
+            auditWrite(m_module, item, m_origin);
             emit itemChanged(m_order[k]);
         }
     }

@@ -7,6 +7,7 @@
 // outlive it.
 #pragma once
 
+#include "model/audit/write_audit.h"
 #include "model/session/device_access.h"
 #include "model/session/write_record.h"
 
@@ -28,8 +29,11 @@ class WriteJob : public QObject
 {
     Q_OBJECT
 public:
+    // Every item that ends (and every row it never sent) goes into the session log
+    // (write_audit.h) under `origin`.
     WriteJob(DeviceAccess &access, int module, const dev::Dictionary &dictionary,
-             std::vector<WriteItem> items, WriteOptions options = {}, QObject *parent = nullptr);
+             std::vector<WriteItem> items, AuditOrigin origin, WriteOptions options = {},
+             QObject *parent = nullptr);
     ~WriteJob() override;
 
     // Checks every row (RefusedLocally / Unchanged), then writes the rest in order.
@@ -71,6 +75,7 @@ private:
     int m_module;
     const dev::Dictionary &m_dictionary;
     std::vector<WriteItem> m_items;
+    AuditOrigin m_origin;
     WriteOptions m_options;
     int m_pacingMs = 0;
     std::vector<int> m_order; // indexes still to do in this run

@@ -140,6 +140,7 @@ void GuidedTuning::runTest()
     test.actualRow = m_setup.actualRow;
     test.window = m_setup.window;
     test.rateHz = m_setup.rateHz;
+    test.origin = m_setup.origin;
     test.switchSource = m_setup.switchSource;
     m_live = newRun(static_cast<int>(m_iterations.size()) + 1, test, m_access.image());
     m_test = std::make_unique<TestRun>(m_access, std::move(test));
@@ -290,7 +291,7 @@ void GuidedTuning::writeGains(const Gains &gains, std::function<void(bool)> then
         item(m_setup.gains.i, gains.i,
              m_current ? std::optional<double>(m_current->i) : std::nullopt);
     m_job = std::make_unique<WriteJob>(m_access, m_setup.module.address, *m_setup.module.dictionary,
-                                       std::move(items));
+                                       std::move(items), m_setup.origin);
     connect(m_job.get(), &WriteJob::finished, this, [this, gains, then](bool complete) {
         const std::vector<WriteItem> done = m_job->items();
         m_job.release()->deleteLater();

@@ -45,6 +45,7 @@ struct GuidedSetup
     bool switchSource = false;
     GainTarget target;
     int maxIterations = 6;
+    AuditOrigin origin = AuditOrigin::Workbench; // what the session log names for its writes
 };
 
 enum class GuidedState {

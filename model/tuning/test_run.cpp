@@ -238,9 +238,9 @@ void TestRun::check()
             m_phase = Phase::Switching;
             WriteOptions options;
             options.skipUnchanged = false; // a state rule's control word may read as commanded
-            m_job =
-                std::make_unique<WriteJob>(m_access, m_setup.module.address,
-                                           *m_setup.module.dictionary, m_sourceChanges, options);
+            m_job = std::make_unique<WriteJob>(m_access, m_setup.module.address,
+                                               *m_setup.module.dictionary, m_sourceChanges,
+                                               m_setup.origin, options);
             connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
                 m_sourceChanges = m_job->items();
                 m_job.release()->deleteLater();
@@ -301,7 +301,7 @@ void TestRun::cycle()
     m_attempted = true;
     m_access.write(
         m_setup.module.address, *m_setup.setValueRow, dev::RawValue{value}, Priority::User,
-        [this, alive, value](const Outcome &outcome) {
+        m_setup.origin, [this, alive, value](const Outcome &outcome) {
             if (!*alive || m_phase != Phase::Running)
                 return;
             if (outcome.status != OutcomeStatus::Ok) {
@@ -479,7 +479,7 @@ void TestRun::restore()
     WriteOptions options;
     options.skipUnchanged = false; // the device's value is what the test left, whatever we know
     m_job = std::make_unique<WriteJob>(m_access, m_setup.module.address, *m_setup.module.dictionary,
-                                       std::move(items), options);
+                                       std::move(items), m_setup.origin, options);
     connect(m_job.get(), &WriteJob::finished, this, [this](bool complete) {
         m_outcome.restore = m_job->items();
         m_outcome.restored = complete && m_unrestorable.empty();

@@ -44,6 +44,7 @@ struct TestRunSetup
     const dev::ParamMeta *faultRow = nullptr;
     std::uint32_t faultMask = 0;
     std::uint32_t faultOk = 0;
+    AuditOrigin origin = AuditOrigin::Workbench; // what the session log names for its writes
 };
 
 enum class TestEnd {

@@ -114,7 +114,7 @@ TEST_P(Ed1Gui, TheNodeViewShowsTheStateAndAChosenStateIsAskedWrittenAndJournalle
     const dev::ParamMeta *setpoint = doc().module(0).dictionary->find("dpc_SetpointVal");
     std::optional<model::Outcome> written;
     window->workspace().connection()->access().write(doc().module(0).address, *setpoint, 512.0,
-                                                     model::Priority::User,
+                                                     model::Priority::User, std::nullopt,
                                                      [&](const model::Outcome &o) { written = o; });
     ASSERT_TRUE(waitFor(written));
     ASSERT_EQ(written->status, model::OutcomeStatus::Ok);

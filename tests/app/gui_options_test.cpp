@@ -47,6 +47,18 @@ TEST(GuiOptions, SimulateAndOpenAreTakenAndCheckedForNonsense)
     }
 }
 
+// --audit-dir: where the session log goes (model/audit); empty means AuditLog's default.
+TEST(GuiOptions, AuditDirIsTakenAndNamedInTheHelp)
+{
+    EXPECT_TRUE(parseGuiOptions({"valvetune"}).auditDir.isEmpty());
+    auto r = parseGuiOptions({"valvetune", "--audit-dir", "/tmp/logs", "--simulate", "opat"});
+    ASSERT_FALSE(r.exitNow) << r.error.toStdString();
+    EXPECT_EQ(r.auditDir, "/tmp/logs");
+    QString help;
+    parseGuiOptions({"valvetune", "--help"}, &help);
+    EXPECT_TRUE(help.contains("--audit-dir")) << help.toStdString();
+}
+
 // --factory: the built-in simulator from the dictionary defaults instead of the commissioned
 // machine; it goes with --simulate (or with --connect --sim, the CLI's connection options).
 TEST(GuiOptions, FactoryGoesWithTheSimulator)

@@ -71,7 +71,8 @@ TEST_F(Fixture, OpensWithItsMenusDocksAndStatusBar)
               (QStringList{"&File", "&Edit", "&Device", "&View", "&Language", "&Help"}));
     EXPECT_EQ(actionTexts(w, "menuFile"),
               (QStringList{"&New…", "&Open…", "&Save", "Save &As…", "Open &Recent", "&Export CSV…",
-                           "Compare with &File…", "Commissioning Re&port…", "&Quit"}));
+                           "Compare with &File…", "Commissioning Re&port…",
+                           "Open Session &Log Folder", "&Quit"}));
     EXPECT_EQ(actionTexts(w, "menuDevice"),
               (QStringList{"&Connect…", "&Disconnect", "&Read All", "&Write Changes…",
                            "Compare with De&vice…", "&Live Display Values", "&Scan Node",

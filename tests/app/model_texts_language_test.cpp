@@ -105,7 +105,8 @@ TEST(ModelTextsLanguage, WriteJobRefusalsInGerman)
     list[0].value = 20000.0;
     list[1].row = c->dictionary().find("d1.11"); // read only: refused before sending
     list[1].value = 5.0;
-    model::WriteJob job(c->access(), c->address(), c->dictionary(), list);
+    model::WriteJob job(c->access(), c->address(), c->dictionary(), list,
+                        model::AuditOrigin::Editor);
     QSignalSpy finished(&job, &model::WriteJob::finished);
     {
         German german;

@@ -20,7 +20,8 @@ struct LoopBench
     {
         std::optional<model::Outcome> done;
         rig->access().write(rig->module().address, rig->row(name), dev::RawValue{raw},
-                            model::Priority::User, [&](const model::Outcome &o) { done = o; });
+                            model::Priority::User, std::nullopt,
+                            [&](const model::Outcome &o) { done = o; });
         if (!waitFor(done))
             return false;
         // DMA Profinet manual §3.4.1: an EEPROM write needs up to 25 ms; the module refuses the

@@ -5,6 +5,7 @@
 #include "core/hex.h"
 #include "frame_detail.h"
 #include "inspect/logged_frame.h"
+#include "model/audit/write_audit.h"
 #include "model/number_text.h"
 #include "model/session/connection.h"
 #include "model/text_language.h"
@@ -455,11 +456,17 @@ bool ComposePanel::send()
     m_result->setText(m_resultText());
     QPointer<ComposePanel> self(this);
     const bool writes = frame.writes;
+    const QString frameHex = QString::fromStdString(vt::dev::toHex(t.raw));
     m_connection->session().submit(
         std::move(t), vt::model::Priority::User,
         [self, writes, module, row, spec = m_spec,
          before = row ? m_connection->access().image().value(module, row) : std::nullopt,
-         value = m_spec.value](const vt::model::Outcome &o) {
+         value = m_spec.value, frameHex](const vt::model::Outcome &o) {
+            // A frame that writes goes into the session log whatever became of the panel.
+            if (writes)
+                vt::model::auditExchange(module, row, before,
+                                         vt::dev::RawValue{static_cast<double>(value)}, o,
+                                         vt::model::AuditOrigin::Compose, frameHex);
             if (!self)
                 return;
             self->m_busy = false;

@@ -1,6 +1,8 @@
 // FoldApply against the built-in simulator: every module's address and options
 // are written, read back, and a scan finds each module at its planned address.
 #include "dict/dictionary_loader.h"
+#include "model/audit/audit_log.h"
+#include "model/audit/audit_reader.h"
 #include "model/fold/fold_apply.h"
 #include "model/session/connection.h"
 #include "sim/hcs_module.h"
@@ -8,9 +10,11 @@
 #include "sim_rig.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <gtest/gtest.h>
 #include <iostream>
+#include <map>
 
 namespace vt::model {
 namespace {
@@ -60,6 +64,9 @@ bool run(FoldApply &apply, bool whole = true, std::size_t module = 0)
 // 4, 5, 6 (as from another machine); the apply renumbers them and the scan finds 1, 2, 3.
 TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
 {
+    QTemporaryDir logDir;
+    AuditLog audit(QStringLiteral("valvetune"), QStringLiteral("test"), logDir.path());
+    const AuditLog::Scope auditScope(audit);
     // Modules at their factory defaults (E17 = 0, E23 = 0): the plan's options are changes.
     auto c = openSim({"dma-pn-v51", 3, "modbus-tcp", {}, {}, true});
     ASSERT_TRUE(c);
@@ -87,6 +94,22 @@ TEST(FoldApply, SetsAddressesAndOptionsOfASimulatedNode)
     // Nothing answers where the modules were.
     for (int old : {4, 5, 6})
         EXPECT_TRUE(c->simEndpoint()->node()->modulesAt(static_cast<std::uint8_t>(old)).empty());
+    // Every write of the apply is in the session log under the fold wizard: the addresses (E22)
+    // and each module's options.
+    const AuditLogContents log = readAuditLog(audit.path());
+    ASSERT_TRUE(log.ok) << log.error.toStdString();
+    std::map<QString, int> rows;
+    for (const AuditEntry &e : log.entries) {
+        EXPECT_EQ(e.origin, QStringLiteral("fold"));
+        // E22 moves the module: it is read back at the new address by the apply itself.
+        if (e.row != QStringLiteral("E22")) {
+            EXPECT_EQ(e.status, QStringLiteral("verified")) << e.row.toStdString();
+        }
+        ++rows[e.row];
+    }
+    EXPECT_EQ(rows[QStringLiteral("E22")], 3);
+    EXPECT_EQ(rows[QStringLiteral("E17")], 3);
+    EXPECT_EQ(rows[QStringLiteral("E23")], 3);
 }
 
 // Two modules swapped (2, 1): the apply parks one on a spare address so no two ever share one.

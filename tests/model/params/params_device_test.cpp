@@ -1,6 +1,8 @@
 // The editor's device round trip at model level against the built-in simulator:
 // connect → read all → edit C1.07 to 1.000 V → write → the simulator holds raw 1000 → save →
 // reopen → compare with the device shows no difference; undo after the write differs again.
+#include "model/audit/audit_log.h"
+#include "model/audit/audit_reader.h"
 #include "model/params/compare_model.h"
 #include "model/params/device_jobs.h"
 #include "model/params/param_file_io.h"
@@ -26,6 +28,9 @@ bool readAll(model::Connection &connection, model::ParameterDocument &doc)
 
 TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
 {
+    QTemporaryDir logDir;
+    model::AuditLog audit(QStringLiteral("valvetune"), QStringLiteral("test"), logDir.path());
+    const model::AuditLog::Scope auditScope(audit);
     auto c = connectSim("dma-pn-v51");
     ASSERT_TRUE(c);
     ASSERT_EQ(c->modules.size(), 1u);
@@ -51,6 +56,15 @@ TEST(ParamsDevice, ReadEditWriteSaveReopenCompare)
     EXPECT_EQ(write.results()[0].items[0].status, model::WriteStatus::Verified);
     EXPECT_EQ(storedRaw(c->simModule(0), *c107), 1000.0);
     EXPECT_FALSE(doc.differsFromDevice(0, c107));
+    // The session log has the write, verified, under the editor.
+    const model::AuditLogContents log = model::readAuditLog(audit.path());
+    ASSERT_TRUE(log.ok) << log.error.toStdString();
+    ASSERT_EQ(log.entries.size(), 1u);
+    EXPECT_EQ(log.entries[0].row, QStringLiteral("C1.07"));
+    EXPECT_EQ(log.entries[0].oldText, QStringLiteral("0.000 V"));
+    EXPECT_EQ(log.entries[0].newText, QStringLiteral("1.000 V"));
+    EXPECT_EQ(log.entries[0].status, QStringLiteral("verified"));
+    EXPECT_EQ(log.entries[0].origin, QStringLiteral("editor"));
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("press.vtpar"));

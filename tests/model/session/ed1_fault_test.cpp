@@ -69,7 +69,7 @@ TEST_P(Ed1Faults, AWriteThenAChangeOnTheCardReadsBackTheNewValue)
     ASSERT_TRUE(c);
     const dev::ParamMeta &p1 = c->row("dpc_PropFact1");
     std::optional<model::Outcome> written;
-    c->access().write(c->address(), p1, 31.0, model::Priority::User,
+    c->access().write(c->address(), p1, 31.0, model::Priority::User, std::nullopt,
                       [&](const model::Outcome &o) { written = o; });
     ASSERT_TRUE(waitFor(written));
     ASSERT_EQ(written->status, model::OutcomeStatus::Ok) << written->reason.toStdString();

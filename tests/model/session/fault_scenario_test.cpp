@@ -69,7 +69,8 @@ TEST(FaultScenario, NoOutOfRangeValueIsEverSent)
         }
     }
     ASSERT_GT(list.size(), 30u);
-    model::WriteJob job(c->access(), c->address(), c->dictionary(), list);
+    model::WriteJob job(c->access(), c->address(), c->dictionary(), list,
+                        model::AuditOrigin::Editor);
     QSignalSpy finished(&job, &model::WriteJob::finished);
     job.start();
     ASSERT_TRUE(finished.wait(120'000));

@@ -32,7 +32,8 @@ std::vector<model::WriteItem> write(SimRig &rig, const char *name, dev::RawValue
     model::WriteItem item;
     item.row = &rig.row(name);
     item.value = std::move(value);
-    model::WriteJob job(rig.access(), rig.module().address, *rig.module().dictionary, {item});
+    model::WriteJob job(rig.access(), rig.module().address, *rig.module().dictionary, {item},
+                        model::AuditOrigin::Editor);
     QSignalSpy finished(&job, &model::WriteJob::finished);
     job.start();
     EXPECT_TRUE(finished.wait(kWaitMs));

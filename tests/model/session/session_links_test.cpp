@@ -71,7 +71,7 @@ struct Endpoint
         std::vector<model::WriteItem> items(1);
         items[0].row = dict.find(name);
         items[0].value = raw;
-        model::WriteJob job(*access, module, dict, items);
+        model::WriteJob job(*access, module, dict, items, model::AuditOrigin::Editor);
         QSignalSpy finished(&job, &model::WriteJob::finished);
         job.start();
         EXPECT_TRUE(finished.wait(kWaitMs));

@@ -9,6 +9,7 @@
 namespace vt::test {
 namespace {
 
+using model::AuditOrigin;
 using model::WriteItem;
 using model::WriteJob;
 using model::WriteStatus;
@@ -58,7 +59,7 @@ TEST(WriteJob, WritesVerifiesAndTheSimulatorHoldsTheValue)
     ASSERT_TRUE(c);
     // The editor's scenario on the session level: C1.07 = 1.000 V is raw 1000.
     WriteJob job(c->access(), c->address(), c->dictionary(),
-                 items(c->dictionary(), {{"C1.07", 1000}, {"r1.01", 120}}));
+                 items(c->dictionary(), {{"C1.07", 1000}, {"r1.01", 120}}), AuditOrigin::Editor);
     ASSERT_TRUE(runJob(job));
     EXPECT_TRUE(job.complete());
     for (const WriteItem &item : job.items()) {
@@ -77,7 +78,8 @@ TEST(WriteJob, OutOfRangeAndReadOnlyNeverLeaveTheMaster)
     const double before = storedRaw(c->simModule(), *c->dictionary().find("C1.07"));
     WriteJob job(
         c->access(), c->address(), c->dictionary(),
-        items(c->dictionary(), {{"C1.07", 10000}, {"C1.07", -1}, {"d1.10", 5}, {"C1.17", 4001}}));
+        items(c->dictionary(), {{"C1.07", 10000}, {"C1.07", -1}, {"d1.10", 5}, {"C1.17", 4001}}),
+        AuditOrigin::Editor);
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(sent.count(), 0);
     for (const WriteItem &item : job.items())
@@ -99,7 +101,7 @@ TEST(WriteJob, SendsOnlyChangedValues)
     list[1].before = 0.0;
     WriteTimes times;
     recordWrites(*c, times);
-    WriteJob job(c->access(), c->address(), c->dictionary(), list);
+    WriteJob job(c->access(), c->address(), c->dictionary(), list, AuditOrigin::Editor);
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(job.items()[0].status, WriteStatus::Unchanged);
     EXPECT_EQ(job.items()[1].status, WriteStatus::Verified);
@@ -116,7 +118,8 @@ TEST(WriteJob, PacingHoldsOnTheSimulatedClockAndTheEepromNeverRefuses)
     WriteJob job(
         c->access(), c->address(), c->dictionary(),
         items(c->dictionary(),
-              {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}, {"C2.08", 400}, {"r1.01", 10}}));
+              {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}, {"C2.08", 400}, {"r1.01", 10}}),
+        AuditOrigin::Editor);
     ASSERT_TRUE(runJob(job));
     EXPECT_TRUE(job.complete());
     ASSERT_EQ(times.simUs.size(), 5u);
@@ -135,7 +138,8 @@ TEST(WriteJob, WithoutPacingTheBusyEepromRefusesSoPacingMatters)
     unpaced.pacingMs = 0;
     unpaced.verify = false;
     WriteJob job(c->access(), c->address(), c->dictionary(),
-                 items(c->dictionary(), {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}}), unpaced);
+                 items(c->dictionary(), {{"C1.07", 100}, {"C1.08", 200}, {"C2.07", 300}}),
+                 AuditOrigin::Editor, unpaced);
     ASSERT_TRUE(runJob(job));
     int refused = 0;
     for (const WriteItem &item : job.items())
@@ -156,7 +160,7 @@ TEST(WriteJob, DeviceRefusalIsReportedWithTheDevicesReason)
     std::vector<WriteItem> list(1);
     list[0].row = &wide;
     list[0].value = 20000.0;
-    WriteJob job(c->access(), c->address(), c->dictionary(), list);
+    WriteJob job(c->access(), c->address(), c->dictionary(), list, AuditOrigin::Editor);
     ASSERT_TRUE(runJob(job));
     EXPECT_EQ(job.items()[0].status, WriteStatus::Refused);
     EXPECT_EQ(job.items()[0].exceptionCode, 3);
@@ -186,7 +190,7 @@ TEST(WriteJob, ACutMidWriteLeavesAnExactRecordAndResumeFinishesIt)
         before.push_back(storedRaw(c->simModule(), *item.row));
         item.before = before.back();
     }
-    WriteJob job(c->access(), c->address(), c->dictionary(), list);
+    WriteJob job(c->access(), c->address(), c->dictionary(), list, AuditOrigin::Editor);
     ASSERT_TRUE(runJob(job));
     EXPECT_FALSE(job.complete());
     // The record says exactly what is on the device.

@@ -66,7 +66,7 @@ TEST(WorkbenchOnTheSimulator, TheMeasuredBodeMatchesThePlantsOwnResponse)
     {
         std::optional<Outcome> done;
         rig->access().write(rig->module().address, rig->row("A1.01"), dev::RawValue{kOffset * 1000},
-                            Priority::User, [&](const Outcome &o) { done = o; });
+                            Priority::User, std::nullopt, [&](const Outcome &o) { done = o; });
         ASSERT_TRUE(test::waitFor(done));
     }
     SignalSpec s;

@@ -1,11 +1,14 @@
 // The workbench's test engine (model/tuning/test_run.h) against the built-in simulator: it refuses
 // before writing anything, records the set value as acknowledged, and every way a test ends puts
 // the set value and its source back (ARCHITECTURE.md "Trust rules").
+#include "model/audit/audit_log.h"
+#include "model/audit/audit_reader.h"
 #include "model/tuning/test_run.h"
 #include "sim_rig.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <gtest/gtest.h>
 
 namespace vt::model {
@@ -33,7 +36,7 @@ struct Bench
     {
         std::optional<Outcome> done;
         rig->access().write(rig->module().address, rig->row(name), dev::RawValue{raw},
-                            Priority::User, [&](const Outcome &o) { done = o; });
+                            Priority::User, std::nullopt, [&](const Outcome &o) { done = o; });
         if (!test::waitFor(done))
             return false;
         // DMA Profinet manual §3.4.1: an EEPROM write needs up to 25 ms; the module refuses the
@@ -91,6 +94,37 @@ TEST(TestRun, AStepRecordsTheAcknowledgedSetValueAndPutsItBack)
     EXPECT_DOUBLE_EQ(b.read("A1.01"), 1000);
     ASSERT_EQ(outcome.restore.size(), 1u);
     EXPECT_EQ(outcome.restore[0].status, WriteStatus::Verified);
+}
+
+// The session log has every set value the test wrote (no read back: "written") and the verified
+// restore, under the workbench; the CLI's test command names itself (cli_audit_test.cpp).
+TEST(TestRun, EveryWriteOfATestIsInTheSessionLog)
+{
+    QTemporaryDir dir;
+    AuditLog log(QStringLiteral("valvetune"), QStringLiteral("test"), dir.path());
+    const AuditLog::Scope scope(log);
+    Bench b;
+    ASSERT_TRUE(b.rig);
+    ASSERT_TRUE(b.write("E17", 2));
+    ASSERT_TRUE(b.write("A1.01", 1000));
+    TestRun test(b.rig->access(), b.setup(upStep(3, 5, 0.2)));
+    const TestOutcome outcome = b.run(test);
+    ASSERT_EQ(outcome.end, TestEnd::Finished) << outcome.reason.toStdString();
+
+    const AuditLogContents read = readAuditLog(log.path());
+    ASSERT_TRUE(read.ok) << read.error.toStdString();
+    ASSERT_EQ(read.entries.size(), 3u); // 3 V, 5 V, then 1 V back
+    for (const AuditEntry &e : read.entries) {
+        EXPECT_EQ(e.row, QStringLiteral("A1.01"));
+        EXPECT_EQ(e.origin, QStringLiteral("workbench"));
+    }
+    EXPECT_EQ(read.entries[0].status, QStringLiteral("written"));
+    EXPECT_EQ(read.entries[0].newRaw, QStringLiteral("3000"));
+    EXPECT_EQ(read.entries[0].oldRaw, QStringLiteral("1000"));
+    EXPECT_EQ(read.entries[1].status, QStringLiteral("written"));
+    EXPECT_EQ(read.entries[1].newRaw, QStringLiteral("5000"));
+    EXPECT_EQ(read.entries[2].status, QStringLiteral("verified"));
+    EXPECT_EQ(read.entries[2].newRaw, QStringLiteral("1000"));
 }
 
 // A loaded machine may hold the test back longer than a level lasts: the level is still written

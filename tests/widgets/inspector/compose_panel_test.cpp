@@ -1,11 +1,14 @@
 // The composer: bytes equal the manuals', Send is disabled with a reason where the link
 // cannot carry the frame, and a sent frame's answer from the simulator arrives in the log.
 #include "hcs/worked_examples.h"
+#include "model/audit/audit_log.h"
+#include "model/audit/audit_reader.h"
 #include "sim_connection.h"
 #include "widgets/inspector/compose_panel.h"
 #include "widgets/inspector/frame_detail.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <gtest/gtest.h>
 
 using namespace vt;
@@ -117,6 +120,9 @@ TEST(ComposePanel, OffersASendableFrameDecodesTheAnswerAndNamesItsFields)
 
 TEST(ComposePanel, WritesAskFirst)
 {
+    QTemporaryDir logDir;
+    vt::model::AuditLog audit(QStringLiteral("valvetune"), QStringLiteral("test"), logDir.path());
+    const vt::model::AuditLog::Scope auditScope(audit);
     test::LoggedSim rig;
     ASSERT_TRUE(rig.open("dma-pn-v51"));
     ComposePanel panel;
@@ -145,6 +151,16 @@ TEST(ComposePanel, WritesAskFirst)
     ASSERT_TRUE(finished.wait(test::kWaitMs));
     EXPECT_EQ(asked.size(), 2);
     EXPECT_TRUE(finished.at(0).at(1).toBool()) << finished.at(0).at(0).toString().toStdString();
+    // The refused question sent nothing and logged nothing; the sent write is in the session log,
+    // as its bytes (no module was identified here, so no dictionary names the register).
+    const vt::model::AuditLogContents log = vt::model::readAuditLog(audit.path());
+    ASSERT_TRUE(log.ok) << log.error.toStdString();
+    ASSERT_EQ(log.entries.size(), 1u);
+    EXPECT_TRUE(log.entries[0].row.isEmpty());
+    EXPECT_TRUE(log.entries[0].newRaw.contains(QStringLiteral("00 30 03 E8")))
+        << log.entries[0].newRaw.toStdString(); // register 0x0030 (C1.07) = 1000
+    EXPECT_EQ(log.entries[0].status, QStringLiteral("written"));
+    EXPECT_EQ(log.entries[0].origin, QStringLiteral("compose"));
 }
 
 TEST(ComposePanel, GatewayTelegramGoesOutAsAPaddedNodeImage)

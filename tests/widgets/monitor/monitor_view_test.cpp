@@ -64,7 +64,7 @@ TEST(MonitorView, ParameterWriteAppearsAsAMarkerWithOldAndNewValue)
     item.before = *before;
     item.value = target;
     model::WriteJob job(rig->connection->access(), rig->module().address, *rig->module().dictionary,
-                        {item});
+                        {item}, model::AuditOrigin::Editor);
     QSignalSpy finished(&job, &model::WriteJob::finished);
     job.start();
     ASSERT_TRUE(finished.wait(kWaitMs));

@@ -1,11 +1,14 @@
 // The monitor's set value step: refused while E17 ≠ 2 with the manuals' reason, E17 set
 // on request, then the step written through WriteJob, read back and journalled.
 #include "actuator_answer.h"
+#include "model/audit/audit_log.h"
+#include "model/audit/audit_reader.h"
 #include "model/monitor/set_value_step.h"
 #include "sim_rig.h"
 #include "widgets/monitor/monitor_view.h"
 #include "widgets/monitor/step_control.h"
 
+#include <QTemporaryDir>
 #include <cmath>
 
 namespace vt::test {
@@ -49,6 +52,9 @@ TEST(SetValueStep, OffersTheSetValuesTheFamilysDictionaryNames)
 TEST(SetValueStep, RefusedWhileE17IsNotTwoThenWrittenAfterE17IsSet)
 {
     // A module at its factory defaults: the commissioned simulator already has E17 = 2.
+    QTemporaryDir logDir;
+    model::AuditLog audit(QStringLiteral("valvetune"), QStringLiteral("test"), logDir.path());
+    const model::AuditLog::Scope auditScope(audit);
     SimSetup setup;
     setup.family = "dma-pn-v51";
     setup.factory = true;
@@ -87,6 +93,16 @@ TEST(SetValueStep, RefusedWhileE17IsNotTwoThenWrittenAfterE17IsSet)
     EXPECT_EQ(dev::rawNumber(*items.front().before), 0.0);
     EXPECT_TRUE(written.front().at(2).toBool());
     EXPECT_EQ(rig->read("A1.01"), 1000.0);
+    // Both writes are in the session log under the monitor; the refused step sent nothing.
+    const model::AuditLogContents log = model::readAuditLog(audit.path());
+    ASSERT_TRUE(log.ok) << log.error.toStdString();
+    ASSERT_EQ(log.entries.size(), 2u);
+    EXPECT_EQ(log.entries[0].row, QStringLiteral("E17"));
+    EXPECT_EQ(log.entries[1].row, QStringLiteral("A1.01"));
+    for (const model::AuditEntry &e : log.entries) {
+        EXPECT_EQ(e.status, QStringLiteral("verified"));
+        EXPECT_EQ(e.origin, QStringLiteral("monitor"));
+    }
 }
 
 TEST(SetValueStep, OutOfRangeStepIsRefusedLocallyByWriteJob)

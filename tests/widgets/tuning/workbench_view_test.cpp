@@ -41,7 +41,8 @@ struct Bench
     {
         std::optional<model::Outcome> done;
         rig->access().write(rig->module().address, rig->row(name), dev::RawValue{raw},
-                            model::Priority::User, [&](const model::Outcome &o) { done = o; });
+                            model::Priority::User, std::nullopt,
+                            [&](const model::Outcome &o) { done = o; });
         const bool ok = test::waitFor(done) && done->status == model::OutcomeStatus::Ok;
         // DMA Profinet manual §3.4.1: the module takes the next EEPROM write after ~25 ms.
         test::spinFor(rig->module().dictionary->writePacingMs + 5);
