@@ -96,7 +96,7 @@ void MonitorScheduler::stop()
 
 void MonitorScheduler::arm(Channel &channel)
 {
-    if (!m_running || channel.inFlight)
+    if (!m_running || channel.inFlight || !m_accessAlive)
         return;
     const qint64 now = m_access.session().elapsedNs();
     const qint64 waitNs = std::max<qint64>(0, channel.nextDueNs - now);
@@ -106,7 +106,7 @@ void MonitorScheduler::arm(Channel &channel)
 void MonitorScheduler::poll(int module)
 {
     auto it = m_channels.find(module);
-    if (!m_running || it == m_channels.end())
+    if (!m_running || it == m_channels.end() || !m_accessAlive)
         return;
     Channel &channel = *it->second;
     if (channel.inFlight) {
@@ -136,7 +136,7 @@ void MonitorScheduler::poll(int module)
             Channel &ch = *found->second;
             ch.inFlight = false;
             ch.handle.reset();
-            // The connection is being destroyed (its session ends every read): nothing to poll.
+            // The connection is gone (its session ended every read): nothing to poll.
             if (!m_accessAlive)
                 return;
             const qint64 t = m_access.session().elapsedNs();

@@ -4,7 +4,6 @@
 #include "transports/byte_span.h"
 #include "transports/link.h"
 
-#include <QPointer>
 #include <QSignalBlocker>
 #include <utility>
 
@@ -65,11 +64,8 @@ Session::~Session()
         if (!pending)
             break;
         ++m_counters.requests;
-        const Outcome outcome{OutcomeStatus::Cancelled,
-                              {},
-                              pending->attempts,
-                              pending->sent,
-                              tr("Cancelled: the connection was closed")};
+        const Outcome outcome{
+            OutcomeStatus::Cancelled, {}, pending->attempts, pending->sent, tr("Cancelled")};
         const Completion done = std::move(pending->done);
         pending.reset();
         if (done)
@@ -374,15 +370,15 @@ void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
         // Inside submit()/cancel()/a link failure: the caller must not see its completion
         // before the call returns. Completions run from the event loop, in order.
         m_deferred.emplace_back(std::move(done), std::move(outcome));
-        if (!m_deliveryScheduled && !m_destroying) {
-            m_deliveryScheduled = true;
-            QTimer::singleShot(0, this, [this, self = QPointer<Session>(this)] {
-                m_deliveryScheduled = false;
-                // A completion may destroy the session (whose destructor delivers the rest).
-                while (self && !m_deferred.empty())
+        // One event per completion, as each was posted when it was decided: a completion that
+        // runs the event loop (a modal progress dialog) sees the next ones arrive inside it. A
+        // completion may destroy the session: its destructor delivers the rest, and the events
+        // still posted go with it.
+        if (!m_destroying)
+            QTimer::singleShot(0, this, [this] {
+                if (!m_deferred.empty())
                     deliverDeferred();
             });
-        }
         schedule();
         return;
     }
