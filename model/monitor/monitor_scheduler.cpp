@@ -2,6 +2,7 @@
 
 #include "dict/monitor_defaults.h"
 
+#include <QPointer>
 #include <algorithm>
 #include <cmath>
 
@@ -26,7 +27,7 @@ std::vector<const dev::ParamMeta *> defaultMonitorRows(const dev::Dictionary &di
 }
 
 MonitorScheduler::MonitorScheduler(DeviceAccess &access, QObject *parent)
-    : QObject(parent), m_access(access)
+    : QObject(parent), m_access(access), m_accessAlive(&access)
 {
     qRegisterMetaType<vt::model::MonitorSample>();
 }
@@ -95,7 +96,7 @@ void MonitorScheduler::stop()
 
 void MonitorScheduler::arm(Channel &channel)
 {
-    if (!m_running || channel.inFlight)
+    if (!m_running || channel.inFlight || !m_accessAlive)
         return;
     const qint64 now = m_access.session().elapsedNs();
     const qint64 waitNs = std::max<qint64>(0, channel.nextDueNs - now);
@@ -105,7 +106,7 @@ void MonitorScheduler::arm(Channel &channel)
 void MonitorScheduler::poll(int module)
 {
     auto it = m_channels.find(module);
-    if (!m_running || it == m_channels.end())
+    if (!m_running || it == m_channels.end() || !m_accessAlive)
         return;
     Channel &channel = *it->second;
     if (channel.inFlight) {
@@ -124,13 +125,20 @@ void MonitorScheduler::poll(int module)
     }
     channel.inFlight = true;
     channel.handle = m_access.read(
-        module, channel.rows, Priority::Monitor, [this, module](const ReadResult &result) {
+        module, channel.rows, Priority::Monitor,
+        [this, self = QPointer<MonitorScheduler>(this), module](const ReadResult &result) {
+            // The answer on the wire when the scheduler went still completes (cancelled).
+            if (!self)
+                return;
             auto found = m_channels.find(module);
             if (found == m_channels.end())
                 return;
             Channel &ch = *found->second;
             ch.inFlight = false;
             ch.handle.reset();
+            // The connection is gone (its session ended every read): nothing to poll.
+            if (!m_accessAlive)
+                return;
             const qint64 t = m_access.session().elapsedNs();
             if (result.values.size() == ch.rows.size() && !ch.rows.empty()) {
                 ++ch.samples;

@@ -3,14 +3,16 @@
 // actions go first, and reports each sample and the rate actually achieved. A poll is never
 // queued behind its own predecessor: when the link cannot keep up, samples are skipped and
 // the achieved rate says so. Owner: whoever polls — a MonitorSession for the monitor, the GUI's
-// Workspace for the editor's live display values; same thread as the DeviceAccess, which must
-// outlive it.
+// Workspace for the editor's live display values; same thread as the DeviceAccess. It may go
+// before the connection (its poll on the wire completes into nothing) or after it (the session's
+// end completes that poll cancelled, and nothing is polled any more; only destroy it then).
 #pragma once
 
 #include "model/session/device_access.h"
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 #include <deque>
 #include <map>
@@ -76,6 +78,7 @@ private:
     const Channel *find(int module) const;
 
     DeviceAccess &m_access;
+    QPointer<DeviceAccess> m_accessAlive; // null once the connection destroyed the access
     std::map<int, std::unique_ptr<Channel>> m_channels;
     bool m_running = false;
 };

@@ -33,7 +33,7 @@ public:
     // first module; polling starts only with start().
     void setConnection(Connection *connection, std::vector<ModuleInfo> modules);
     // Stops polling and forgets the connection; the recorded samples stay. Call it before the
-    // connection is destroyed (the scheduler cancels its read on the connection's session).
+    // connection is destroyed: connection() would dangle (the scheduler itself is safe either way).
     void clearConnection();
     Connection *connection() const { return m_connection; }
     const std::vector<ModuleInfo> &modules() const { return m_modules; }

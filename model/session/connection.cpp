@@ -105,9 +105,11 @@ Connection::Connection(ConnectionSpec spec, QObject *parent)
 
 Connection::~Connection()
 {
-    // The session and the access refer to the link: they go first.
-    m_access.reset();
+    // The session and the access refer to the link: they go first. The session before the
+    // access: the completions its end runs may still read or write through the access (what
+    // they submit then ends cancelled as well, session.h).
     m_session.reset();
+    m_access.reset();
     if (m_link) {
         m_closing = true;
         m_link->disconnect(this);

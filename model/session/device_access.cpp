@@ -27,6 +27,7 @@ struct ReadState
     std::map<const dev::ParamMeta *, dev::RawValue> got;
     std::map<const dev::ParamMeta *, std::pair<int, dev::LocalText>> warnings;
     std::vector<RowFailure> failures;
+    bool cancelled = false; // an exchange ended Cancelled (the handle, the session's end)
     int done = 0;
     int total = 0;
     std::function<void(const ReadResult &)> finished;
@@ -169,7 +170,7 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
     auto conclude = [state, handle] {
         handle->m_finished = true;
         ReadResult result;
-        result.cancelled = handle->m_cancelled;
+        result.cancelled = handle->m_cancelled || state->cancelled;
         for (const dev::ParamMeta *row : state->asked) {
             auto it = state->got.find(row);
             if (it == state->got.end())
@@ -205,7 +206,9 @@ DeviceAccess::read(int module, std::vector<const dev::ParamMeta *> rows, Priorit
                     }
                     if (image)
                         image->recordRead(module, answered);
-                } else if (outcome.status != OutcomeStatus::Cancelled) {
+                } else if (outcome.status == OutcomeStatus::Cancelled) {
+                    state->cancelled = true;
+                } else {
                     state->failures.push_back(RowFailure{rowsOfT, outcome});
                 }
                 // Which completion is the last is decided before the progress report: a

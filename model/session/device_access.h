@@ -64,7 +64,7 @@ struct ReadResult
 {
     std::vector<RowValue> values;     // in the order the rows were asked for
     std::vector<RowFailure> failures; // exchanges that failed, with their rows
-    bool cancelled = false;
+    bool cancelled = false;           // by the handle, or the session ended with the read pending
     bool complete() const { return failures.empty() && !cancelled; }
 };
 

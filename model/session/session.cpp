@@ -4,6 +4,7 @@
 #include "transports/byte_span.h"
 #include "transports/link.h"
 
+#include <QSignalBlocker>
 #include <utility>
 
 namespace vt::model {
@@ -46,7 +47,46 @@ Session::Session(link::Link *link, std::unique_ptr<dev::access::ProtocolAdapter>
     connect(m_link, &link::Link::failed, this, &Session::onLinkFailed);
 }
 
-Session::~Session() = default;
+Session::~Session()
+{
+    m_destroying = true;
+    const QSignalBlocker quiet(this);
+    m_timeout.stop();
+    m_backoff.stop();
+    m_cycle.stop();
+    disconnect(m_link, nullptr, this, nullptr);
+    // Completions may submit or cancel while this runs: loop until nothing is left.
+    for (;;) {
+        if (!m_deferred.empty()) {
+            deliverDeferred();
+            continue;
+        }
+        std::unique_ptr<Pending> pending = takeAnyPending();
+        if (!pending)
+            break;
+        ++m_counters.requests;
+        const Outcome outcome{
+            OutcomeStatus::Cancelled, {}, pending->attempts, pending->sent, tr("Cancelled")};
+        const Completion done = std::move(pending->done);
+        pending.reset();
+        if (done)
+            done(outcome);
+    }
+}
+
+std::unique_ptr<Session::Pending> Session::takeAnyPending()
+{
+    if (m_current)
+        return std::move(m_current);
+    for (auto *queue : {&m_user, &m_monitor}) {
+        if (!queue->empty()) {
+            auto pending = std::move(queue->front());
+            queue->pop_front();
+            return pending;
+        }
+    }
+    return nullptr;
+}
 
 bool Session::linkOpen() const
 {
@@ -107,7 +147,7 @@ void Session::cancelAll(Priority priority)
 
 void Session::schedule()
 {
-    if (m_current || m_startScheduled)
+    if (m_current || m_startScheduled || m_destroying)
         return;
     m_startScheduled = true;
     QTimer::singleShot(0, this, [this] {
@@ -118,7 +158,7 @@ void Session::schedule()
 
 void Session::startNext()
 {
-    if (m_current)
+    if (m_current || m_destroying)
         return;
     if (m_user.empty() && m_monitor.empty()) {
         emit idle();
@@ -330,9 +370,16 @@ void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
     if (m_apiDepth > 0) {
         // Inside submit()/cancel()/a link failure: the caller must not see its completion
         // before the call returns. Completions run from the event loop, in order.
-        if (done)
-            QTimer::singleShot(
-                0, this, [done = std::move(done), outcome = std::move(outcome)] { done(outcome); });
+        m_deferred.emplace_back(std::move(done), std::move(outcome));
+        // One event per completion, as each was posted when it was decided: a completion that
+        // runs the event loop (a modal progress dialog) sees the next ones arrive inside it. A
+        // completion may destroy the session: its destructor delivers the rest, and the events
+        // still posted go with it.
+        if (!m_destroying)
+            QTimer::singleShot(0, this, [this] {
+                if (!m_deferred.empty())
+                    deliverDeferred();
+            });
         schedule();
         return;
     }
@@ -341,6 +388,14 @@ void Session::finish(std::unique_ptr<Pending> pending, Outcome outcome)
     if (done)
         done(outcome);
     startNext();
+}
+
+void Session::deliverDeferred()
+{
+    auto [done, outcome] = std::move(m_deferred.front());
+    m_deferred.pop_front();
+    if (done)
+        done(outcome);
 }
 
 QString outcomeStatusText(OutcomeStatus status)

@@ -4,6 +4,18 @@
 // back-off, cancellable. Every frame in and out is reported for the telegram log.
 // Owner: whoever connects (app, CLI, tests); lives on the link's thread (the GUI thread) and is
 // used only from there. The link is not owned and must outlive the session.
+//
+// Every completion runs exactly once, also when the session is destroyed with requests pending:
+// ~Session() completes, before it returns and in this order, the completions already decided
+// but not yet delivered (with their outcome), the request on the wire, then the queued ones
+// (user before monitor), each with OutcomeStatus::Cancelled. Nothing is sent any more and no
+// signal is emitted from the destructor. The contract for whoever submits: a completion runs
+// inside ~Session(), so everything it touches must still be alive when the session is
+// destroyed. An owner that holds its session destroys it before the members its completions
+// use (declare the session last, or reset it first in the destructor); an object that may die
+// before the session guards its completions (QPointer) — the session cannot know who is gone.
+// A completion may submit() or cancel() during the destruction; what it submits is cancelled
+// the same way.
 #pragma once
 
 #include "access/transaction.h"
@@ -17,6 +29,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <utility>
 
 namespace vt::link {
 class Link;
@@ -120,6 +133,9 @@ private:
     void onLinkState(link::LinkState state);
     void onLinkFailed(const QString &reason);
     void finish(std::unique_ptr<Pending> pending, Outcome outcome);
+    void deliverDeferred();
+    // The next request to end when the session is destroyed: on the wire, user, monitor.
+    std::unique_ptr<Pending> takeAnyPending();
     void failEverything(OutcomeStatus status, const QString &reason);
 
     link::Link *m_link;
@@ -137,6 +153,11 @@ private:
     RequestId m_nextId = 1;
     SessionCounters m_counters;
     bool m_startScheduled = false;
+    // Completions decided inside submit()/cancel()/a link failure, delivered from the event loop
+    // (or by the destructor) in order.
+    std::deque<std::pair<Completion, Outcome>> m_deferred;
+    bool m_deliveryScheduled = false;
+    bool m_destroying = false;
     int m_apiDepth = 0; // > 0 inside submit()/cancel()/failEverything(): completions are deferred
 };
 

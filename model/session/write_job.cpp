@@ -266,8 +266,13 @@ void WriteJob::verifyItem(int index)
             next();
             return;
         }
-        const Outcome outcome =
-            result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        Outcome outcome = result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        if (result.cancelled && result.failures.empty()) // e.g. the session ended
+            outcome = Outcome{OutcomeStatus::Cancelled,
+                              {},
+                              0,
+                              false,
+                              outcomeStatusText(OutcomeStatus::Cancelled)};
         settle(index, WriteStatus::Written,
                said(QT_TR_NOOP("acknowledged; the read back failed (%1)")).arg(outcome.reason));
         if (outcome.status == OutcomeStatus::LinkLost || outcome.status == OutcomeStatus::Timeout ||
@@ -296,8 +301,13 @@ void WriteJob::probeItem(int index)
             next();
             return;
         }
-        const Outcome outcome =
-            result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        Outcome outcome = result.failures.empty() ? Outcome{} : result.failures.front().outcome;
+        if (result.cancelled && result.failures.empty()) // e.g. the session ended
+            outcome = Outcome{OutcomeStatus::Cancelled,
+                              {},
+                              0,
+                              false,
+                              outcomeStatusText(OutcomeStatus::Cancelled)};
         stopRemaining(outcome.reason); // it stays Uncertain
         done();
     });
