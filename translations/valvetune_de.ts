@@ -51,8 +51,8 @@
         <translation>ValveTune kann mit dieser Befehlszeile nicht starten:</translation>
     </message>
     <message>
-        <source>Run "valvetune --help" in a terminal for the options.</source>
-        <translation>"valvetune --help" in einem Terminal zeigt die Optionen.</translation>
+        <source>Run &quot;valvetune --help&quot; in a terminal for the options.</source>
+        <translation>&quot;valvetune --help&quot; in einem Terminal zeigt die Optionen.</translation>
     </message>
     <message>
         <source>Cannot open %1: %2</source>
@@ -133,14 +133,6 @@
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-<message>
-        <source>%1 names a signal or a set value that does not exist.</source>
-        <translation>%1 nennt ein Signal oder einen Sollwert, den es nicht gibt.</translation>
-    </message>
-    <message>
-        <source>%1 records %2, which %3 does not have.</source>
-        <translation>%1 zeichnet %2 auf, das %3 nicht hat.</translation>
     </message>
 </context>
 <context>
@@ -283,7 +275,7 @@
         <translation>Die Parameter enthalten ungespeicherte Änderungen. Zuerst speichern?</translation>
     </message>
     <message>
-        <source>New parameter set for %1 with the dictionary's defaults.</source>
+        <source>New parameter set for %1 with the dictionary&apos;s defaults.</source>
         <translation>Neuer Parametersatz für %1 mit den Vorgabewerten des Wörterbuchs.</translation>
     </message>
     <message>
@@ -315,12 +307,12 @@
         <translation>CSV-Dateien (*.csv);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>Exported %1 (separator ';', decimal comma)</source>
-        <translation>%1 exportiert (Trennzeichen ';', Dezimalkomma)</translation>
+        <source>Exported %1 (separator &apos;;&apos;, decimal comma)</source>
+        <translation>%1 exportiert (Trennzeichen &apos;;&apos;, Dezimalkomma)</translation>
     </message>
     <message>
-        <source>Exported %1 (separator ',', decimal point)</source>
-        <translation>%1 exportiert (Trennzeichen ',', Dezimalpunkt)</translation>
+        <source>Exported %1 (separator &apos;,&apos;, decimal point)</source>
+        <translation>%1 exportiert (Trennzeichen &apos;,&apos;, Dezimalpunkt)</translation>
     </message>
     <message>
         <source>Compare with File</source>
@@ -539,7 +531,7 @@
         <source>Commissioning Re&amp;port…</source>
         <translation>Inbetriebnahme&amp;protokoll…</translation>
     </message>
-<message>
+    <message>
         <source>Open Session &amp;Log Folder</source>
         <translation>Ordner der Sitzungs&amp;protokolle öffnen</translation>
     </message>
@@ -798,8 +790,8 @@
         <translation>Fehlerangabe: %1</translation>
     </message>
     <message>
-        <source>fault spec item '%1': %2</source>
-        <translation>Fehlerangabe, Eintrag '%1': %2</translation>
+        <source>fault spec item &apos;%1&apos;: %2</source>
+        <translation>Fehlerangabe, Eintrag &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -860,7 +852,7 @@
         <translation>%1 kann nicht geöffnet werden: %2 Baud unterstützt die Schnittstelle nicht.</translation>
     </message>
     <message>
-        <source>Cannot open %1: permission denied. Serial ports are for the members of the group %2: add your user to it with "sudo usermod -aG %2 $USER", then log out and log in again.</source>
+        <source>Cannot open %1: permission denied. Serial ports are for the members of the group %2: add your user to it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and log in again.</source>
         <translation>%1 kann nicht geöffnet werden: Zugriff verweigert. Serielle Schnittstellen dürfen nur Mitglieder der Gruppe %2 öffnen: Fügen Sie Ihren Benutzer mit „sudo usermod -aG %2 $USER“ hinzu, melden Sie sich dann ab und wieder an.</translation>
     </message>
 </context>
@@ -1154,7 +1146,7 @@
         <translation>Modus %1 gefunden, der Plan sieht Modus %2 vor.</translation>
     </message>
     <message>
-        <source>%1 does not exist on this module's software; not written.</source>
+        <source>%1 does not exist on this module&apos;s software; not written.</source>
         <translation>%1 gibt es in der Software dieses Moduls nicht; nicht geschrieben.</translation>
     </message>
     <message>
@@ -1206,7 +1198,7 @@
         <translation>Alle Module sind konfiguriert und antworten an ihrer Adresse.</translation>
     </message>
     <message>
-        <source>The node is not configured as planned; see the modules' notes.</source>
+        <source>The node is not configured as planned; see the modules&apos; notes.</source>
         <translation>Der Knoten ist nicht wie geplant konfiguriert; siehe die Hinweise zu den Modulen.</translation>
     </message>
 </context>
@@ -1229,8 +1221,8 @@
         <translation>%1 DMA-Module: CMD 15 erreicht nur E22 = 1 … 5. Module über 5 sind nur mit CMD 3 / CMD 6 erreichbar und können nicht Teil des zyklischen SPS-Abbilds sein (DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5). Für CMD 15 höchstens 5 Module planen.</translation>
     </message>
     <message>
-        <source>The product number "%1" does not decide the GSD file: HCS0220.GSD is assumed. Product numbers 5 xxx xxx x1 … x4 use hcs0220.gsd, 5 005 xxx x5 use hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</source>
-        <translation>Die Produktnummer "%1" legt die GSD-Datei nicht fest: HCS0220.GSD wird angenommen. Produktnummern 5 xxx xxx x1 … x4 verwenden hcs0220.gsd, 5 005 xxx x5 verwenden hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</translation>
+        <source>The product number &quot;%1&quot; does not decide the GSD file: HCS0220.GSD is assumed. Product numbers 5 xxx xxx x1 … x4 use hcs0220.gsd, 5 005 xxx x5 use hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</source>
+        <translation>Die Produktnummer &quot;%1&quot; legt die GSD-Datei nicht fest: HCS0220.GSD wird angenommen. Produktnummern 5 xxx xxx x1 … x4 verwenden hcs0220.gsd, 5 005 xxx x5 verwenden hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</translation>
     </message>
     <message>
         <source>No product number given: HCS0220.GSD is assumed. Product numbers 5 xxx xxx x1 … x4 use hcs0220.gsd, 5 005 xxx x5 use hcs0ea7.gsd (DMA Profibus Anleitung §6.1.1).</source>
@@ -1245,7 +1237,7 @@
         <translation>Modul %1 (%2): CAN-Slaves haben nur die Drehschalterstellungen 1 … 7 (OPAT-Handbuch §1.4, §3.1).</translation>
     </message>
     <message>
-        <source>Module %1 (%2): E22 = 0 switches the module's bus function off; the node cannot reach it.</source>
+        <source>Module %1 (%2): E22 = 0 switches the module&apos;s bus function off; the node cannot reach it.</source>
         <translation>Modul %1 (%2): E22 = 0 schaltet die Busfunktion des Moduls ab; der Knoten erreicht es nicht.</translation>
     </message>
     <message>
@@ -1257,19 +1249,19 @@
         <translation>Modul %1 (%2): CMD 15 erreicht nur E22 = 1 … 5; dieses Modul ist nur mit CMD 3 / CMD 6 erreichbar (DMA Profibus Anleitung §1.5, DMA-Profinet-Handbuch §1.5).</translation>
     </message>
     <message>
-        <source>Modules %1 share SADR %2: the red LED lights and the master reports exception 12 "two or more slaves have the same slave address" (OPAT manual §1.3.2, §3.3). Set a different rotary switch position.</source>
-        <translation>Module %1 haben dieselbe SADR %2: Die rote LED leuchtet und der Master meldet Exception 12 "zwei oder mehr Slaves haben dieselbe Adresse" (OPAT-Handbuch §1.3.2, §3.3). Anderen Drehschalter-Wert einstellen.</translation>
+        <source>Modules %1 share SADR %2: the red LED lights and the master reports exception 12 &quot;two or more slaves have the same slave address&quot; (OPAT manual §1.3.2, §3.3). Set a different rotary switch position.</source>
+        <translation>Module %1 haben dieselbe SADR %2: Die rote LED leuchtet und der Master meldet Exception 12 &quot;zwei oder mehr Slaves haben dieselbe Adresse&quot; (OPAT-Handbuch §1.3.2, §3.3). Anderen Drehschalter-Wert einstellen.</translation>
     </message>
     <message>
         <source>Modules %1 share E22 = %2: the node cannot tell them apart. Set E22 = 1 … n from left to right (DMA Profibus Anleitung §1.3, DMA Profinet manual §1.3).</source>
         <translation>Module %1 haben dasselbe E22 = %2: Der Knoten kann sie nicht unterscheiden. E22 = 1 … n von links nach rechts setzen (DMA Profibus Anleitung §1.3, DMA-Profinet-Handbuch §1.3).</translation>
     </message>
     <message>
-        <source>With %1 modules CMD 15 addresses %2 … %3; a module outside that range gets no set values and the node answers exception 8 "timeout slave, address wrong or not installed" (OPAT manual §3.3, DMA Profinet manual §4.3).</source>
-        <translation>Mit %1 Modulen adressiert CMD 15 %2 … %3; ein Modul außerhalb erhält keine Sollwerte und der Knoten antwortet mit Exception 8 "Timeout Slave, Adresse falsch oder nicht installiert" (OPAT-Handbuch §3.3, DMA-Profinet-Handbuch §4.3).</translation>
+        <source>With %1 modules CMD 15 addresses %2 … %3; a module outside that range gets no set values and the node answers exception 8 &quot;timeout slave, address wrong or not installed&quot; (OPAT manual §3.3, DMA Profinet manual §4.3).</source>
+        <translation>Mit %1 Modulen adressiert CMD 15 %2 … %3; ein Modul außerhalb erhält keine Sollwerte und der Knoten antwortet mit Exception 8 &quot;Timeout Slave, Adresse falsch oder nicht installiert&quot; (OPAT-Handbuch §3.3, DMA-Profinet-Handbuch §4.3).</translation>
     </message>
     <message>
-        <source>Set the slaves' rotary switches in rising, consecutive order beginning with 1 (OPAT manual §1.6).</source>
+        <source>Set the slaves&apos; rotary switches in rising, consecutive order beginning with 1 (OPAT manual §1.6).</source>
         <translation>Die Drehschalter der Slaves aufsteigend und lückenlos ab 1 einstellen (OPAT-Handbuch §1.6).</translation>
     </message>
     <message>
@@ -1285,12 +1277,12 @@
         <translation>Die SPS sendet SNUM = %1, der Knoten hat aber %2 Module (SNUM = %3).</translation>
     </message>
     <message>
-        <source>An SNUM outside %1 is answered with exception 7 "invalid number of connected slaves".</source>
-        <translation>Eine SNUM außerhalb %1 wird mit Exception 7 "ungültige Anzahl angeschlossener Slaves" beantwortet.</translation>
+        <source>An SNUM outside %1 is answered with exception 7 &quot;invalid number of connected slaves&quot;.</source>
+        <translation>Eine SNUM außerhalb %1 wird mit Exception 7 &quot;ungültige Anzahl angeschlossener Slaves&quot; beantwortet.</translation>
     </message>
     <message>
-        <source>The node then waits for modules that are not installed: exception 8 "timeout slave, address wrong or not installed".</source>
-        <translation>Der Knoten wartet dann auf nicht installierte Module: Exception 8 "Timeout Slave, Adresse falsch oder nicht installiert".</translation>
+        <source>The node then waits for modules that are not installed: exception 8 &quot;timeout slave, address wrong or not installed&quot;.</source>
+        <translation>Der Knoten wartet dann auf nicht installierte Module: Exception 8 &quot;Timeout Slave, Adresse falsch oder nicht installiert&quot;.</translation>
     </message>
     <message>
         <source>The modules beyond SNUM get no set values and never answer.</source>
@@ -1301,7 +1293,7 @@
         <translation>SNUM legt auch die Telegrammlänge fest (3 + 5 Byte je Modul, bis %1); ein zu kurzes GSD-Modul ergibt Exception 9 (OPAT-Handbuch §3.1, §3.3; DMA-Profinet-Handbuch §4.1).</translation>
     </message>
     <message>
-        <source>Module %1 (%2): software version not known; the layout of the manuals' worked examples is assumed. Scan the node to fill it in.</source>
+        <source>Module %1 (%2): software version not known; the layout of the manuals&apos; worked examples is assumed. Scan the node to fill it in.</source>
         <translation>Modul %1 (%2): Softwareversion unbekannt; das Layout der Beispiele der Handbücher wird angenommen. Den Knoten scannen, um sie einzutragen.</translation>
     </message>
     <message>
@@ -1313,7 +1305,7 @@
         <translation>Modul %1 (%2): Die Handbücher definieren kein CMD-15-Layout für Software V%3 im Modus %4.</translation>
     </message>
     <message>
-        <source>The modules run in different modes or software versions. Only the control-byte and status-word bits of each module's own mode apply; the PLC must read VALUE1/VALUE2 per SADR with that module's meaning (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
+        <source>The modules run in different modes or software versions. Only the control-byte and status-word bits of each module&apos;s own mode apply; the PLC must read VALUE1/VALUE2 per SADR with that module&apos;s meaning (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
         <translation>Die Module arbeiten in verschiedenen Modi oder Softwareversionen. Nur die Bits im Steuerbyte und Statuswort entsprechend dem Modus des jeweiligen Moduls sind zu beachten; die SPS muss VALUE1/VALUE2 je SADR mit der Bedeutung dieses Moduls lesen (DMA Profibus Anleitung §6, DMA-Profinet-Handbuch §5).</translation>
     </message>
     <message>
@@ -1361,8 +1353,8 @@
         <translation>Modul %1 (%2): E26 = 0 sperrt CAN; der Master erreicht die Slaves nicht (OPAT-Handbuch §7).</translation>
     </message>
     <message>
-        <source>The modules are given different CAN baud rates (E26): master and slaves must use the same rate or the master loses its slaves (error 7, exception 5 "timeout (CAN connection)").</source>
-        <translation>Die Module haben verschiedene CAN-Baudraten (E26): Master und Slaves müssen dieselbe Rate verwenden, sonst verliert der Master seine Slaves (Fehler 7, Exception 5 "Timeout (CAN-Verbindung)").</translation>
+        <source>The modules are given different CAN baud rates (E26): master and slaves must use the same rate or the master loses its slaves (error 7, exception 5 &quot;timeout (CAN connection)&quot;).</source>
+        <translation>Die Module haben verschiedene CAN-Baudraten (E26): Master und Slaves müssen dieselbe Rate verwenden, sonst verliert der Master seine Slaves (Fehler 7, Exception 5 &quot;Timeout (CAN-Verbindung)&quot;).</translation>
     </message>
     <message>
         <source>A CAN baud rate (E26) changed through PROFIBUS becomes active only after a reboot (OPAT manual §7).</source>
@@ -1381,7 +1373,7 @@
         <translation>Fehler</translation>
     </message>
     <message>
-        <source>Module %1 (address %2) is planned as V%3 in mode %4, but the connected node's module at that address runs V%5 in mode %6. The plan's options and the PLC image would not fit it; scan the node or change the plan.</source>
+        <source>Module %1 (address %2) is planned as V%3 in mode %4, but the connected node&apos;s module at that address runs V%5 in mode %6. The plan&apos;s options and the PLC image would not fit it; scan the node or change the plan.</source>
         <translation>Modul %1 (Adresse %2) ist als V%3 in Modus %4 geplant, aber das Modul des angeschlossenen Knotens an dieser Adresse läuft mit V%5 in Modus %6. Die Optionen des Plans und das SPS-Abbild passen nicht dazu; scannen Sie den Knoten oder ändern Sie den Plan.</translation>
     </message>
     <message>
@@ -1610,7 +1602,7 @@
         <translation>Bits je Modul</translation>
     </message>
     <message>
-        <source>Only the bits of each module's own mode apply (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
+        <source>Only the bits of each module&apos;s own mode apply (DMA Profibus Anleitung §6, DMA Profinet manual §5).</source>
         <translation>Nur die Bits entsprechend dem Modus des jeweiligen Moduls gelten (DMA Profibus Anleitung §6, DMA-Profinet-Handbuch §5).</translation>
     </message>
     <message>
@@ -1995,7 +1987,7 @@
         <translation>E24 = 126: Der PROFIBUS-Master vergibt die Adresse nach dem nächsten Einschalten über den Bus; sie erscheint danach in E24.</translation>
     </message>
     <message>
-        <source>E24 = %1: the node's PROFIBUS address is %1; enter the same address in the PLC's hardware configuration.</source>
+        <source>E24 = %1: the node&apos;s PROFIBUS address is %1; enter the same address in the PLC&apos;s hardware configuration.</source>
         <translation>E24 = %1: Die PROFIBUS-Adresse des Knotens ist %1; dieselbe Adresse in der Hardware-Konfiguration der SPS eintragen.</translation>
     </message>
     <message>
@@ -2125,7 +2117,7 @@
         <translation>Modul %1: das Dokument ist für %2, das Gerät ist %3. Zeilen, die für das Gerät nicht gelten, bleiben erhalten, werden aber nicht geschrieben.</translation>
     </message>
     <message>
-        <source>Module %1 of the document is %2, the node's module %1 is %3: not paired, it stays offline.</source>
+        <source>Module %1 of the document is %2, the node&apos;s module %1 is %3: not paired, it stays offline.</source>
         <translation>Modul %1 des Dokuments ist %2, Modul %1 des Knotens ist %3: nicht zugeordnet, es bleibt offline.</translation>
     </message>
     <message>
@@ -2206,7 +2198,7 @@
         <translation>Die Anzeigeskalierung hängt von der Anlage ab; %1 ist ein typischer Wert.</translation>
     </message>
     <message>
-        <source>Not active for this module's version and mode.</source>
+        <source>Not active for this module&apos;s version and mode.</source>
         <translation>Für Version und Modus dieses Moduls nicht aktiv.</translation>
     </message>
     <message>
@@ -2386,7 +2378,7 @@
         <translation>Der SPS-Prüfstand braucht eine Knotenabbild-Verbindung.</translation>
     </message>
     <message>
-        <source>The CMD 15 telegram for %1 modules does not fit the node's output image.</source>
+        <source>The CMD 15 telegram for %1 modules does not fit the node&apos;s output image.</source>
         <translation>Das CMD-15-Telegramm für %1 Module passt nicht in das Ausgangsabbild des Knotens.</translation>
     </message>
 </context>
@@ -2850,7 +2842,7 @@
         <translation>Seite %1 von %2</translation>
     </message>
     <message>
-        <source>%1: the report's file name must end in .pdf, .html or .json.</source>
+        <source>%1: the report&apos;s file name must end in .pdf, .html or .json.</source>
         <translation>%1: Der Dateiname des Protokolls muss auf .pdf, .html oder .json enden.</translation>
     </message>
     <message>
@@ -2949,7 +2941,7 @@
         <translation>%1 Spalten erwartet</translation>
     </message>
     <message>
-        <source>'%1' is not a time</source>
+        <source>&apos;%1&apos; is not a time</source>
         <translation>„%1“ ist keine Zeitangabe</translation>
     </message>
     <message>
@@ -2961,7 +2953,7 @@
         <translation>die Zeit läuft rückwärts</translation>
     </message>
     <message>
-        <source>'%1' is not a number</source>
+        <source>&apos;%1&apos; is not a number</source>
         <translation>„%1“ ist keine Zahl</translation>
     </message>
 </context>
@@ -3061,11 +3053,11 @@
 <context>
     <name>vt::model::SimEndpoint</name>
     <message>
-        <source>expected FAMILY or FAMILY:MODULES, got '%1'</source>
+        <source>expected FAMILY or FAMILY:MODULES, got &apos;%1&apos;</source>
         <translation>erwartet FAMILIE oder FAMILIE:MODULE, erhalten „%1“</translation>
     </message>
     <message>
-        <source>module count '%1' is not 1..32</source>
+        <source>module count &apos;%1&apos; is not 1..32</source>
         <translation>Modulanzahl „%1“ liegt nicht in 1..32</translation>
     </message>
     <message>
@@ -3073,7 +3065,7 @@
         <translation>die eingebauten Wörterbücher lassen sich nicht laden</translation>
     </message>
     <message>
-        <source>unknown device family '%1'</source>
+        <source>unknown device family &apos;%1&apos;</source>
         <translation>unbekannte Gerätefamilie „%1“</translation>
     </message>
     <message>
@@ -3081,7 +3073,7 @@
         <translation>%1 spricht nur HART</translation>
     </message>
     <message>
-        <source>the simulator does not serve %1 over '%2'</source>
+        <source>the simulator does not serve %1 over &apos;%2&apos;</source>
         <translation>der Simulator bedient %1 nicht über „%2“</translation>
     </message>
     <message>
@@ -3452,8 +3444,8 @@ Die ursprünglichen Werte zurückschreiben?</translation>
         <translation>Geben Sie die CAN-Schnittstelle ein (can0, vcan0 …).</translation>
     </message>
     <message>
-        <source>"%1" is not a network interface name.</source>
-        <translation>"%1" ist kein Name einer Netzwerkschnittstelle.</translation>
+        <source>&quot;%1&quot; is not a network interface name.</source>
+        <translation>&quot;%1&quot; ist kein Name einer Netzwerkschnittstelle.</translation>
     </message>
     <message>
         <source>CANopen node id %1 is outside %2..%3.</source>
@@ -3491,7 +3483,7 @@ Die ursprünglichen Werte zurückschreiben?</translation>
         <translation>Monitor-Kanäle</translation>
     </message>
     <message>
-        <source>Tick the live values to plot. Each module is polled in one request per sample, so more modules share the link's rate; changing a module's channels starts its recording anew.</source>
+        <source>Tick the live values to plot. Each module is polled in one request per sample, so more modules share the link&apos;s rate; changing a module&apos;s channels starts its recording anew.</source>
         <translation>Kreuzen Sie die Live-Werte an, die angezeigt werden sollen. Jedes Modul wird mit einer Anfrage je Messwert abgefragt, mehrere Module teilen sich also die Rate der Verbindung; wenn Sie die Kanäle eines Moduls ändern, beginnt seine Aufzeichnung neu.</translation>
     </message>
     <message>
@@ -3522,10 +3514,10 @@ Die ursprünglichen Werte zurückschreiben?</translation>
         <translation>Keine Unterschiede.</translation>
     </message>
     <message numerus="yes">
-        <source>%n parameter(s) differ. Tick "Take other" for each value to take into this document.</source>
+        <source>%n parameter(s) differ. Tick &quot;Take other&quot; for each value to take into this document.</source>
         <translation>
-            <numerusform>%n Parameter weicht ab. Kreuzen Sie "Übernehmen" bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
-            <numerusform>%n Parameter weichen ab. Kreuzen Sie "Übernehmen" bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
+            <numerusform>%n Parameter weicht ab. Kreuzen Sie &quot;Übernehmen&quot; bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
+            <numerusform>%n Parameter weichen ab. Kreuzen Sie &quot;Übernehmen&quot; bei jedem Wert an, der in dieses Dokument übernommen werden soll.</numerusform>
         </translation>
     </message>
     <message>
@@ -3570,8 +3562,8 @@ Die ursprünglichen Werte zurückschreiben?</translation>
         <translation>Daten: nicht hexadezimal</translation>
     </message>
     <message>
-        <source>Modules: "CTRL,VALUE1,VALUE2" per module (0..255, two -32768..32767), separated by ";"</source>
-        <translation>Module: "CTRL,VALUE1,VALUE2" je Modul (0..255, zweimal -32768..32767), getrennt durch ";"</translation>
+        <source>Modules: &quot;CTRL,VALUE1,VALUE2&quot; per module (0..255, two -32768..32767), separated by &quot;;&quot;</source>
+        <translation>Module: &quot;CTRL,VALUE1,VALUE2&quot; je Modul (0..255, zweimal -32768..32767), getrennt durch &quot;;&quot;</translation>
     </message>
     <message>
         <source>Nothing to send: the fields do not make a frame.</source>
@@ -3792,7 +3784,7 @@ Send it?</source>
 Senden?</translation>
     </message>
     <message>
-        <source>No parameter of the module's dictionary has this address: the editor's Device column cannot follow it. Read the device again.</source>
+        <source>No parameter of the module&apos;s dictionary has this address: the editor&apos;s Device column cannot follow it. Read the device again.</source>
         <translation>Kein Parameter im Wörterbuch des Moduls hat diese Adresse: die Gerätespalte des Editors kann nicht folgen. Gerät erneut lesen.</translation>
     </message>
     <message>
@@ -3818,8 +3810,8 @@ Senden?</translation>
 <context>
     <name>vt::ui::DecodePanel</name>
     <message>
-        <source>Paste or type a frame as hex ("23 00 06", "0x23,0x00", "230006") or a CAN frame as "605#40416000".</source>
-        <translation>Fügen Sie ein Telegramm als Hex ein oder geben Sie es ein ("23 00 06", "0x23,0x00", "230006"), ein CAN-Telegramm als "605#40416000".</translation>
+        <source>Paste or type a frame as hex (&quot;23 00 06&quot;, &quot;0x23,0x00&quot;, &quot;230006&quot;) or a CAN frame as &quot;605#40416000&quot;.</source>
+        <translation>Fügen Sie ein Telegramm als Hex ein oder geben Sie es ein (&quot;23 00 06&quot;, &quot;0x23,0x00&quot;, &quot;230006&quot;), ein CAN-Telegramm als &quot;605#40416000&quot;.</translation>
     </message>
     <message>
         <source>Too long: at most %1 characters.</source>
@@ -3911,7 +3903,7 @@ Senden?</translation>
         <translation>A&amp;usgangsabbild ab Register:</translation>
     </message>
     <message>
-        <source>First register of the ED1's output image (PKW request and PZD, 7 registers) in the gateway's map; written with FC 16.</source>
+        <source>First register of the ED1&apos;s output image (PKW request and PZD, 7 registers) in the gateway&apos;s map; written with FC 16.</source>
         <translation>Erstes Register des Ausgangsabbilds der ED1 (PKW-Auftrag und PZD, 7 Register) in der Zuordnung des Gateways; geschrieben mit FC 16.</translation>
     </message>
     <message>
@@ -3919,7 +3911,7 @@ Senden?</translation>
         <translation>E&amp;ingangsabbild ab Register:</translation>
     </message>
     <message>
-        <source>First register of the ED1's input image (PKW response and PZD, 7 registers) in the gateway's map.</source>
+        <source>First register of the ED1&apos;s input image (PKW response and PZD, 7 registers) in the gateway&apos;s map.</source>
         <translation>Erstes Register des Eingangsabbilds der ED1 (PKW-Antwort und PZD, 7 Register) in der Zuordnung des Gateways.</translation>
     </message>
     <message>
@@ -3951,7 +3943,7 @@ Senden?</translation>
         <translation>32-Bit-PZD-&amp;Werte:</translation>
     </message>
     <message>
-        <source>High word first (the manual's examples)</source>
+        <source>High word first (the manual&apos;s examples)</source>
         <translation>High-Wort zuerst (Beispiele des Handbuchs)</translation>
     </message>
     <message>
@@ -3963,7 +3955,7 @@ Senden?</translation>
         <translation>PKW-&amp;IND in:</translation>
     </message>
     <message>
-        <source>Byte 2 (the manual's example)</source>
+        <source>Byte 2 (the manual&apos;s example)</source>
         <translation>Byte 2 (Beispiel des Handbuchs)</translation>
     </message>
     <message>
@@ -4006,7 +3998,7 @@ Senden?</translation>
         <translation>Nummer 1, 2, 3 … von links</translation>
     </message>
     <message>
-        <source>Set the master's PROFIBUS address E24 to</source>
+        <source>Set the master&apos;s PROFIBUS address E24 to</source>
         <translation>PROFIBUS-Adresse E24 des Masters setzen auf</translation>
     </message>
     <message>
@@ -4045,7 +4037,7 @@ Senden?</translation>
         <translation>Offline-Planung: Es ist kein Knoten verbunden, daher wird nichts geschrieben. „Weiter“ führt zur SPS-Konfiguration.</translation>
     </message>
     <message>
-        <source>Writes each module's address and options (range-checked, read back), then identifies every planned address. Connection: %1</source>
+        <source>Writes each module&apos;s address and options (range-checked, read back), then identifies every planned address. Connection: %1</source>
         <translation>Schreibt Adresse und Optionen jedes Moduls (bereichsgeprüft, zurückgelesen) und identifiziert dann jede geplante Adresse. Verbindung: %1</translation>
     </message>
     <message>
@@ -4085,7 +4077,7 @@ Senden?</translation>
         <translation>Schreibvorgänge und Hinweise</translation>
     </message>
     <message>
-        <source>Module at address %1: the plan's options, then address %2</source>
+        <source>Module at address %1: the plan&apos;s options, then address %2</source>
         <translation>Modul an Adresse %1: die Optionen des Plans, dann Adresse %2</translation>
     </message>
 </context>
@@ -4111,7 +4103,7 @@ Senden?</translation>
         <translation>Gesendete Telegramme %1, Antworten %2, veraltet %3, Ausnahmen %4, keine Antwort %5; TADR %6</translation>
     </message>
     <message>
-        <source>Sends CMD 15 to every module with the values below, TADR changing every telegram, and shows each module's answer as the node multiplexes them (DMA Profinet manual §4.2, OPAT manual §3.2).</source>
+        <source>Sends CMD 15 to every module with the values below, TADR changing every telegram, and shows each module&apos;s answer as the node multiplexes them (DMA Profinet manual §4.2, OPAT manual §3.2).</source>
         <translation>Sendet CMD 15 mit den Werten unten an jedes Modul, mit wechselnder TADR in jedem Telegramm, und zeigt die Antwort jedes Moduls, wie der Knoten sie multiplext (DMA-Profinet-Handbuch §4.2, OPAT-Handbuch §3.2).</translation>
     </message>
     <message>
@@ -4167,15 +4159,15 @@ Senden?</translation>
         <translation>Zyklus:</translation>
     </message>
     <message>
-        <source>Connect the node's fieldbus gateway over TCP with the protocol "node-image" (Device ▸ Connect…), or the simulator with the protocol "node-image".</source>
-        <translation>Verbinden Sie das Feldbus-Gateway des Knotens über TCP mit dem Protokoll "node-image" (Gerät ▸ Verbinden…) oder den Simulator mit dem Protokoll "node-image".</translation>
+        <source>Connect the node&apos;s fieldbus gateway over TCP with the protocol &quot;node-image&quot; (Device ▸ Connect…), or the simulator with the protocol &quot;node-image&quot;.</source>
+        <translation>Verbinden Sie das Feldbus-Gateway des Knotens über TCP mit dem Protokoll &quot;node-image&quot; (Gerät ▸ Verbinden…) oder den Simulator mit dem Protokoll &quot;node-image&quot;.</translation>
     </message>
     <message>
         <source>Not available: no node is connected.</source>
         <translation>Nicht verfügbar: Kein Knoten ist verbunden.</translation>
     </message>
     <message>
-        <source>Not available: the connection speaks %1, and the test bench needs the node's cyclic CMD 15 image.</source>
+        <source>Not available: the connection speaks %1, and the test bench needs the node&apos;s cyclic CMD 15 image.</source>
         <translation>Nicht verfügbar: Die Verbindung spricht %1, der Prüfstand braucht aber das zyklische CMD-15-Abbild des Knotens.</translation>
     </message>
 </context>
@@ -4313,7 +4305,7 @@ Senden?</translation>
         <translation>Der OPAT-Master trägt die PROFIBUS-Schnittstelle (SADR 0) und steuert bis zu sieben OPAT-CAN-Slaves (SADR 1 bis 7 per Drehschalter). Ein CMD-15-Telegramm erreicht alle acht. (OPAT-Handbuch §1.4, §3)</translation>
     </message>
     <message>
-        <source>DMA-2 modules behind a PROFIBUS node module; each module answers to its E22. CMD 15 reaches E22 = 1 to 5. The node's product number decides the GSD file. (DMA Profibus Anleitung §1.3, §4–5)</source>
+        <source>DMA-2 modules behind a PROFIBUS node module; each module answers to its E22. CMD 15 reaches E22 = 1 to 5. The node&apos;s product number decides the GSD file. (DMA Profibus Anleitung §1.3, §4–5)</source>
         <translation>DMA-2-Module hinter einem PROFIBUS-Knotenmodul; jedes Modul antwortet auf seine E22. CMD 15 erreicht E22 = 1 bis 5. Die Produktnummer des Knotens bestimmt die GSD-Datei. (DMA Profibus Anleitung §1.3, §4–5)</translation>
     </message>
     <message>
@@ -4571,7 +4563,7 @@ Senden?</translation>
         <translation>HART</translation>
     </message>
     <message>
-        <source>Choose the HART modem's serial port or type its path.</source>
+        <source>Choose the HART modem&apos;s serial port or type its path.</source>
         <translation>Wählen Sie die serielle Schnittstelle des HART-Modems oder geben Sie ihren Pfad ein.</translation>
     </message>
     <message>
@@ -4704,7 +4696,7 @@ Senden?</translation>
 <context>
     <name>vt::ui::LCurveEditor</name>
     <message>
-        <source>Drag a point or type its coordinates. Input x must rise from point to point; grey coordinates are fixed by the device. Whether the module applies the curve depends on the branch's Linearization parameter (C1.02 / C2.02).</source>
+        <source>Drag a point or type its coordinates. Input x must rise from point to point; grey coordinates are fixed by the device. Whether the module applies the curve depends on the branch&apos;s Linearization parameter (C1.02 / C2.02).</source>
         <translation>Ziehen Sie einen Punkt oder geben Sie seine Koordinaten ein. Der Eingang x muss von Punkt zu Punkt steigen; graue Koordinaten sind vom Gerät vorgegeben. Ob das Modul die Kennlinie anwendet, hängt vom Parameter Linearisierung des Zweigs ab (C1.02 / C2.02).</translation>
     </message>
     <message>
@@ -4793,10 +4785,10 @@ Senden?</translation>
         <translation>Modul %1 (%2): %3</translation>
     </message>
     <message numerus="yes">
-        <source>Module %1: family "%2" is not known to this version; its %n value(s) are kept and saved unchanged.</source>
+        <source>Module %1: family &quot;%2&quot; is not known to this version; its %n value(s) are kept and saved unchanged.</source>
         <translation>
-            <numerusform>Modul %1: Die Familie "%2" ist dieser Version nicht bekannt; der %n Wert des Moduls wird beibehalten und unverändert gespeichert.</numerusform>
-            <numerusform>Modul %1: Die Familie "%2" ist dieser Version nicht bekannt; die %n Werte des Moduls werden beibehalten und unverändert gespeichert.</numerusform>
+            <numerusform>Modul %1: Die Familie &quot;%2&quot; ist dieser Version nicht bekannt; der %n Wert des Moduls wird beibehalten und unverändert gespeichert.</numerusform>
+            <numerusform>Modul %1: Die Familie &quot;%2&quot; ist dieser Version nicht bekannt; die %n Werte des Moduls werden beibehalten und unverändert gespeichert.</numerusform>
         </translation>
     </message>
     <message>
@@ -4969,7 +4961,7 @@ Senden?</translation>
         <translation>Adresse %1 (V%2)</translation>
     </message>
     <message numerus="yes">
-        <source>%n module(s): %1. Values start at the dictionary's defaults.</source>
+        <source>%n module(s): %1. Values start at the dictionary&apos;s defaults.</source>
         <translation>
             <numerusform>%n Modul: %1. Die Werte beginnen bei den Vorgabewerten des Wörterbuchs.</numerusform>
             <numerusform>%n Module: %1. Die Werte beginnen bei den Vorgabewerten des Wörterbuchs.</numerusform>
@@ -5379,7 +5371,7 @@ Senden?</translation>
         <translation>Stopp</translation>
     </message>
     <message>
-        <source>A reference keeps the module's settings and its responses to these tests in one file; comparing repeats the tests.</source>
+        <source>A reference keeps the module&apos;s settings and its responses to these tests in one file; comparing repeats the tests.</source>
         <translation>Eine Referenz hält die Einstellungen des Moduls und seine Antworten auf diese Tests in einer Datei fest; ein Vergleich wiederholt die Tests.</translation>
     </message>
 </context>
@@ -5472,6 +5464,10 @@ Senden?</translation>
     <message>
         <source>commissioning-report.%1</source>
         <translation>inbetriebnahmeprotokoll.%1</translation>
+    </message>
+    <message>
+        <source>Drift against the reference fingerprint %1</source>
+        <translation>Drift gegenüber dem Referenz-Fingerabdruck %1</translation>
     </message>
 </context>
 <context>
@@ -5709,7 +5705,7 @@ Senden?</translation>
         <translation>Modul&amp;adresse:</translation>
     </message>
     <message>
-        <source>Modbus unit: the module's address on an RS485 line (E22, DIP switches); 1 on a point-to-point line</source>
+        <source>Modbus unit: the module&apos;s address on an RS485 line (E22, DIP switches); 1 on a point-to-point line</source>
         <translation>Modbus-Unit: die Adresse des Moduls an einer RS485-Leitung (E22, DIP-Schalter); 1 bei einer Punkt-zu-Punkt-Verbindung</translation>
     </message>
     <message>
@@ -5984,8 +5980,8 @@ Senden?</translation>
         <translation>Geben Sie den Hostnamen oder die IP-Adresse des Gateways ein.</translation>
     </message>
     <message>
-        <source>A host name has no spaces: "%1".</source>
-        <translation>Ein Hostname enthält keine Leerzeichen: "%1".</translation>
+        <source>A host name has no spaces: &quot;%1&quot;.</source>
+        <translation>Ein Hostname enthält keine Leerzeichen: &quot;%1&quot;.</translation>
     </message>
     <message>
         <source>Port 0 cannot be connected to; Modbus TCP uses %1.</source>
@@ -6032,7 +6028,7 @@ Senden?</translation>
         <translation>Wandfluh ED1: PROFIBUS-Abbild (PKW + PZD, zyklisch)</translation>
     </message>
     <message>
-        <source>Modbus unit / SADR of the module; 0 is the OPAT master; for the ED1's gateway its Modbus unit</source>
+        <source>Modbus unit / SADR of the module; 0 is the OPAT master; for the ED1&apos;s gateway its Modbus unit</source>
         <translation>Modbus-Unit / SADR des Moduls; 0 ist der OPAT-Master; beim Gateway der ED1 dessen Modbus-Unit</translation>
     </message>
 </context>
@@ -6174,7 +6170,7 @@ Senden?</translation>
         <translation>Verfahrfenster</translation>
     </message>
     <message>
-        <source>Stop the test when the actual value leaves the signal's range by more than this.</source>
+        <source>Stop the test when the actual value leaves the signal&apos;s range by more than this.</source>
         <translation>Den Test stoppen, wenn der Istwert den Bereich des Signals um mehr als diesen Wert verlässt.</translation>
     </message>
     <message>

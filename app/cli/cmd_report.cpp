@@ -1,7 +1,10 @@
 // valvetune-cli report: the commissioning report (docs/REPORT.md) of a whole node read now, or of
 // a parameter file offline, as PDF, HTML or JSON by the --out file's suffix:
-//   report CONNECTION --out FILE [--reference FILE.vtpar] [--run RUNFILE]... [header options]
-//   report --file FILE.vtpar --out FILE [--reference …] [--run …]... [header options]
+//   report CONNECTION --out FILE [--reference FILE.vtpar] [--run RUNFILE]...
+//          [--session-log FILE.jsonl] [header options]
+//   report --file FILE.vtpar --out FILE [--reference …] [--run …]... [--session-log …] [header …]
+// The write log comes from a session log (model/audit) named by --session-log: the writes of
+// another valvetune or valvetune-cli session, also one that crashed or lost its link.
 // The header options (--customer, --machine, --axis, --operator, --comment) fill the report's
 // header. Rows that could not be read are listed and make the exit code 1; the report still
 // holds what was read. Needs a QGuiApplication (fonts, plots): main() makes one for this command.
@@ -10,6 +13,7 @@
 #include "dict/dictionary_loader.h"
 #include "model/params/param_file_io.h"
 #include "model/report/report_render.h"
+#include "model/report/report_writes.h"
 #include "node_read.h"
 
 #include <QGuiApplication>
@@ -22,14 +26,16 @@ namespace {
 const char kName[] = "report";
 const char kSynopsis[] =
     "report (CONNECTION | --file FILE.vtpar) --out FILE.pdf|.html|.json\n"
-    "       [--reference FILE.vtpar] [--run RUNFILE]... [--customer TEXT] [--machine TEXT]\n"
-    "       [--axis TEXT] [--operator TEXT] [--comment TEXT] [--lang en|de]";
+    "       [--reference FILE.vtpar] [--run RUNFILE]... [--session-log FILE.jsonl]\n"
+    "       [--customer TEXT] [--machine TEXT] [--axis TEXT] [--operator TEXT] [--comment TEXT]\n"
+    "       [--lang en|de]";
 
 struct ReportOptions
 {
     QString out;
     std::optional<QString> reference;
     QStringList runs;
+    std::optional<QString> sessionLog; // the write log: a session log of valvetune(-cli)
     model::ReportHeader header;
 };
 
@@ -42,6 +48,7 @@ std::optional<ReportOptions> takeReportOptions(QStringList &args, Context &ctx, 
     o.reference = takeOption(args, QStringLiteral("--reference"), &missing);
     while (const auto run = takeOption(args, QStringLiteral("--run"), &missing))
         o.runs << *run;
+    o.sessionLog = takeOption(args, QStringLiteral("--session-log"), &missing);
     const auto text = [&](const char *name) {
         return takeOption(args, QLatin1String(name), &missing).value_or(QString());
     };
@@ -63,8 +70,8 @@ std::optional<ReportOptions> takeReportOptions(QStringList &args, Context &ctx, 
     return o;
 }
 
-// The reference file and the runs named on the command line, into `input`; false after printing
-// why one could not be read (*code = 2).
+// The reference file, the runs and the session log named on the command line, into `input`; false
+// after printing why one could not be read (*code = 2).
 bool loadExtras(const ReportOptions &o, const dev::DictionarySet &dictionaries, dev::Language lang,
                 model::ReportInput &input, Context &ctx, int *code)
 {
@@ -85,6 +92,21 @@ bool loadExtras(const ReportOptions &o, const dev::DictionarySet &dictionaries, 
             return false;
         }
         input.runs.push_back(std::move(*run));
+    }
+    if (o.sessionLog) {
+        const model::AuditLogContents log = model::readAuditLog(*o.sessionLog);
+        if (!log.ok) {
+            *code = ctx.fail(kExitUsage, str(*o.sessionLog) + ": " + str(log.error));
+            return false;
+        }
+        if (log.truncatedTail || log.skipped > 0)
+            ctx.err << "valvetune-cli: " << str(*o.sessionLog) << ": " << log.skipped
+                    << " unreadable line(s)"
+                    << (log.truncatedTail ? ", the last line cut (the program was stopped "
+                                            "while writing it)"
+                                          : "")
+                    << "; the report holds the " << log.entries.size() << " writes read\n";
+        input.writes = model::reportWrites(log);
     }
     return true;
 }

@@ -125,8 +125,9 @@ _valvetune_cli()
             [[ $prev == --direction ]] && words="up down both"
             ;;
         report)
-            options="$connection --out --file --reference --run --customer --machine --axis \
---operator --comment"
+            options="$connection --out --file --reference --run --session-log --customer --machine \
+--axis --operator --comment"
+            ;;
         reference)
             options="$connection --yes --rate --window --out --centre --amplitude --hold --sweep \
 --from-hz --to-hz --points-per-decade --branch --rise-time --overshoot --settling --steady-state \

@@ -68,7 +68,6 @@ MainWindow::MainWindow(AppSettings &settings, Language &language, QWidget *paren
     createMenus();
     createDocks();
     m_report = new ReportController(*m_workspace, m_language, *m_workbench, this);
-    connect(m_device, &DeviceController::written, m_report, &ReportController::recordWrites);
     connect(m_reportAction, &QAction::triggered, this, [this] { m_report->openDialog(this); });
     m_quitController = new QuitController(*m_workspace, *m_files, *m_device, m_workbench,
                                           m_monitor->stepControl(), this);

@@ -3,14 +3,19 @@
 #include "app/i18n/translation.h"
 #include "files/file_rows.h"
 #include "language.h"
+#include "model/audit/audit_log.h"
 #include "model/params/param_file_io.h"
 #include "model/params/parameter_tree_model.h"
+#include "model/report/report_drift.h"
 #include "model/report/report_render.h"
+#include "model/report/report_writes.h"
 #include "widgets/report/report_dialog.h"
+#include "widgets/tuning/reference_panel.h"
 #include "widgets/tuning/workbench_view.h"
 #include "workspace.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QLocale>
 #include <QTranslator>
 #include <memory>
@@ -70,12 +75,6 @@ private:
     std::unique_ptr<SourceWords> m_source;
 };
 
-QString text(const dev::ParamMeta &row, const std::optional<dev::RawValue> &value,
-             dev::Language lang)
-{
-    return value ? model::formatRaw(row, *value, lang) : QString();
-}
-
 } // namespace
 
 ReportController::ReportController(Workspace &workspace, Language &language,
@@ -85,25 +84,6 @@ ReportController::ReportController(Workspace &workspace, Language &language,
 }
 
 ReportController::~ReportController() = default;
-
-void ReportController::recordWrites(int address, const std::vector<model::WriteItem> &items)
-{
-    const QDateTime now = QDateTime::currentDateTime();
-    for (const model::WriteItem &item : items) {
-        if (!item.row || item.status == model::WriteStatus::Pending ||
-            item.status == model::WriteStatus::NotSent ||
-            item.status == model::WriteStatus::Unchanged)
-            continue;
-        const dev::ParamMeta &row = *item.row;
-        m_writes.push_back({now, address, QString::fromStdString(row.name),
-                            QString::fromStdString(row.label.en), QString::fromStdString(row.unit),
-                            text(row, item.before, dev::Language::English),
-                            text(row, item.value, dev::Language::English),
-                            QString::fromLatin1(model::writeStatusKey(item.status)),
-                            model::writeReasonText(item, dev::Language::English),
-                            model::writeReasonText(item, dev::Language::German)});
-    }
-}
 
 void ReportController::openDialog(QWidget *parent)
 {
@@ -152,11 +132,23 @@ void ReportController::openDialog(QWidget *parent)
         for (int index : choice.runs)
             if (index >= 0 && static_cast<std::size_t>(index) < runs.size())
                 input.runs.push_back(*runs[static_cast<std::size_t>(index)]);
-        input.writes = m_writes;
+        // Every write of this session from any window, as the session log on disk holds it.
+        if (const model::AuditLog *log = model::AuditLog::current(); log && !log->path().isEmpty())
+            input.writes = model::reportWrites(model::readAuditLog(log->path()));
+        const ui::ReferencePanel *panel = m_workbench.referencePanel();
+        if (choice.drift && panel && panel->comparison() && panel->reference()) {
+            const model::Reference &reference = *panel->reference();
+            input.drift = model::reportDrift(
+                reference, *panel->comparison(), panel->referencePath(),
+                m_workspace.dictionaries().find(reference.file.family), choice.lang);
+        }
         use(model::assembleReport(std::move(input), m_workspace.dictionaries(), choice.lang));
         return {};
     };
     auto *dialog = new ui::ReportDialog(titles, uiLang, maker, parent);
+    if (const ui::ReferencePanel *panel = m_workbench.referencePanel();
+        panel && panel->comparison() && panel->reference())
+        dialog->offerDrift(QFileInfo(panel->referencePath()).fileName());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
 }

@@ -7,10 +7,13 @@
 #include "cli_run.h"
 #include "dict/dictionary_loader.h"
 #include "model/params/param_file_io.h"
+#include "model/params/parameter_tree_model.h"
+#include "model/report/report_drift.h"
 #include "model/report/report_render.h"
 #include "model/tuning/run_file.h"
 #include "widgets/report/report_dialog.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QImage>
@@ -337,6 +340,105 @@ TEST(ReportDialogTest, SavesWhatItsMakerGivesAndRemembersTheHeader)
     EXPECT_EQ(json["language"], "de");
     ui::ReportDialog again({}, dev::Language::English, maker);
     EXPECT_EQ(again.findChild<QLineEdit *>(QStringLiteral("reportCustomer"))->text(), "ACME");
+}
+
+// The Workbench's comparison with a reference fingerprint becomes the report's drift section: the
+// parameter named in the report's language with its values as the editor shows them, the figures
+// named as the Workbench names them, the step overlays kept and a sweep's (on a frequency axis)
+// left to its figures.
+TEST(ReportDrift, TheReferenceComparisonInTheReportsWords)
+{
+    const auto &dictionaries = dev::builtinDictionaries();
+    ASSERT_TRUE(dictionaries.ok());
+    const dev::Dictionary *dma = dictionaries->find("dma-pn-v51");
+    ASSERT_NE(dma, nullptr);
+    const dev::ParamMeta *gain = dma->find("C1.13");
+    ASSERT_NE(gain, nullptr);
+
+    model::Reference reference;
+    reference.file.saved = "2026-11-20T09:30:00.000+01:00";
+    reference.file.family = "dma-pn-v51";
+    reference.file.address = 2;
+    reference.file.setValue = "A1.01";
+    model::ReferenceComparison comparison;
+    model::ParamDrift param;
+    param.module = 2;
+    param.row = "C1.13";
+    param.name = "whatever the comparison said";
+    param.reference = 2.0;
+    param.now = 1.0;
+    param.referenceRaw = 200;
+    param.nowRaw = 100;
+    param.unit = gain->unit;
+    comparison.params.push_back(param);
+    comparison.metrics.push_back(model::metricDrift(model::DriftMetric::RiseTime, 0.10, 0.25, {}));
+    comparison.metrics.back().module = 2;
+    comparison.metrics.back().test = "step-up";
+    comparison.overlays.push_back({"step-up", false, {0, 0.1}, {0, 1}, {0, 0.5}});
+    comparison.overlays.push_back({"sweep", true, {1, 2}, {0, -3}, {0, -6}});
+
+    const model::ReportDrift drift = model::reportDrift(
+        reference, comparison, QStringLiteral("/tmp/axis.vtref"), dma, dev::Language::German);
+    EXPECT_EQ(drift.referenceFile, QStringLiteral("/tmp/axis.vtref"));
+    EXPECT_EQ(drift.takenAt.toUTC(), QDateTime(QDate(2026, 11, 20), QTime(8, 30), Qt::UTC));
+    ASSERT_EQ(drift.params.size(), 1u);
+    EXPECT_EQ(drift.params[0].module, 2);
+    EXPECT_EQ(drift.params[0].name.toStdString(), gain->label.de);
+    EXPECT_EQ(drift.params[0].reference, model::formatRaw(*gain, 200.0, dev::Language::German));
+    EXPECT_EQ(drift.params[0].now, model::formatRaw(*gain, 100.0, dev::Language::German));
+    ASSERT_EQ(drift.metrics.size(), 1u);
+    EXPECT_EQ(drift.metrics[0].test, QStringLiteral("step up"));
+    EXPECT_EQ(drift.metrics[0].metric, QStringLiteral("rise time 10–90 %"));
+    EXPECT_DOUBLE_EQ(drift.metrics[0].deltaPercent, 150.0);
+    EXPECT_TRUE(drift.metrics[0].exceeded);
+    ASSERT_EQ(drift.curves.size(), 1u);
+    EXPECT_EQ(drift.curves[0].module, 2);
+    EXPECT_EQ(drift.curves[0].now, (std::vector<double>{0, 0.5}));
+}
+
+// The dialog offers the drift only when the Workbench has a comparison, ticked.
+TEST(ReportDialogTest, OffersTheDriftOnlyWhenThereIsAComparison)
+{
+    const ui::ReportMaker none = [](const ui::ReportChoice &, const auto &) { return QString(); };
+    ui::ReportDialog without({}, dev::Language::English, none);
+    EXPECT_FALSE(without.choice().drift);
+    ui::ReportDialog with({}, dev::Language::English, none);
+    with.offerDrift(QStringLiteral("axis.vtref"));
+    EXPECT_TRUE(with.choice().drift);
+    auto *box = with.findChild<QCheckBox *>(QStringLiteral("reportDrift"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->text().contains(QStringLiteral("axis.vtref")));
+    box->setChecked(false);
+    EXPECT_FALSE(with.choice().drift);
+}
+
+// After the fact: the writes of another session (here a valvetune-cli set, whose session log is on
+// disk) become the report's write log with --session-log; a log that cannot be read is refused.
+TEST(ReportCli, TheWriteLogComesFromASessionLog)
+{
+    QTemporaryDir dir;
+    const QString logs = dir.filePath(QStringLiteral("sessions"));
+    const CliRun set =
+        cli({"--audit-dir", logs, "set", "--sim", "dma-pn-v51", "--yes", "C1.07=1.250"});
+    ASSERT_EQ(set.code, cli::kExitOk) << what(set);
+    const QStringList files = QDir(logs).entryList({QStringLiteral("*.jsonl")}, QDir::Files);
+    ASSERT_EQ(files.size(), 1) << files.join(' ').toStdString();
+    const QString log = QDir(logs).filePath(files.front());
+
+    const QString vtpar = dir.filePath(QStringLiteral("node.vtpar"));
+    ASSERT_EQ(cli({"read", "--sim", "dma-pn-v51", "--out", vtpar}).code, cli::kExitOk);
+    const QString out = dir.filePath(QStringLiteral("r.json"));
+    const CliRun report = cli({"report", "--file", vtpar, "--session-log", log, "--out", out});
+    ASSERT_EQ(report.code, cli::kExitOk) << what(report);
+    const Json json = readJson(out);
+    ASSERT_EQ(json["writes"].size(), 1u) << json["writes"].dump();
+    EXPECT_EQ(json["writes"][0]["row"], "C1.07");
+    EXPECT_EQ(json["writes"][0]["status"], "verified");
+
+    const CliRun missing = cli({"report", "--file", vtpar, "--session-log",
+                                dir.filePath(QStringLiteral("none.jsonl")), "--out", out});
+    EXPECT_EQ(missing.code, cli::kExitUsage) << what(missing);
+    EXPECT_TRUE(missing.complains("none.jsonl")) << missing.err;
 }
 
 TEST(ReportCli, RefusesAnUnknownFormatAndAMissingOut)

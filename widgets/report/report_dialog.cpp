@@ -2,6 +2,7 @@
 
 #include "model/report/report_render.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -74,6 +75,10 @@ ReportDialog::ReportDialog(const QStringList &runTitles, dev::Language lang, Rep
     referenceRow->addWidget(m_reference, 1);
     referenceRow->addWidget(browse);
 
+    m_drift = new QCheckBox(this);
+    m_drift->setObjectName(QStringLiteral("reportDrift"));
+    m_drift->setVisible(false);
+
     m_lang = new QComboBox(this);
     m_lang->setObjectName(QStringLiteral("reportLanguage"));
     m_lang->addItem(QStringLiteral("English"), QStringLiteral("en"));
@@ -95,6 +100,7 @@ ReportDialog::ReportDialog(const QStringList &runTitles, dev::Language lang, Rep
     form->addRow(tr("Comment:"), m_comment);
     form->addRow(tr("Workbench runs:"), m_runs);
     form->addRow(tr("Reference file:"), referenceRow);
+    form->addRow(QString(), m_drift);
     form->addRow(tr("Language:"), m_lang);
     form->addRow(tr("Format:"), m_format);
 
@@ -115,6 +121,13 @@ ReportDialog::ReportDialog(const QStringList &runTitles, dev::Language lang, Rep
 
 ReportDialog::~ReportDialog() = default;
 
+void ReportDialog::offerDrift(const QString &what)
+{
+    m_drift->setText(tr("Drift against the reference fingerprint %1").arg(what));
+    m_drift->setChecked(true);
+    m_drift->setVisible(true);
+}
+
 ReportChoice ReportDialog::choice() const
 {
     ReportChoice c;
@@ -125,6 +138,7 @@ ReportChoice ReportDialog::choice() const
             m_runs->item(i)->checkState() == Qt::Checked)
             c.runs.push_back(i);
     c.referenceFile = m_reference->text().trimmed();
+    c.drift = !m_drift->isHidden() && m_drift->isChecked();
     c.lang = m_lang->currentData().toString() == QLatin1String("de") ? dev::Language::German
                                                                      : dev::Language::English;
     return c;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QLineEdit;
 class QListWidget;
@@ -25,6 +26,7 @@ struct ReportChoice
     model::ReportHeader header;
     std::vector<int> runs; // indices into the titles the dialog was given
     QString referenceFile;
+    bool drift = false; // the Workbench's last comparison with a reference fingerprint
     dev::Language lang = dev::Language::English;
 };
 
@@ -41,6 +43,9 @@ public:
                  QWidget *parent = nullptr);
     ~ReportDialog() override;
 
+    // The Workbench compared the module with a reference fingerprint (`what` names it): offer
+    // its drift for the report, ticked.
+    void offerDrift(const QString &what);
     ReportChoice choice() const;
     // Remembers the header, then writes the report to `path` in the format its suffix names;
     // empty, or why not.
@@ -60,6 +65,7 @@ private:
     QPlainTextEdit *m_comment = nullptr;
     QListWidget *m_runs = nullptr;
     QLineEdit *m_reference = nullptr;
+    QCheckBox *m_drift = nullptr;
     QComboBox *m_lang = nullptr;
     QComboBox *m_format = nullptr;
 };

@@ -3,6 +3,7 @@
 #include "bode_plot.h"
 #include "dict/cooking.h"
 #include "model/text_language.h"
+#include "model/tuning/drift_texts.h"
 #include "response_plot.h"
 
 #include <QComboBox>
@@ -98,32 +99,6 @@ ReferenceDriftView::ReferenceDriftView(QWidget *parent) : QWidget(parent)
     retranslate();
 }
 
-QString ReferenceDriftView::testText(const std::string &test)
-{
-    if (test == "step-up")
-        return tr("step up");
-    if (test == "step-down")
-        return tr("step down");
-    if (test == "sweep")
-        return tr("sweep");
-    if (test == "steps")
-        return tr("steps");
-    return QString::fromStdString(test);
-}
-
-QString ReferenceDriftView::metricText(model::DriftMetric metric)
-{
-    switch (metric) {
-    case model::DriftMetric::RiseTime: return tr("rise time 10–90 %");
-    case model::DriftMetric::Overshoot: return tr("overshoot");
-    case model::DriftMetric::SettlingTime: return tr("settling time 2 %");
-    case model::DriftMetric::SteadyStateError: return tr("steady-state error");
-    case model::DriftMetric::Bandwidth: return tr("bandwidth (−3 dB)");
-    case model::DriftMetric::Phase90: return tr("frequency at −90°");
-    }
-    return {};
-}
-
 void ReferenceDriftView::show(const model::Reference &reference,
                               const std::vector<std::shared_ptr<model::TuningRun>> &now,
                               const std::optional<model::ReferenceComparison> &comparison)
@@ -192,8 +167,8 @@ void ReferenceDriftView::fill()
                 (points ? tr("%1%2 points") : tr("%1%2 %"))
                     .arg(sign, QLocale().toString(d.thresholdPercent, 'f', 1)) +
                 (d.metric == model::DriftMetric::SteadyStateError ? tr(" of the step") : QString());
-            const QStringList cells = {testText(d.test),
-                                       metricText(d.metric),
+            const QStringList cells = {model::DriftTexts::test(d.test),
+                                       model::DriftTexts::metric(d.metric),
                                        tr("%1 %2").arg(num(d.reference, dec), unit),
                                        tr("%1 %2").arg(num(d.now, dec), unit),
                                        tr("%1 (%2)").arg(change, threshold),
@@ -217,8 +192,8 @@ void ReferenceDriftView::fill()
                         return m;
                 return model::DriftMetric::RiseTime;
             }();
-            m_metrics->setItem(r, 0, cell(testText(g.test), false));
-            m_metrics->setItem(r, 1, cell(metricText(metric), false));
+            m_metrics->setItem(r, 0, cell(model::DriftTexts::test(g.test), false));
+            m_metrics->setItem(r, 1, cell(model::DriftTexts::metric(metric), false));
             m_metrics->setItem(r, 2,
                                cell(tr("%1 %2").arg(num(g.value, decimalsOf(metric)),
                                                     QString::fromStdString(g.unit)),
@@ -262,8 +237,9 @@ void ReferenceDriftView::fill()
     const QSignalBlocker block(m_plotChoice);
     m_plotChoice->clear();
     for (std::size_t i = 0; i < m_reference.runs.size(); ++i)
-        m_plotChoice->addItem(testText(i < f.tests.size() ? f.tests[i].key : std::string("steps")),
-                              static_cast<int>(i));
+        m_plotChoice->addItem(
+            model::DriftTexts::test(i < f.tests.size() ? f.tests[i].key : std::string("steps")),
+            static_cast<int>(i));
     m_plotChoice->setVisible(m_plotChoice->count() > 1);
     showPlot();
 }

@@ -39,10 +39,6 @@ public:
     QTableWidget *settingsTable() const { return m_params; }
     QTableWidget *figuresTable() const { return m_metrics; }
 
-    // For people: a test's and a figure's name ("step up", "rise time 10–90 %").
-    static QString testText(const std::string &test);
-    static QString metricText(model::DriftMetric metric);
-
 protected:
     void changeEvent(QEvent *event) override;
 

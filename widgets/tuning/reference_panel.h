@@ -61,6 +61,9 @@ public:
     bool isActive() const { return m_session && m_session->isActive(); }
     QString statusText() const { return m_status; }
     const std::optional<model::ReferenceComparison> &comparison() const { return m_comparison; }
+    // The reference saved or loaded last and its file (what comparison() compared with).
+    const std::optional<model::Reference> &reference() const { return m_reference; }
+    const QString &referencePath() const { return m_path; }
     ReferenceDriftView *driftView() const { return m_view; }
     // The workbench's module, set value or connection changed.
     void updateEnabled();
