@@ -73,7 +73,8 @@ std::optional<ReportOptions> takeReportOptions(QStringList &args, Context &ctx, 
 // The reference file, the runs and the session log named on the command line, into `input`; false
 // after printing why one could not be read (*code = 2).
 bool loadExtras(const ReportOptions &o, const dev::DictionarySet &dictionaries, dev::Language lang,
-                model::ReportInput &input, Context &ctx, int *code)
+                model::ReportInput &input, model::AuditLogContents &sessionLog, Context &ctx,
+                int *code)
 {
     if (o.reference) {
         auto reference = model::readParamFile(*o.reference, lang);
@@ -94,7 +95,8 @@ bool loadExtras(const ReportOptions &o, const dev::DictionarySet &dictionaries, 
         input.runs.push_back(std::move(*run));
     }
     if (o.sessionLog) {
-        const model::AuditLogContents log = model::readAuditLog(*o.sessionLog);
+        sessionLog = model::readAuditLog(*o.sessionLog);
+        const model::AuditLogContents &log = sessionLog;
         if (!log.ok) {
             *code = ctx.fail(kExitUsage, str(*o.sessionLog) + ": " + str(log.error));
             return false;
@@ -106,7 +108,6 @@ bool loadExtras(const ReportOptions &o, const dev::DictionarySet &dictionaries, 
                                             "while writing it)"
                                           : "")
                     << "; the report holds the " << log.entries.size() << " writes read\n";
-        input.writes = model::reportWrites(log);
     }
     return true;
 }
@@ -168,8 +169,10 @@ int reportFile(const QString &path, QStringList &args, Context &ctx)
     input.header = options->header;
     input.settings = std::move(*file);
     input.sourceFile = path;
-    if (!loadExtras(*options, *dictionaries, ctx.lang, input, ctx, &code))
+    model::AuditLogContents sessionLog;
+    if (!loadExtras(*options, *dictionaries, ctx.lang, input, sessionLog, ctx, &code))
         return code;
+    input.writes = model::reportWrites(sessionLog, input.settings, *dictionaries, ctx.lang);
     return finish(ctx, *options, model::assembleReport(std::move(input), *dictionaries, ctx.lang),
                   kExitOk);
 }
@@ -201,7 +204,8 @@ int runReport(const QStringList &argsIn, Context &ctx)
     DeviceRun run(ctx, *device);
     model::ReportInput input;
     input.header = options->header;
-    if (!loadExtras(*options, run.dictionaries(), run.lang(), input, ctx, &code))
+    model::AuditLogContents sessionLog;
+    if (!loadExtras(*options, run.dictionaries(), run.lang(), input, sessionLog, ctx, &code))
         return code;
     if (const int c = run.connect())
         return c;
@@ -215,6 +219,7 @@ int runReport(const QStringList &argsIn, Context &ctx)
             input.identities[r.module.address] = r.module.identityText;
     }
     input.settings = paramFileOf(*node);
+    input.writes = model::reportWrites(sessionLog, input.settings, run.dictionaries(), run.lang());
     input.connection = QString::fromStdString(run.describe(addresses));
     return finish(ctx, *options,
                   model::assembleReport(std::move(input), run.dictionaries(), run.lang()), code);

@@ -134,7 +134,8 @@ void ReportController::openDialog(QWidget *parent)
                 input.runs.push_back(*runs[static_cast<std::size_t>(index)]);
         // Every write of this session from any window, as the session log on disk holds it.
         if (const model::AuditLog *log = model::AuditLog::current(); log && !log->path().isEmpty())
-            input.writes = model::reportWrites(model::readAuditLog(log->path()));
+            input.writes = model::reportWrites(model::readAuditLog(log->path()), input.settings,
+                                               m_workspace.dictionaries(), choice.lang);
         const ui::ReferencePanel *panel = m_workbench.referencePanel();
         if (choice.drift && panel && panel->comparison() && panel->reference()) {
             const model::Reference &reference = *panel->reference();

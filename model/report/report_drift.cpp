@@ -38,25 +38,24 @@ ReportDrift reportDrift(const Reference &reference, const ReferenceComparison &c
     for (const ParamDrift &p : comparison.params) {
         const dev::ParamMeta *row = dictionary ? dictionary->find(p.row) : nullptr;
         const std::string label = row ? row->label.in(lang) : p.name;
-        drift.params.push_back({p.module, QString::fromStdString(p.row),
-                                QString::fromStdString(label.empty() ? p.name : label),
-                                sideText(row, p.referenceRaw, p.reference, lang),
-                                sideText(row, p.nowRaw, p.now, lang),
-                                row && row->enums.empty() ? QString::fromStdString(p.unit)
-                                                            : QString()});
+        drift.params.push_back(
+            {p.module, QString::fromStdString(p.row),
+             QString::fromStdString(label.empty() ? p.name : label),
+             sideText(row, p.referenceRaw, p.reference, lang), sideText(row, p.nowRaw, p.now, lang),
+             row && row->enums.empty() ? QString::fromStdString(p.unit) : QString()});
     }
     for (const MetricDrift &m : comparison.metrics)
         drift.metrics.push_back({m.module, DriftTexts::test(m.test), DriftTexts::metric(m.metric),
-                                 m.reference, m.now, QString::fromStdString(m.unit),
-                                 m.deltaPercent, m.thresholdPercent, m.exceeded});
+                                 m.reference, m.now, QString::fromStdString(m.unit), m.deltaPercent,
+                                 m.thresholdPercent, m.exceeded});
     const dev::ParamMeta *setValue =
         dictionary ? dictionary->find(reference.file.setValue) : nullptr;
     for (const DriftOverlay &o : comparison.overlays) {
         if (o.frequency)
             continue; // the report's overlay axis is time; a sweep's drift is in its figures
         drift.curves.push_back({reference.file.address, DriftTexts::test(o.test),
-                                setValue ? QString::fromStdString(setValue->unit) : QString(),
-                                o.x, o.reference, o.now});
+                                setValue ? QString::fromStdString(setValue->unit) : QString(), o.x,
+                                o.reference, o.now});
     }
     return drift;
 }

@@ -11,7 +11,6 @@
 namespace vt::model {
 
 ReportDrift reportDrift(const Reference &reference, const ReferenceComparison &comparison,
-                        const QString &file, const dev::Dictionary *dictionary,
-                        dev::Language lang);
+                        const QString &file, const dev::Dictionary *dictionary, dev::Language lang);
 
 } // namespace vt::model

@@ -16,7 +16,7 @@ class DriftTexts
     Q_DECLARE_TR_FUNCTIONS(vt::ui::ReferenceDriftView)
 public:
     static QString test(const std::string &test); // "step-up" → "step up"
-    static QString metric(DriftMetric metric);     // "rise time 10–90 %"
+    static QString metric(DriftMetric metric);    // "rise time 10–90 %"
 };
 
 } // namespace vt::model

@@ -434,6 +434,16 @@ TEST(ReportCli, TheWriteLogComesFromASessionLog)
     ASSERT_EQ(json["writes"].size(), 1u) << json["writes"].dump();
     EXPECT_EQ(json["writes"][0]["row"], "C1.07");
     EXPECT_EQ(json["writes"][0]["status"], "verified");
+    EXPECT_EQ(json["writes"][0]["new"], "1.250 V");
+    // In a German report the log's values and names are said in German.
+    const CliRun german =
+        cli({"report", "--file", vtpar, "--session-log", log, "--out", out, "--lang", "de"});
+    ASSERT_EQ(german.code, cli::kExitOk) << what(german);
+    const Json de = readJson(out);
+    EXPECT_EQ(de["writes"][0]["new"], "1,250 V");
+    const auto &dictionaries = dev::builtinDictionaries();
+    ASSERT_TRUE(dictionaries.ok());
+    EXPECT_EQ(de["writes"][0]["name"], dictionaries->find("dma-pn-v51")->find("C1.07")->label.de);
 
     const CliRun missing = cli({"report", "--file", vtpar, "--session-log",
                                 dir.filePath(QStringLiteral("none.jsonl")), "--out", out});
