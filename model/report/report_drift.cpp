@@ -42,7 +42,7 @@ ReportDrift reportDrift(const Reference &reference, const ReferenceComparison &c
             {p.module, QString::fromStdString(p.row),
              QString::fromStdString(label.empty() ? p.name : label),
              sideText(row, p.referenceRaw, p.reference, lang), sideText(row, p.nowRaw, p.now, lang),
-             row && row->enums.empty() ? QString::fromStdString(p.unit) : QString()});
+             row ? QString() : QString::fromStdString(p.unit)}); // the editor's text has the unit
     }
     for (const MetricDrift &m : comparison.metrics)
         drift.metrics.push_back({m.module, DriftTexts::test(m.test), DriftTexts::metric(m.metric),
