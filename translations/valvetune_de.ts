@@ -79,10 +79,6 @@
         <translation>Lauf %1 · %2 · Modul %3 %4</translation>
     </message>
     <message>
-        <source>Cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
         <source>%1 is not a readable run: %2</source>
         <translation>%1 ist kein lesbarer Lauf: %2</translation>
     </message>
@@ -2848,10 +2844,6 @@
     <message>
         <source>Cannot write %1.</source>
         <translation>%1 kann nicht geschrieben werden.</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
         <source>Module %1 · %2, software %3</source>

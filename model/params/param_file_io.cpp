@@ -1,30 +1,18 @@
 #include "param_file_io.h"
 
 #include "files/param_csv.h"
+#include "model/file_write.h"
 
 #include <QCoreApplication>
 #include <QFile>
-#include <QSaveFile>
 
 namespace vt::model {
 namespace {
 
 std::optional<QString> writeAtomically(const QString &path, const std::string &bytes)
 {
-    QSaveFile out(path);
-    if (!out.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2")
-            .arg(path, out.errorString());
-    if (out.write(bytes.data(), static_cast<qint64>(bytes.size())) !=
-        static_cast<qint64>(bytes.size())) {
-        out.cancelWriting();
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2")
-            .arg(path, out.errorString());
-    }
-    if (!out.commit())
-        return QCoreApplication::translate("vt::model::ParamFileIo", "Cannot write %1: %2")
-            .arg(path, out.errorString());
-    return std::nullopt;
+    QString why = writeFileAtomically(path, bytes);
+    return why.isEmpty() ? std::nullopt : std::optional<QString>(std::move(why));
 }
 
 QString tooLarge(const QString &path)

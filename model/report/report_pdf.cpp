@@ -1,5 +1,6 @@
 // The report on paper: the HTML laid out by QTextDocument for the device's page, painted page by
 // page with a footer, and the file writers by format.
+#include "model/file_write.h"
 #include "report_render.h"
 #include "report_text.h"
 
@@ -9,7 +10,6 @@
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 #include <QUrl>
 
@@ -114,9 +114,8 @@ std::optional<QString> writeReport(const Report &report, const QString &path)
     const QByteArray bytes = *format == ReportFormat::Json
                                  ? QByteArray::fromStdString(reportJson(report))
                                  : reportHtml(report).toUtf8();
-    QSaveFile out(path); // atomic: a failed save never leaves half a file
-    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit())
-        return ReportText::tr("Cannot write %1: %2").arg(path, out.errorString());
+    if (QString why = writeFileAtomically(path, bytes); !why.isEmpty())
+        return why;
     return std::nullopt;
 }
 

@@ -2,6 +2,7 @@
 
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
+#include "model/file_write.h"
 #include "model/tuning/workbench_rows.h"
 
 #include <QDateTime>
@@ -119,13 +120,7 @@ Reference makeReference(const ModuleInfo &module, const dev::ParamMeta &setValue
 
 QString saveReference(const Reference &reference, const QString &path)
 {
-    const std::string text = referenceJson(reference.file);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(text.data(), static_cast<qint64>(text.size())) !=
-            static_cast<qint64>(text.size()))
-        return QObject::tr("Cannot write %1: %2").arg(path, file.errorString());
-    return {};
+    return writeFileAtomically(path, referenceJson(reference.file));
 }
 
 std::optional<Reference> loadReference(const QString &path, const dev::DictionarySet &dictionaries,

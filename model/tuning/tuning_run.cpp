@@ -2,6 +2,7 @@
 
 #include "dict/cooking.h"
 #include "dict/dictionary_loader.h"
+#include "model/file_write.h"
 #include "model/text_language.h"
 
 #include <QFile>
@@ -186,17 +187,9 @@ bool runFromData(const RunFileData &data, const dev::Dictionary &dictionary, Tun
 QString saveRun(const TuningRun &run, const QString &csvPath)
 {
     const RunFileData data = runFileData(run);
-    const auto write = [](const QString &path, const std::string &text) -> QString {
-        QFile file(path);
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-            file.write(text.data(), static_cast<qint64>(text.size())) !=
-                static_cast<qint64>(text.size()))
-            return QObject::tr("Cannot write %1: %2").arg(path, file.errorString());
-        return {};
-    };
-    if (QString e = write(csvPathFor(csvPath), runCsv(data)); !e.isEmpty())
+    if (QString e = writeFileAtomically(csvPathFor(csvPath), runCsv(data)); !e.isEmpty())
         return e;
-    return write(jsonPathFor(csvPath), runJson(data));
+    return writeFileAtomically(jsonPathFor(csvPath), runJson(data));
 }
 
 std::optional<TuningRun> loadRun(const QString &path, const dev::DictionarySet &dictionaries,
