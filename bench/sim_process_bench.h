@@ -52,18 +52,27 @@ struct SimProcess
         pty = line.section(QLatin1Char(' '), 2);
         return line.startsWith(QLatin1String("listening on "));
     }
-    // Stops the simulator; --wire: the requests it refused, from its closing line
-    // "wire: N requests refused" (-1 when it said none).
-    int stopAndCountRefusals()
+    // Stops the simulator; --wire: the requests it refused and the collisions it saw, from its
+    // closing line "wire: N requests refused, M collisions" (-1 when it said none).
+    struct WireCounts
+    {
+        int refused = -1;
+        int collisions = -1;
+    };
+    WireCounts stopAndCountWire()
     {
         process.terminate();
         process.waitForFinished(5000);
         const QString said = QString::fromUtf8(process.readAllStandardError());
-        const qsizetype at = said.indexOf(QLatin1String(" requests refused"));
+        WireCounts counts;
+        const qsizetype at = said.indexOf(QLatin1String(" requests refused, "));
         if (at < 0)
-            return -1;
+            return counts;
         const qsizetype from = said.lastIndexOf(QLatin1Char(' '), at - 1) + 1;
-        return said.mid(from, at - from).toInt();
+        counts.refused = said.mid(from, at - from).toInt();
+        const qsizetype after = at + qsizetype(sizeof(" requests refused, ") - 1);
+        counts.collisions = said.mid(after, said.indexOf(QLatin1Char(' '), after) - after).toInt();
+        return counts;
     }
     ~SimProcess()
     {
@@ -89,10 +98,14 @@ inline double libmodbusReadAll(const QString &pty, int baud,
         return -1;
     }
     modbus_set_response_timeout(ctx, 1, 0);
-    QElapsedTimer timer;
-    timer.start();
     std::uint16_t dest[8];
     const timespec gap{0, silenceUs * 1000};
+    // The line may have carried the previous master's last answer a moment ago: the first
+    // request keeps the silent interval too (outside the time measured).
+    if (silenceUs > 0)
+        clock_nanosleep(CLOCK_MONOTONIC, 0, &gap, nullptr);
+    QElapsedTimer timer;
+    timer.start();
     for (int round = 0; round < rounds; ++round) {
         for (const int unit : units) {
             modbus_set_slave(ctx, unit);

@@ -194,8 +194,9 @@ void benchReadAllOnTheWire(int baud, int rounds, bool withLibmodbus, Timing timi
     std::printf("  physical limit: %8.1f ms\n  ValveTune:      %8.1f ms\n", limit * 1e3, vt * 1e3);
     if (withLibmodbus)
         std::printf("  libmodbus (+ its caller's t3.5 wait): %8.1f ms\n", lib * 1e3);
-    std::printf("  requests the simulator refused: %d; ValveTune timeouts: %llu\n",
-                sim.stopAndCountRefusals(), static_cast<unsigned long long>(timeouts));
+    const auto wire = sim.stopAndCountWire();
+    std::printf("  requests the simulator refused: %d, collisions: %d; ValveTune timeouts: %llu\n",
+                wire.refused, wire.collisions, static_cast<unsigned long long>(timeouts));
     std::printf("RESULT readall_wire_%d%s_limit_ratio=%.3f\n", baud,
                 timing == Timing::CrcEnd ? "_crc" : "", limit / vt);
     if (withLibmodbus)
@@ -248,12 +249,13 @@ void benchMonitorOnTheWire()
     spin([&] { return timer.elapsed() >= 4000; }, 10'000);
     monitor.stop();
     const double seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+    const auto wire = sim.stopAndCountWire();
     std::printf("monitor d1.07..d1.13 over valvetune-sim --wire at %d 8E1, turnaround %.1f ms, "
-                "%.1f s back to back\n  samples/s: %8.1f (limit %.1f)\n  refused: %d, timeouts: "
-                "%llu\n",
+                "%.1f s back to back\n  samples/s: %8.1f (limit %.1f)\n  refused: %d, collisions: "
+                "%d, timeouts: %llu\n",
                 kBaud, kTurnaroundMs, seconds, static_cast<double>(monitor.samples(1)) / seconds,
-                static_cast<double>(master.requests()) / master.limitSeconds(),
-                sim.stopAndCountRefusals(),
+                static_cast<double>(master.requests()) / master.limitSeconds(), wire.refused,
+                wire.collisions,
                 static_cast<unsigned long long>(master.session().counters().timeouts));
     std::printf("RESULT monitor_wire_115200_limit_ratio=%.3f\n", master.limitSeconds() / seconds);
 }
@@ -263,10 +265,26 @@ void benchMonitorOnTheWire()
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
-    benchMonitorOnTheWire();
-    benchReadAllOnTheWire(115200, 3, false);
-    benchReadAllOnTheWire(115200, 3, false, Timing::CrcEnd);
-    benchReadAllOnTheWire(19200, 1, true);
-    benchReadAllOnAPty();
+    // `vt_bench_wire [monitor] [readall-115200] [readall-115200-crc] [readall-19200] [pty]`:
+    // the figures named, in that order; all of them without arguments.
+    QStringList chosen = app.arguments().mid(1);
+    const bool all = chosen.isEmpty();
+    const auto wanted = [&](const char *name) {
+        return all || chosen.removeAll(QString::fromLatin1(name)) > 0;
+    };
+    if (wanted("monitor"))
+        benchMonitorOnTheWire();
+    if (wanted("readall-115200"))
+        benchReadAllOnTheWire(115200, 3, false);
+    if (wanted("readall-115200-crc"))
+        benchReadAllOnTheWire(115200, 3, false, Timing::CrcEnd);
+    if (wanted("readall-19200"))
+        benchReadAllOnTheWire(19200, 1, true);
+    if (wanted("pty"))
+        benchReadAllOnAPty();
+    if (!chosen.isEmpty()) {
+        std::fprintf(stderr, "unknown figure: %s\n", qPrintable(chosen.join(QLatin1Char(' '))));
+        return 2;
+    }
     return 0;
 }

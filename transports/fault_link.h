@@ -43,6 +43,7 @@ public:
     void open() override;
     void close() override;
     void send(const QByteArray &bytes) override;
+    void expectReply(qsizetype bytes) override { m_inner->expectReply(bytes); }
     // "sim opat [fault drop=0.02,seed=7]"
     QString description() const override;
 

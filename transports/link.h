@@ -25,6 +25,11 @@ public:
     virtual void close() = 0;
     // Queues bytes for sending; never blocks the calling thread.
     virtual void send(const QByteArray &bytes) = 0;
+    // The most bytes the answer to the next send() can have (0: none expected or not known). A
+    // link that ends frames by the line's silence hands a frame on as soon as it is this long,
+    // instead of t3.5 later; the silent interval before the next request is kept all the same.
+    // Default: ignored.
+    virtual void expectReply(qsizetype bytes) { (void)bytes; }
 
     // "serial /dev/ttyUSB0 19200 8E1", "tcp 127.0.0.1:502", "sim opat" — for the status bar
     // and the telegram log.

@@ -3,6 +3,8 @@
 #include "link_log.h"
 #include "serial_worker.h"
 
+#include <utility>
+
 namespace vt::link {
 
 SerialLink::SerialLink(SerialSettings settings, QObject *parent)
@@ -69,7 +71,9 @@ void SerialLink::send(const QByteArray &bytes)
     }
     QMetaObject::invokeMethod(
         m_worker,
-        [worker = m_worker, session = m_session, bytes] { worker->write(session, bytes); },
+        [worker = m_worker, session = m_session, bytes, reply = std::exchange(m_replyBytes, 0)] {
+            worker->write(session, bytes, reply);
+        },
         Qt::QueuedConnection);
 }
 

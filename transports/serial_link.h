@@ -29,6 +29,8 @@ public:
     void close() override;
     // Ignored (and logged) unless Open.
     void send(const QByteArray &bytes) override;
+    // For the next send() only.
+    void expectReply(qsizetype bytes) override { m_replyBytes = bytes; }
     // "serial /dev/ttyUSB0 19200 8E1"
     QString description() const override;
 
@@ -46,6 +48,7 @@ private:
     QThread m_thread;
     SerialWorker *m_worker = nullptr; // lives on m_thread; deleted there when it finishes
     quint64 m_session = 0;
+    qsizetype m_replyBytes = 0; // expectReply() for the next send()
 };
 
 } // namespace vt::link

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <ctime>
 #include <poll.h>
+#include <sys/prctl.h>
 
 namespace vt::link {
 
@@ -107,6 +108,12 @@ void SerialWorker::openPort(quint64 session, const SerialSettings &settings)
     }
     warnIfNotApplied();
     m_line.emplace(settings.baudRate, settings.bitsPerCharacter());
+    // What was on the line before the port opened is unknown (another master, a late answer to
+    // the program that had the port before): the first request waits t3.5 like any other.
+    m_line->received(nowUs());
+    // The line's waits are microseconds apart (t3.5 is 1.75 ms above 19200 baud); Linux lets a
+    // thread's timed wait end up to 50 µs late by default, which would widen every gap.
+    ::prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
     // Whatever a previous user left in the buffers is not an answer to us.
     m_port->flush();
 
@@ -135,10 +142,11 @@ void SerialWorker::closePort()
     release();
 }
 
-void SerialWorker::write(quint64 session, const QByteArray &bytes)
+void SerialWorker::write(quint64 session, const QByteArray &bytes, qsizetype replyBytes)
 {
     if (session != m_session || !m_port || bytes.isEmpty())
         return;
+    m_replyBytes = 0; // what arrives before the write is not its answer
     // Bounded: twice the wire time plus slack, so a stuck adapter fails instead of hanging the
     // worker (and with it the link's destructor) forever.
     const qint64 wireMs =
@@ -153,6 +161,7 @@ void SerialWorker::write(quint64 session, const QByteArray &bytes)
     const long long written = m_port->write(bytes.constData(), size, timeout);
     if (written > 0)
         m_line->sent(static_cast<std::size_t>(written), nowUs());
+    m_replyBytes = replyBytes;
     if (written < 0)
         fail(tr("Write to %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
     else if (static_cast<std::size_t>(written) < size)
@@ -192,6 +201,13 @@ bool SerialWorker::readFrame(QByteArray &frame, bool &quiet)
         }
         if (!m_settings.frameEndBySilence || frame.size() >= kMaxFrameRead)
             return true;
+        // The awaited answer is whole by its size: on to the session now, so that it decides on
+        // the next request while the line keeps its t3.5 (waitForSilence() before the write).
+        // Waiting here for the quiet would add two thread hops to every exchange's gap.
+        if (m_replyBytes > 0 && frame.size() >= m_replyBytes) {
+            m_replyBytes = 0;
+            return true;
+        }
         // §2.5.1.1: the frame goes on while bytes follow within t3.5 and ends with the silence.
         const std::int64_t left = m_line->frameEndsAtUs() - nowUs();
         if (left <= 0 || !inputWithin(m_port->descriptor(), left)) {

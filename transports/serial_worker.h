@@ -37,8 +37,9 @@ public:
     void openPort(quint64 session, const vt::link::SerialSettings &settings);
     // Silent: the link already considers itself closed.
     void closePort();
-    // Writes all bytes or fails; a write of the current session only.
-    void write(quint64 session, const QByteArray &bytes);
+    // Writes all bytes or fails; a write of the current session only. With the frame end by
+    // silence, an answer of `replyBytes` (> 0) is handed on once that long, not t3.5 later.
+    void write(quint64 session, const QByteArray &bytes, qsizetype replyBytes = 0);
 
     // The sentence failed() carries when the port of `settings` did not open.
     static QString openFailureText(const OpenFailure &failure, const SerialSettings &settings);
@@ -64,6 +65,7 @@ private:
     quint64 m_session = 0;
     SerialSettings m_settings;
     std::optional<dev::modbus::RtuLineClock> m_line; // the open port's line timing
+    qsizetype m_replyBytes = 0; // the awaited answer's size (write()); 0 once handed on
 };
 
 } // namespace vt::link

@@ -8,6 +8,7 @@
 #include <ctime>
 #include <poll.h>
 #include <string>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 namespace vt::simapp {
@@ -18,6 +19,9 @@ WireLine::WireLine(int fd, int baud, int bitsPerCharacter, std::int64_t turnarou
       m_silenceUs(dev::modbus::silentIntervalUs(baud, bitsPerCharacter)),
       m_turnaroundUs(turnaroundUs), m_now(std::move(now)), m_note(std::move(note))
 {
+    // Each byte waits for its character time (95 µs at 115200 baud); Linux lets a timed wait end
+    // up to 50 µs late by default, which would stretch the simulated wire.
+    ::prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
 }
 
 bool WireLine::arrived(std::size_t bytes, std::int64_t nowUs)
@@ -99,6 +103,11 @@ bool WireLine::transmit(std::span<const std::uint8_t> answer)
                start + static_cast<std::int64_t>(due + 1) * m_characterUs <= now)
             ++due;
         while (sent < due) {
+            // The line's last byte counts from the moment it was handed to the pty: the master
+            // cannot have seen it sooner. Taken after write() instead, a pause of this process
+            // between the two would move the line's end later than the master saw it, and a
+            // master that kept t3.5 would be refused.
+            const std::int64_t handedOn = m_now();
             const ssize_t n = ::write(m_fd, answer.data() + sent, due - sent);
             if (n < 0 && errno != EAGAIN && errno != EINTR)
                 return false;
@@ -106,10 +115,11 @@ bool WireLine::transmit(std::span<const std::uint8_t> answer)
                 pollfd out{m_fd, POLLOUT, 0};
                 ::poll(&out, 1, 10);
             }
-            if (n > 0)
+            if (n > 0) {
                 sent += static_cast<std::size_t>(n);
+                m_txEndUs = handedOn;
+            }
         }
-        m_txEndUs = m_now();
     }
     return true;
 }

@@ -55,7 +55,7 @@ private:
     std::function<std::int64_t()> m_now;
     std::function<void(const std::string &)> m_note;
     std::int64_t m_rxEndUs = -1'000'000'000; // the last received byte's stop bit
-    std::int64_t m_txEndUs = -1'000'000'000; // the last transmitted byte's, as written
+    std::int64_t m_txEndUs = -1'000'000'000; // the last transmitted byte's, handed on
     bool m_refusing = false;                 // the request on the line is being ignored
     std::uint64_t m_refusals = 0;
     std::uint64_t m_collisions = 0;

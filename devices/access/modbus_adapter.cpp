@@ -161,6 +161,40 @@ void ModbusRtuAdapter::resetFraming()
     m_deframer.silence();
 }
 
+// Modbus over Serial Line §2.5.1.1 ends a frame at t3.5 of silence and drops an incomplete one.
+// A PC does not see the line's byte timing, only when its driver hands bytes on: a USB adapter's
+// latency timer (16 ms by default on FTDI chips) or a busy scheduler puts a gap into the middle
+// of an answer that was whole on the wire. So a quiet keeps bytes that are the start of exactly
+// the answer awaited (its unit, function code and byte count) and lets its CRC decide when the
+// rest arrives; whatever else is buffered can never become a frame and is dropped.
+void ModbusRtuAdapter::lineQuiet(const Transaction *onTheWire)
+{
+    if (onTheWire && startsAnswerTo(m_deframer.pending(), *onTheWire))
+        return;
+    m_deframer.silence();
+}
+
+bool ModbusRtuAdapter::startsAnswerTo(std::span<const std::uint8_t> bytes,
+                                      const Transaction &t) const
+{
+    if (bytes.empty() || t.kind == TransactionKind::Raw || bytes.size() >= expectedReplyBytes(t))
+        return false;
+    if (bytes[0] != unitOf(t))
+        return false;
+    if (bytes.size() < 2)
+        return true;
+    const std::uint8_t function = t.kind == TransactionKind::Write
+                                      ? modbus::kFcWriteSingleRegister
+                                      : modbus::kFcReadHoldingRegisters;
+    if (bytes[1] == (function | modbus::kExceptionBit))
+        return bytes.size() < modbus::kRtuOverhead + 2; // an exception: unit, fc, code, CRC
+    if (bytes[1] != function)
+        return false;
+    // A read's answer announces its byte count in its third byte.
+    return function != modbus::kFcReadHoldingRegisters || bytes.size() < 3 ||
+           bytes[2] == responsePduBytes(t) - 2;
+}
+
 // --- TCP -------------------------------------------------------------------------------------
 
 Bytes ModbusTcpAdapter::encode(const Transaction &t)

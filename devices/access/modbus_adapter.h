@@ -62,9 +62,13 @@ public:
     std::size_t expectedReplyBytes(const Transaction &t) const override;
     std::optional<Reply> feed(std::span<const std::uint8_t> bytes, const Transaction &t) override;
     void resetFraming() override;
-    void lineQuiet() override { m_deframer.silence(); }
+    // Drops what is buffered, except the start of the answer to `onTheWire` (see the .cpp).
+    void lineQuiet(const Transaction *onTheWire) override;
 
 private:
+    // `bytes` can still become the answer to `t` (a proper prefix of its expected layout).
+    bool startsAnswerTo(std::span<const std::uint8_t> bytes, const Transaction &t) const;
+
     modbus::RtuDeframer m_deframer{Direction::Response};
 };
 

@@ -132,8 +132,9 @@ public:
     // Drops buffered bytes (after a timeout, before a retry, after reconnect).
     virtual void resetFraming() = 0;
     // The link saw the line quiet for the protocol's silent interval: buffered bytes that are no
-    // frame yet never will be (Modbus RTU, Modbus over Serial Line §2.5.1.1). Default: nothing.
-    virtual void lineQuiet() {}
+    // frame yet never will be (Modbus RTU, Modbus over Serial Line §2.5.1.1). `onTheWire` is the
+    // transaction whose answer is awaited (nullptr: none). Default: nothing.
+    virtual void lineQuiet(const Transaction *onTheWire) { (void)onTheWire; }
 };
 
 } // namespace vt::dev::access

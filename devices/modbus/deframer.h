@@ -33,6 +33,8 @@ public:
     void silence();
 
     std::size_t buffered() const { return m_buffer.size(); }
+    // The bytes buffered: the start of a frame whose rest has not arrived (after feed()).
+    std::span<const std::uint8_t> pending() const { return m_buffer; }
     std::size_t discarded() const { return m_discarded; } // garbage bytes dropped so far
 
 private:

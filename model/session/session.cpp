@@ -42,7 +42,9 @@ Session::Session(link::Link *link, std::unique_ptr<dev::access::ProtocolAdapter>
             sendAttempt();
     });
     connect(m_link, &link::Link::received, this, &Session::onReceived);
-    connect(m_link, &link::Link::lineQuiet, this, [this] { m_adapter->lineQuiet(); });
+    connect(m_link, &link::Link::lineQuiet, this, [this] {
+        m_adapter->lineQuiet(m_current && m_timeout.isActive() ? &m_current->transaction : nullptr);
+    });
     connect(m_link, &link::Link::stateChanged, this, &Session::onLinkState);
     connect(m_link, &link::Link::failed, this, &Session::onLinkFailed);
 }
@@ -210,6 +212,10 @@ void Session::sendAttempt()
         ++m_counters.retries;
     const QByteArray frame = link::toByteArray(bytes);
     emit frameSent(frame, p.transaction.module, elapsedNs());
+    const bool answered =
+        p.transaction.kind != dev::access::TransactionKind::Raw || p.transaction.expectsReply;
+    m_link->expectReply(
+        answered ? static_cast<qsizetype>(m_adapter->expectedReplyBytes(p.transaction)) : 0);
     m_link->send(frame);
     // A link may fail inside send() (FaultLink's cut, a serial write error) and report it at
     // once: failEverything() has then completed this request and `p` is gone.
@@ -289,6 +295,7 @@ void Session::sendFollowUp()
         return;
     const QByteArray frame = link::toByteArray(std::exchange(m_followUp, {}));
     emit frameSent(frame, m_current->transaction.module, elapsedNs());
+    m_link->expectReply(0); // the exchange's next frame: its size is the adapter's business
     m_link->send(frame);
 }
 

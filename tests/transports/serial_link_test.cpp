@@ -123,6 +123,49 @@ TEST_F(SerialLinkPty, AFrameEndsWhenTheLineGoesQuiet)
     EXPECT_EQ(received.at(1).at(0).toByteArray(), next);
 }
 
+// The answer awaited is handed on as soon as it has the size the session expects, not t3.5 later:
+// the session decides on the next request while the line keeps its silent interval. A shorter
+// answer (an exception) still ends with the quiet. At 1200 baud 8E1 t3.5 is 32 ms.
+TEST_F(SerialLinkPty, AnAnswerOfTheExpectedSizeIsHandedOnWithoutWaitingForTheQuiet)
+{
+    SerialSettings settings = SerialSettings::hcsDefault(portName());
+    settings.baudRate = 1200;
+    SerialLink link(settings);
+    QSignalSpy received(&link, &SerialLink::received);
+    QSignalSpy quiet(&link, &SerialLink::lineQuiet);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    m_pty->startReading();
+
+    const QByteArray request = QByteArray::fromHex("010300000002c40b");
+    const QByteArray answer = QByteArray::fromHex("01030400010002");
+    link.expectReply(answer.size() + 2);
+    link.send(request);
+    ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().size() >= request.size(); }));
+    ASSERT_TRUE(m_pty->write(answer));
+    ASSERT_TRUE(m_pty->write(QByteArray::fromHex("2a32"))); // its CRC a moment later
+    ASSERT_TRUE(waitForCount(received, 1));
+    // One piece of the expected size, and no quiet: the link did not wait for one.
+    QByteArray got = received.at(0).at(0).toByteArray();
+    if (got.size() < answer.size() + 2) { // the two writes read apart: the rest follows at once
+        ASSERT_TRUE(waitForCount(received, 2));
+        got += received.at(1).at(0).toByteArray();
+    }
+    EXPECT_EQ(got, answer + QByteArray::fromHex("2a32"));
+    EXPECT_EQ(quiet.count(), 0);
+
+    // The next answer is an exception, shorter than expected: it ends with the quiet.
+    const qsizetype before = received.count();
+    link.expectReply(answer.size() + 2);
+    link.send(request);
+    ASSERT_TRUE(
+        vt::test::waitUntil([&] { return m_pty->received().size() >= 2 * request.size(); }));
+    ASSERT_TRUE(m_pty->write(QByteArray::fromHex("018302c0f1")));
+    ASSERT_TRUE(waitForCount(quiet, 1));
+    ASSERT_EQ(received.count(), before + 1);
+    EXPECT_EQ(received.last().at(0).toByteArray(), QByteArray::fromHex("018302c0f1"));
+}
+
 // §2.5.1.1: the next request waits t3.5 after the last byte on the line, however soon the
 // session sends it. With the frame ended by its CRC (no wait for the quiet) the session answers
 // at once; the link holds the request until 32 ms (1200 baud 8E1) after the answer's last byte.

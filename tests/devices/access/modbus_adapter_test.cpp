@@ -141,6 +141,52 @@ TEST(ModbusRtuAdapter, SplitAndMergedFrames)
     EXPECT_EQ(reply->values, std::vector<RawValue>{access::test::storedRaw(m1, *row)});
 }
 
+// A quiet inside the awaited answer (a USB adapter's latency timer, a busy PC) keeps its start;
+// the rest completes it. A quiet after anything else drops it (Modbus over Serial Line §2.5.1.1).
+TEST(ModbusRtuAdapter, AQuietKeepsOnlyTheStartOfTheAwaitedAnswer)
+{
+    RtuRig r;
+    const sim::HcsModule &m = r.node->module(0);
+    const auto [t, answer, truth] = access::test::firstReadBlock(r.rig, m);
+    ASSERT_EQ(answer.size(), r.adapter.expectedReplyBytes(t));
+    for (std::size_t split = 1; split < answer.size(); ++split) {
+        r.adapter.resetFraming();
+        const std::span<const std::uint8_t> bytes(answer);
+        EXPECT_FALSE(r.adapter.feed(bytes.first(split), t));
+        r.adapter.lineQuiet(&t);
+        const auto reply = access::test::okReply(r.adapter.feed(bytes.subspan(split), t));
+        ASSERT_TRUE(reply) << "split after byte " << split;
+        EXPECT_EQ(reply->frame, answer);
+    }
+    // Without a transaction on the wire, or for another unit's request, the start is dropped and
+    // the rest alone is no frame.
+    Transaction otherUnit = t;
+    otherUnit.module = 2;
+    for (const Transaction *awaited : {static_cast<const Transaction *>(nullptr),
+                                       static_cast<const Transaction *>(&otherUnit)}) {
+        r.adapter.resetFraming();
+        const std::span<const std::uint8_t> bytes(answer);
+        EXPECT_FALSE(r.adapter.feed(bytes.first(5), t));
+        r.adapter.lineQuiet(awaited);
+        EXPECT_FALSE(r.adapter.feed(bytes.subspan(5), t));
+    }
+    // The start of an answer with another byte count is not the awaited one.
+    Transaction shorter = t;
+    shorter.rows.pop_back();
+    r.adapter.resetFraming();
+    EXPECT_FALSE(r.adapter.feed(std::span<const std::uint8_t>(answer).first(5), t));
+    r.adapter.lineQuiet(&shorter);
+    EXPECT_FALSE(r.adapter.feed(std::span<const std::uint8_t>(answer).subspan(5), t));
+    // An exception's start is kept like an answer's.
+    const Bytes exception{0x01, 0x83, 0x02, 0xC0, 0xF1};
+    r.adapter.resetFraming();
+    EXPECT_FALSE(r.adapter.feed(std::span<const std::uint8_t>(exception).first(2), t));
+    r.adapter.lineQuiet(&t);
+    const auto refused = r.adapter.feed(std::span<const std::uint8_t>(exception).subspan(2), t);
+    ASSERT_TRUE(refused);
+    EXPECT_EQ(refused->status, ReplyStatus::DeviceException);
+}
+
 TEST(ModbusTcpAdapter, IdentifiesAndReadsEveryRowOfEachUnit)
 {
     TcpRig r;

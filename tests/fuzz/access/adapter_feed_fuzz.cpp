@@ -2,12 +2,13 @@
 // session feeds them from the link, in the chunks the link delivers.
 // Input: byte 0 picks the adapter (bits 2..0: node image DMA / OPAT, HART, CANopen HCS / DSP-408,
 // Modbus RTU / TCP) and the transaction (bits 4..3: identify, read, write, raw; bit 5: a retry
-// with resetFraming() halfway); byte 1: bit 7 replaces the adapter by the ED1's image adapter
-// (bit 6: gateway registers, else the raw image), bits 5..0 are the chunk-size seed; the rest is
-// the byte stream. Progress replies hand their next bytes nowhere, as a session whose link is
-// gone would.
-// Properties: no crash, no sanitizer report; an Ok reply carries one value per row (reads) or
-// one value (writes); the reply's frame is never longer than the bytes fed.
+// with resetFraming() halfway; bit 6: the line goes quiet after every chunk, lineQuiet() with the
+// transaction awaited, as a serial link that ends frames by silence reports); byte 1: bit 7
+// replaces the adapter by the ED1's image adapter (bit 6: gateway registers, else the raw image),
+// bits 5..0 are the chunk-size seed; the rest is the byte stream. Progress replies hand their next
+// bytes nowhere, as a session whose link is gone would. Properties: no crash, no sanitizer report;
+// an Ok reply carries one value per row (reads) or one value (writes); the reply's frame is never
+// longer than the bytes fed.
 #include "access/canopen_adapter.h"
 #include "access/dsp408_adapter.h"
 #include "access/hart_adapter.h"
@@ -131,6 +132,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const Transaction t =
         makeTransaction(adapter, setup.module, static_cast<std::uint8_t>(pick >> 3));
     const bool retry = (pick & 0x20) != 0;
+    const bool quiet = (pick & 0x40) != 0;
     require(!adapter.encode(t).empty() || t.kind == TransactionKind::Raw);
     require(adapter.expectedReplyBytes(t) > 0);
 
@@ -144,6 +146,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         }
         fed += n;
         check(adapter.feed(stream.subspan(at, n), t), t, fed);
+        if (quiet)
+            adapter.lineQuiet(&t);
         at += n;
     }
     return 0;
