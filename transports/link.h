@@ -41,7 +41,8 @@ signals:
     void received(const QByteArray &bytes);
     // The line was quiet for a frame's silent interval after the bytes received so far (a serial
     // link that sees byte timing, Modbus over Serial Line §2.5.1.1): whatever is buffered and not
-    // a frame yet never will be.
+    // a frame yet never will be — except, to the adapter, the start of the answer it awaits (a PC
+    // sees the bytes in its driver's bursts, devices/access/modbus_adapter.cpp).
     void lineQuiet();
     void failed(const QString &reason);
     void stateChanged(vt::link::LinkState state);
