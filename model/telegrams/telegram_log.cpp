@@ -204,7 +204,7 @@ void TelegramLog::dropOldest()
     TelegramRecord &r = m_ring[m_head];
     m_bytes -= recordCost(r);
     // What the cap counted goes now: a long frame's own buffer and the note.
-    if (r.bytes.capacity() > kReservedFrameBytes)
+    if (r.bytes.capacity() > kKeptFrameBytes)
         r.bytes = reservedBytes(0);
     r.note = QString();
     m_head = (m_head + 1) % m_ring.size();

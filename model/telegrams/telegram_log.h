@@ -4,7 +4,7 @@
 //
 // Memory is reserved at construction, so a log reaching its cap does not add megabytes later: a
 // ring of maxRecords records, each with room for a frame of kReservedFrameBytes (frames up to
-// that size are copied into it; longer ones get their own buffer while they are held). The link
+// that size are copied into it; longer ones get a larger buffer, see kKeptFrameBytes). The link
 // and protocol texts of consecutive records share one string. With the defaults: 100 000 ×
 // (sizeof(TelegramRecord) + one heap block of kReservedFrameBytes) ≈ 20 MB (docs/PERFORMANCE.md,
 // "GUI resident memory over 30 minutes").
@@ -93,9 +93,13 @@ class TelegramLog : public QObject
     Q_OBJECT
 public:
     static constexpr qsizetype kDefaultMaxRecords = 100'000;
-    // Room each ring slot keeps for a frame's bytes: Modbus RTU/TCP requests and short replies
-    // (a TCP read of 5 registers: 19 bytes), node images and CANopen records (16 bytes) fit.
+    // Room each ring slot reserves for a frame's bytes: Modbus RTU/TCP requests and short replies
+    // (a TCP read of 5 registers: 19 bytes) and CANopen records (16 bytes) fit. A slot keeps a
+    // buffer grown for a longer frame up to kKeptFrameBytes (a 42-byte node image), so such links
+    // do not allocate per frame either once the ring went round; longer buffers go with their
+    // record.
     static constexpr qsizetype kReservedFrameBytes = 32;
+    static constexpr qsizetype kKeptFrameBytes = 64;
     static constexpr qint64 kDefaultMaxBytes = 64 * 1024 * 1024;
     static constexpr int kDefaultNotifyIntervalMs =
         20; // ≤ 50 notifications/s however fast frames arrive
