@@ -14,9 +14,20 @@
 #include <QIcon>
 #include <QMessageBox>
 #include <cstdio>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 int main(int argc, char *argv[])
 {
+#ifdef __GLIBC__
+    // Large buffers (the monitor's sample rings, the telegram log's ring) get their own mappings,
+    // returned to the system when freed. With glibc's default, the threshold rises after the
+    // first such free, later rings land in the heap, and the holes they leave when the channels
+    // change are touched page by page for the rest of the run: resident memory creeps (issue #21,
+    // docs/PERFORMANCE.md "GUI resident memory over 30 minutes").
+    mallopt(M_MMAP_THRESHOLD, 1024 * 1024);
+#endif
     // The command line first, without a display: --help, --version and a wrong option answer on a
     // terminal and a server alike.
     QString help;

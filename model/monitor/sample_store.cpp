@@ -5,6 +5,24 @@
 
 namespace vt::model {
 
+namespace {
+
+// Calls fn(firstPhysical, lastPhysical) for the (at most two) contiguous pieces of rows [i0, i1).
+template<typename Fn>
+void forEachSegment(std::size_t head, std::size_t capacity, qsizetype i0, qsizetype i1, Fn fn)
+{
+    if (i0 >= i1)
+        return;
+    const std::size_t p0 = (head + static_cast<std::size_t>(i0)) % capacity;
+    const auto n = static_cast<std::size_t>(i1 - i0);
+    const std::size_t first = std::min(n, capacity - p0);
+    fn(p0, p0 + first);
+    if (first < n)
+        fn(std::size_t{0}, n - first);
+}
+
+} // namespace
+
 SampleStore::SampleStore(QList<SampleChannel> channels, qsizetype capacity, qsizetype maxMarkers)
     : m_channels(std::move(channels)), m_capacity(qMax<qsizetype>(1, capacity)),
       m_maxMarkers(qMax<qsizetype>(0, maxMarkers)),
@@ -32,6 +50,21 @@ qint64 SampleStore::memoryBytes() const
         bytes += static_cast<qint64>(sizeof(SampleMarker)) +
                  m.text.size() * static_cast<qint64>(sizeof(QChar));
     return bytes;
+}
+
+void SampleStore::makeResident()
+{
+    if (m_resident)
+        return;
+    m_resident = true;
+    const auto cap = static_cast<std::size_t>(m_capacity);
+    // The physical slots of rows [size, capacity): where the next appends will write.
+    forEachSegment(m_head, cap, m_size, m_capacity, [&](std::size_t p, std::size_t end) {
+        std::fill(m_times.get() + p, m_times.get() + end, 0.0);
+        for (std::size_t c = 0; c < static_cast<std::size_t>(m_channels.size()); ++c)
+            std::fill(m_values.get() + c * cap + p, m_values.get() + c * cap + end,
+                      std::numeric_limits<float>::quiet_NaN());
+    });
 }
 
 int SampleStore::channelIndex(const QString &id) const
@@ -107,24 +140,6 @@ qsizetype SampleStore::upperBound(double t) const
     }
     return lo;
 }
-
-namespace {
-
-// Calls fn(firstPhysical, lastPhysical) for the (at most two) contiguous pieces of rows [i0, i1).
-template<typename Fn>
-void forEachSegment(std::size_t head, std::size_t capacity, qsizetype i0, qsizetype i1, Fn fn)
-{
-    if (i0 >= i1)
-        return;
-    const std::size_t p0 = (head + static_cast<std::size_t>(i0)) % capacity;
-    const auto n = static_cast<std::size_t>(i1 - i0);
-    const std::size_t first = std::min(n, capacity - p0);
-    fn(p0, p0 + first);
-    if (first < n)
-        fn(std::size_t{0}, n - first);
-}
-
-} // namespace
 
 std::vector<MinMaxBucket> SampleStore::decimate(int channel, double t0, double t1,
                                                 int buckets) const

@@ -6,6 +6,8 @@
 // Memory is fixed at construction: 8 bytes (double time) + 4 bytes (float) per channel per row.
 // The default (1 h at 200 Hz = 720 000 rows) with 5 channels: 720 000 × 28 B = 20 160 000 B
 // (19.2 MiB); markers add at most 1000 × (32 B + 256 UTF-16 chars) = 544 000 B (0.52 MiB).
+// The ring is allocated untouched (the system maps its pages on first write); makeResident()
+// touches it all at once, so a monitoring run does not creep up by 28 B a poll for an hour.
 // Values are floats: they come from 16-bit fieldbus words, and a float's 24-bit mantissa
 // resolves more than that.
 #pragma once
@@ -72,6 +74,11 @@ public:
     static qint64 ringBytes(qsizetype channels, qsizetype capacity);
     // Everything the store holds: the ring, the channel list and the markers.
     qint64 memoryBytes() const;
+    // Writes the rows not filled yet (their contents are never read), so the whole ring is
+    // resident from now on instead of growing page by page as it fills. Idempotent; O(capacity)
+    // the first time, O(1) after. Samples and markers are unchanged.
+    void makeResident();
+    bool isResident() const { return m_resident; }
 
     int channelCount() const { return static_cast<int>(m_channels.size()); }
     const QList<SampleChannel> &channels() const { return m_channels; }
@@ -151,6 +158,7 @@ private:
     std::size_t m_head = 0; // physical index of row 0
     qsizetype m_size = 0;
     quint64 m_dropped = 0;
+    bool m_resident = false;
     std::deque<SampleMarker> m_markers;
 };
 

@@ -7,6 +7,7 @@
 
 #include <QIODevice>
 #include <QTextStream>
+#include <cstring>
 #include <span>
 
 namespace vt::model {
@@ -31,16 +32,70 @@ TelegramLog::TelegramLog(qsizetype maxRecords, qint64 maxBytes, QObject *parent)
     : QObject(parent), m_maxRecords(qMax<qsizetype>(1, maxRecords)),
       m_maxBytes(qMax<qint64>(0, maxBytes))
 {
+    reserveRing(m_maxRecords);
     m_clock.start();
     m_notifyTimer.setSingleShot(true);
     m_notifyTimer.setInterval(kDefaultNotifyIntervalMs);
     connect(&m_notifyTimer, &QTimer::timeout, this, &TelegramLog::flush);
 }
 
+namespace {
+
+// A slot's frame buffer as it is when empty: room for kReservedFrameBytes, so copying a frame of
+// up to that size into it allocates nothing.
+QByteArray reservedBytes(qsizetype size)
+{
+    QByteArray bytes;
+    bytes.reserve(qMax(size, TelegramLog::kReservedFrameBytes));
+    return bytes;
+}
+
+// Copies `from` into the slot's own buffer (no allocation when it fits and nobody shares it).
+void copyBytes(QByteArray &slot, const QByteArray &from)
+{
+    if (!slot.isDetached() || slot.capacity() < from.size())
+        slot = reservedBytes(from.size());
+    slot.resize(from.size());
+    if (!from.isEmpty())
+        std::memcpy(slot.data(), from.constData(), static_cast<std::size_t>(from.size()));
+}
+
+// The string the log keeps for the last record, reused while the text stays the same.
+const QString &shared(QString &last, const QString &text)
+{
+    if (last != text)
+        last = text;
+    return last;
+}
+
+} // namespace
+
+void TelegramLog::reserveRing(qsizetype capacity)
+{
+    std::vector<TelegramRecord> ring(static_cast<std::size_t>(capacity));
+    for (TelegramRecord &r : ring)
+        r.bytes = reservedBytes(0);
+    const qsizetype keep = qMin(m_size, capacity);
+    for (qsizetype i = 0; i < keep; ++i)
+        ring[static_cast<std::size_t>(i)] = std::move(m_ring[slot(m_size - keep + i)]);
+    for (qsizetype i = 0; i < m_size - keep; ++i) {
+        m_bytes -= recordCost(m_ring[slot(i)]);
+        ++m_dropped;
+    }
+    const bool dropped = keep < m_size;
+    m_ring = std::move(ring);
+    m_head = 0;
+    m_size = keep;
+    if (dropped)
+        scheduleNotify();
+}
+
 void TelegramLog::setLimits(qsizetype maxRecords, qint64 maxBytes)
 {
     m_maxRecords = qMax<qsizetype>(1, maxRecords);
     m_maxBytes = qMax<qint64>(0, maxBytes);
+    if (m_maxRecords != static_cast<qsizetype>(m_ring.size()))
+        reserveRing(m_maxRecords);
     enforceLimits();
 }
 
@@ -57,8 +112,21 @@ quint64 TelegramLog::append(TelegramRecord record)
         record.monotonicNs = m_clock.nsecsElapsed();
     if (!record.wallClock.isValid())
         record.wallClock = QDateTime::currentDateTimeUtc();
-    m_bytes += recordCost(record);
-    m_records.push_back(std::move(record));
+    if (m_size == static_cast<qsizetype>(m_ring.size()))
+        dropOldest();
+    TelegramRecord &r = m_ring[slot(m_size)];
+    ++m_size;
+    r.seq = record.seq;
+    r.monotonicNs = record.monotonicNs;
+    r.wallClock = record.wallClock;
+    r.direction = record.direction;
+    r.link = shared(m_link, record.link);
+    r.protocol = shared(m_protocol, record.protocol);
+    r.module = record.module;
+    copyBytes(r.bytes, record.bytes);
+    r.status = record.status;
+    r.note = std::move(record.note);
+    m_bytes += recordCost(r);
     enforceLimits();
     scheduleNotify();
     return m_nextSeq - 1;
@@ -88,7 +156,9 @@ quint64 TelegramLog::appendTimeout(const QString &link, const QString &protocol,
 
 void TelegramLog::clear()
 {
-    m_records.clear();
+    while (m_size > 0)
+        dropOldest();
+    m_head = 0;
     m_bytes = 0;
     m_dropped = 0;
     m_reportedFirst = m_reportedEnd = m_nextSeq;
@@ -100,7 +170,7 @@ const TelegramRecord *TelegramLog::find(quint64 seq) const
 {
     if (seq < firstSeq() || seq >= m_nextSeq)
         return nullptr;
-    return &m_records[static_cast<std::size_t>(seq - firstSeq())];
+    return &at(static_cast<qsizetype>(seq - firstSeq()));
 }
 
 void TelegramLog::setPaused(bool paused)
@@ -121,14 +191,25 @@ void TelegramLog::setNotifyInterval(int ms)
 void TelegramLog::enforceLimits()
 {
     bool dropped = false;
-    while (size() > m_maxRecords || (m_bytes > m_maxBytes && m_records.size() > 1)) {
-        m_bytes -= recordCost(m_records.front());
-        m_records.pop_front();
-        ++m_dropped;
+    while (size() > m_maxRecords || (m_bytes > m_maxBytes && m_size > 1)) {
+        dropOldest();
         dropped = true;
     }
     if (dropped)
         scheduleNotify();
+}
+
+void TelegramLog::dropOldest()
+{
+    TelegramRecord &r = m_ring[m_head];
+    m_bytes -= recordCost(r);
+    // What the cap counted goes now: a long frame's own buffer and the note.
+    if (r.bytes.capacity() > kKeptFrameBytes)
+        r.bytes = reservedBytes(0);
+    r.note = QString();
+    m_head = (m_head + 1) % m_ring.size();
+    --m_size;
+    ++m_dropped;
 }
 
 void TelegramLog::scheduleNotify()
@@ -287,7 +368,7 @@ bool TelegramLog::writeCsv(QIODevice &out, const SummaryOptions &options,
     const QStringList header{"seq",    "time_s", "wall_clock_utc", "direction", "link", "protocol",
                              "module", "bytes",  "status",         "summary",   "note"};
     s << header.join(sep) << '\n';
-    for (const TelegramRecord &r : m_records) {
+    for (const TelegramRecord &r : *this) {
         if (!filter.accepts(r))
             continue;
         QString seconds = secondsText(r.monotonicNs, 9);
@@ -313,7 +394,7 @@ bool TelegramLog::writeText(QIODevice &out, const SummaryOptions &options,
           << tr("%n older record(s) dropped", nullptr,
                 static_cast<int>(qMin<quint64>(m_dropped, INT_MAX)));
     s << '\n';
-    for (const TelegramRecord &r : m_records) {
+    for (const TelegramRecord &r : *this) {
         if (!filter.accepts(r))
             continue;
         s << '\n'

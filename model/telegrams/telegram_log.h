@@ -1,6 +1,13 @@
 // TelegramLog: the bounded record of every frame in and out of a session that the
 // telegram inspector lists, filters and saves. Owner: the session's owner (app);
 // GUI thread only — appends, reads and signals all happen on the thread the log lives on.
+//
+// Memory is reserved at construction, so a log reaching its cap does not add megabytes later: a
+// ring of maxRecords records, each with room for a frame of kReservedFrameBytes (frames up to
+// that size are copied into it; longer ones get a larger buffer, see kKeptFrameBytes). The link
+// and protocol texts of consecutive records share one string. With the defaults: 100 000 ×
+// (sizeof(TelegramRecord) + one heap block of kReservedFrameBytes) ≈ 20 MB (docs/PERFORMANCE.md,
+// "GUI resident memory over 30 minutes").
 #pragma once
 
 #include "core/direction.h"
@@ -16,8 +23,9 @@
 #include <QObject>
 #include <QString>
 #include <QTimer>
-#include <deque>
+#include <iterator>
 #include <optional>
+#include <vector>
 
 class QIODevice;
 
@@ -85,6 +93,13 @@ class TelegramLog : public QObject
     Q_OBJECT
 public:
     static constexpr qsizetype kDefaultMaxRecords = 100'000;
+    // Room each ring slot reserves for a frame's bytes: Modbus RTU/TCP requests and short replies
+    // (a TCP read of 5 registers: 19 bytes) and CANopen records (16 bytes) fit. A slot keeps a
+    // buffer grown for a longer frame up to kKeptFrameBytes (a 42-byte node image), so such links
+    // do not allocate per frame either once the ring went round; longer buffers go with their
+    // record.
+    static constexpr qsizetype kReservedFrameBytes = 32;
+    static constexpr qsizetype kKeptFrameBytes = 64;
     static constexpr qint64 kDefaultMaxBytes = 64 * 1024 * 1024;
     static constexpr int kDefaultNotifyIntervalMs =
         20; // ≤ 50 notifications/s however fast frames arrive
@@ -111,9 +126,12 @@ public:
     // Removes every record and resets droppedCount(); emits cleared() at once.
     void clear();
 
-    qsizetype size() const { return static_cast<qsizetype>(m_records.size()); }
-    bool isEmpty() const { return m_records.empty(); }
-    quint64 firstSeq() const { return m_nextSeq - m_records.size(); } // == nextSeq() when empty
+    qsizetype size() const { return m_size; }
+    bool isEmpty() const { return m_size == 0; }
+    quint64 firstSeq() const
+    {
+        return m_nextSeq - static_cast<quint64>(m_size);
+    } // == nextSeq() when empty
     quint64 nextSeq() const { return m_nextSeq; }
     quint64 droppedCount() const { return m_dropped; } // dropped by the caps since start / clear()
     qint64 storedBytes() const { return m_bytes; }
@@ -124,12 +142,40 @@ public:
     } // the clock records are stamped with
 
     const TelegramRecord *find(quint64 seq) const; // nullptr once dropped (or not yet appended)
-    const TelegramRecord &at(qsizetype index) const
+    const TelegramRecord &at(qsizetype index) const { return m_ring[slot(index)]; } // 0 = oldest
+
+    // Oldest to newest.
+    class ConstIterator
     {
-        return m_records[static_cast<std::size_t>(index)];
-    } // 0 = oldest
-    std::deque<TelegramRecord>::const_iterator begin() const { return m_records.begin(); }
-    std::deque<TelegramRecord>::const_iterator end() const { return m_records.end(); }
+    public:
+        using iterator_category = std::forward_iterator_tag;
+        using value_type = TelegramRecord;
+        using difference_type = std::ptrdiff_t;
+        using pointer = const TelegramRecord *;
+        using reference = const TelegramRecord &;
+        ConstIterator() = default;
+        ConstIterator(const TelegramLog *log, qsizetype index) : m_log(log), m_index(index) {}
+        reference operator*() const { return m_log->at(m_index); }
+        pointer operator->() const { return &m_log->at(m_index); }
+        ConstIterator &operator++()
+        {
+            ++m_index;
+            return *this;
+        }
+        ConstIterator operator++(int)
+        {
+            ConstIterator before = *this;
+            ++m_index;
+            return before;
+        }
+        bool operator==(const ConstIterator &) const = default;
+
+    private:
+        const TelegramLog *m_log = nullptr;
+        qsizetype m_index = 0;
+    };
+    ConstIterator begin() const { return {this, 0}; }
+    ConstIterator end() const { return {this, m_size}; }
 
     // Pause freezes the views, not the recording: a paused log keeps every frame (a capture must
     // not have holes) but withholds appended() until resumed, then reports what arrived in one
@@ -167,10 +213,19 @@ signals:
     void pausedChanged(bool paused);
 
 private:
+    std::size_t slot(qsizetype index) const
+    {
+        return (m_head + static_cast<std::size_t>(index)) % m_ring.size();
+    }
+    void reserveRing(qsizetype capacity); // keeps the newest records that fit
+    void dropOldest();
     void enforceLimits();
     void scheduleNotify();
 
-    std::deque<TelegramRecord> m_records;
+    std::vector<TelegramRecord> m_ring; // maxRecords slots, allocated once per cap
+    std::size_t m_head = 0;             // slot of the oldest record
+    qsizetype m_size = 0;
+    QString m_link, m_protocol; // the texts of the last record, shared by the next ones
     qsizetype m_maxRecords;
     qint64 m_maxBytes;
     qint64 m_bytes = 0;

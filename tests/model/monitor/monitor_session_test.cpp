@@ -67,8 +67,10 @@ TEST(MonitorSession, MemoryStaysWithinTheStoreBoundAfterALongRun)
     const qint64 bytesEmpty = session.memoryBytes();
     EXPECT_EQ(bytesEmpty, store->memoryBytes());
     EXPECT_GE(bytesEmpty, model::SampleStore::ringBytes(5, kRows));
-    session.setRate(0); // as fast as the link allows
+    EXPECT_FALSE(store->isResident()); // connecting alone does not take the ring's memory
+    session.setRate(0);                // as fast as the link allows
     session.start();
+    EXPECT_TRUE(store->isResident()); // starting does, all at once (issue #21)
     ASSERT_TRUE(waitUntil([&] { return session.samples(module) >= 20 * kRows; }, kWaitMs));
     session.stop();
     EXPECT_EQ(store->size(), kRows);

@@ -1,12 +1,14 @@
 // SampleStore: issue #8 — a ring sized for ≥ 1 h at 200 Hz for 5 channels with a stated,
 // fixed memory footprint, and min/max decimation to about one pair per pixel.
 #include "model/monitor/sample_store.h"
+#include "resident_memory.h"
 
 #include <QBuffer>
 #include <QLocale>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
+#include <malloc.h>
 #include <random>
 
 using vt::model::MinMaxBucket;
@@ -432,4 +434,52 @@ TEST(SampleStore, CsvOfTheFirstVersionStillReads)
     EXPECT_EQ(back->markers().front().text, "a, b");
     EXPECT_FALSE(read("# ValveTune samples|1\ntime_s,marker\n", &error).has_value());
     EXPECT_EQ(error, "line 1: not a ValveTune sample file");
+}
+
+// Issue #21 (endurance): the ring's hour becomes resident when monitoring starts, not 28 B a
+// poll over the hour; filling it afterwards adds nothing.
+TEST(SampleStore, MakeResidentTouchesTheRingOnceAndFillingItAddsNoMemory)
+{
+    constexpr qsizetype kRows = 400'000; // 400 000 × (8 + 5 × 4) B = 11.2 MB
+    // Fresh pages for the ring, as in a new process: not heap memory earlier tests made resident
+    // and freed (glibc reuses free heap chunks, and raises its mmap threshold after large frees).
+    mallopt(M_MMAP_THRESHOLD, 1024 * 1024);
+    malloc_trim(0);
+    SampleStore store(channels(5), kRows);
+    const qint64 ring = SampleStore::ringBytes(5, kRows);
+    const qint64 before = vt::test::residentBytes();
+    ASSERT_GT(before, 0);
+    EXPECT_FALSE(store.isResident());
+    store.makeResident();
+    EXPECT_TRUE(store.isResident());
+    const qint64 resident = vt::test::residentBytes();
+    EXPECT_GE(resident - before, ring * 9 / 10);
+
+    for (qsizetype i = 0; i < kRows; ++i)
+        appendRow(store, static_cast<double>(i) * 0.005, {1, 2, 3, 4, 5});
+    EXPECT_EQ(store.size(), kRows);
+    EXPECT_LT(vt::test::residentBytes() - resident, ring / 20);
+}
+
+TEST(SampleStore, MakeResidentKeepsTheSamplesOfAWrappedRing)
+{
+    SampleStore store(channels(2), 10);
+    for (int i = 0; i < 15; ++i)
+        appendRow(store, i, {double(i), -double(i)});
+    store.makeResident();
+    store.makeResident(); // idempotent
+    ASSERT_EQ(store.size(), 10);
+    for (qsizetype i = 0; i < 10; ++i) {
+        EXPECT_EQ(store.timeAt(i), double(5 + i));
+        EXPECT_EQ(store.valueAt(1, i), -double(5 + i));
+    }
+    SampleStore partly(channels(2), 10);
+    for (int i = 0; i < 4; ++i)
+        appendRow(partly, i, {double(i), double(i)});
+    partly.makeResident();
+    ASSERT_EQ(partly.size(), 4);
+    EXPECT_EQ(partly.valueAt(0, 3), 3.0);
+    appendRow(partly, 4, {4, 4});
+    EXPECT_EQ(partly.timeAt(4), 4.0);
+    EXPECT_EQ(partly.decimate(0, 0, 4, 100).size(), 5u);
 }

@@ -2,6 +2,7 @@
 // of issue #8 (inspector: filters, pause, clear, CSV and text export).
 #include "modbus/crc.h"
 #include "model/telegrams/telegram_log.h"
+#include "resident_memory.h"
 
 #include <QBuffer>
 #include <QSignalSpy>
@@ -64,6 +65,58 @@ TEST(TelegramLog, RingWrapKeepsTheNewestAndCountsDropped)
     EXPECT_EQ(log.at(0).seq, 7u);
     EXPECT_EQ(log.at(4).seq, 11u);
     EXPECT_EQ(log.storedBytes(), 5 * TelegramLog::recordCost(log.at(0)));
+}
+
+// Issue #21 (endurance): the log's memory is taken when it is made; filling it up to its cap and
+// running on adds nothing (a 19-byte Modbus TCP reply, the link text made anew for every frame as
+// the recorder does).
+TEST(TelegramLog, FillingUpToTheCapAndBeyondAddsNoMemory)
+{
+    constexpr qsizetype kRecords = 50'000;
+    TelegramLog log(kRecords, TelegramLog::kDefaultMaxBytes);
+    const QByteArray reply = payload(19);
+    const qint64 before = vt::test::residentBytes();
+    ASSERT_GT(before, 0);
+    for (qsizetype i = 0; i < 2 * kRecords; ++i)
+        log.append(i % 2 ? Direction::Response : Direction::Request,
+                   QStringLiteral("sim dma-pn-v51 ×%1").arg(3), kRtu, 1, reply);
+    EXPECT_EQ(log.size(), kRecords);
+    EXPECT_EQ(log.at(0).bytes, reply);
+    // A log that grew per record would hold ≥ 50 000 × (sizeof(TelegramRecord) + one frame and
+    // one link text on the heap) ≈ 10 MB more now.
+    EXPECT_LT(vt::test::residentBytes() - before, 1024 * 1024);
+}
+
+TEST(TelegramLog, LongFramesAndNotesKeepTheirBytesWhileHeld)
+{
+    TelegramLog log(3, TelegramLog::kDefaultMaxBytes);
+    const QByteArray longFrame = payload(300, 'L');
+    log.append(Direction::Response, kLink, kRtu, 1, longFrame, Status::DeviceException,
+               QStringLiteral("illegal data address"));
+    const QByteArray held = log.at(0).bytes; // a view holding a copy
+    log.append(Direction::Request, kLink, kRtu, 1, payload(5, 'a'));
+    log.append(Direction::Request, kLink, kRtu, 1, payload(40, 'b'));
+    EXPECT_EQ(log.at(0).bytes, longFrame);
+    EXPECT_EQ(log.at(0).note, QStringLiteral("illegal data address"));
+    EXPECT_EQ(log.at(2).bytes, payload(40, 'b'));
+    // The slot of the long frame is reused; the copy a view held is untouched.
+    log.append(Direction::Request, kLink, kRtu, 1, payload(2, 'c'));
+    log.append(Direction::Request, kLink, kRtu, 1, payload(3, 'd'));
+    EXPECT_EQ(held, longFrame);
+    EXPECT_EQ(log.at(0).bytes, payload(40, 'b'));
+    EXPECT_TRUE(log.at(0).note.isEmpty());
+    EXPECT_EQ(log.at(2).bytes, payload(3, 'd'));
+    EXPECT_EQ(log.storedBytes(), TelegramLog::recordCost(log.at(0)) +
+                                     TelegramLog::recordCost(log.at(1)) +
+                                     TelegramLog::recordCost(log.at(2)));
+    log.append(Direction::Response, kLink, kRtu, 1, {}, Status::Timeout);
+    EXPECT_TRUE(log.at(2).bytes.isEmpty());
+    log.setLimits(5, TelegramLog::kDefaultMaxBytes); // a larger ring keeps every record
+    EXPECT_EQ(log.size(), 3);
+    EXPECT_EQ(log.at(0).bytes, payload(2, 'c'));
+    log.append(Direction::Request, kLink, kRtu, 1, payload(1, 'e'));
+    EXPECT_EQ(log.size(), 4);
+    EXPECT_EQ(log.at(3).seq, log.nextSeq() - 1);
 }
 
 TEST(TelegramLog, ByteCapDropsTheOldestButKeepsTheNewest)
