@@ -8,6 +8,20 @@
 
 namespace vt::test {
 
+// AddressSanitizer keeps freed memory in quarantine and puts redzones around every allocation:
+// resident memory then grows with every temporary and says nothing about the program's own use.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kResidentMemoryIsMeaningful = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kResidentMemoryIsMeaningful = false;
+#else
+inline constexpr bool kResidentMemoryIsMeaningful = true;
+#endif
+#else
+inline constexpr bool kResidentMemoryIsMeaningful = true;
+#endif
+
 // Resident bytes of this process now; -1 where /proc/self/statm cannot be read.
 inline qint64 residentBytes()
 {
