@@ -211,11 +211,13 @@ void Session::sendAttempt()
     if (p.attempts > 1)
         ++m_counters.retries;
     const QByteArray frame = link::toByteArray(bytes);
-    emit frameSent(frame, p.transaction.module, elapsedNs());
+    // Read before frameSent: a slot may end the link at once, and with it this request (`p`).
     const bool answered =
         p.transaction.kind != dev::access::TransactionKind::Raw || p.transaction.expectsReply;
-    m_link->expectReply(
-        answered ? static_cast<qsizetype>(m_adapter->expectedReplyBytes(p.transaction)) : 0);
+    const auto replyBytes =
+        answered ? static_cast<qsizetype>(m_adapter->expectedReplyBytes(p.transaction)) : 0;
+    emit frameSent(frame, p.transaction.module, elapsedNs());
+    m_link->expectReply(replyBytes);
     m_link->send(frame);
     // A link may fail inside send() (FaultLink's cut, a serial write error) and report it at
     // once: failEverything() has then completed this request and `p` is gone.
