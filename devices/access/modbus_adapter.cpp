@@ -13,6 +13,13 @@ namespace {
 constexpr std::uint16_t kVersId = 0;  // OPAT manual §4 / DMA manuals: "Vers", raw = version × 100
 constexpr std::uint16_t kModeId = 95; // E00, the mode of the module
 
+// The function code of the answer to `t` (not Raw): FC 6 echoes a write, FC 3 answers the rest.
+std::uint8_t answerFunction(const Transaction &t)
+{
+    return t.kind == TransactionKind::Write ? modbus::kFcWriteSingleRegister
+                                            : modbus::kFcReadHoldingRegisters;
+}
+
 } // namespace
 
 std::uint8_t ModbusPduAdapter::unitOf(const Transaction &t) const
@@ -65,9 +72,7 @@ Reply ModbusPduAdapter::replyFromPdu(const Transaction &t, std::uint8_t unit,
         return reply;
     }
     if (const auto *exception = std::get_if<modbus::ExceptionResponse>(&pdu)) {
-        const auto expected = t.kind == TransactionKind::Write ? modbus::kFcWriteSingleRegister
-                                                               : modbus::kFcReadHoldingRegisters;
-        if (t.kind != TransactionKind::Raw && exception->function != expected) {
+        if (t.kind != TransactionKind::Raw && exception->function != answerFunction(t)) {
             reply.status = ReplyStatus::Mismatch;
             return reply;
         }
@@ -183,9 +188,7 @@ bool ModbusRtuAdapter::startsAnswerTo(std::span<const std::uint8_t> bytes,
         return false;
     if (bytes.size() < 2)
         return true;
-    const std::uint8_t function = t.kind == TransactionKind::Write
-                                      ? modbus::kFcWriteSingleRegister
-                                      : modbus::kFcReadHoldingRegisters;
+    const std::uint8_t function = answerFunction(t);
     if (bytes[1] == (function | modbus::kExceptionBit))
         return bytes.size() < modbus::kRtuOverhead + 2; // an exception: unit, fc, code, CRC
     if (bytes[1] != function)

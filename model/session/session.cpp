@@ -223,12 +223,11 @@ void Session::sendAttempt()
     // once: failEverything() has then completed this request and `p` is gone.
     if (!m_current)
         return;
-    if (p.transaction.kind == dev::access::TransactionKind::Raw && !p.transaction.expectsReply) {
+    if (!answered) {
         finish(std::move(m_current), Outcome{OutcomeStatus::Ok, {}, p.attempts, true, {}});
         return;
     }
-    const auto wait = m_options.timeout(bytes.size(), m_adapter->expectedReplyBytes(p.transaction));
-    m_timeout.start(wait);
+    m_timeout.start(m_options.timeout(bytes.size(), static_cast<std::size_t>(replyBytes)));
 }
 
 void Session::onReceived(const QByteArray &bytes)
