@@ -25,6 +25,15 @@ std::unique_ptr<SimRig> silentNode()
     return openSim({"dma-pn-v51", 1, {}, silent, options});
 }
 
+// Reads every readable row of the rig's module into `result`; true once a request is on the wire.
+bool startReadingEverything(SimRig &rig, std::optional<model::ReadResult> &result)
+{
+    const auto rows = model::readableRows(rig.dictionary(), rig.simModule().version(), "3");
+    rig.access().read(rig.address(), rows, Priority::User,
+                      [&result](const model::ReadResult &r) { result = r; });
+    return waitUntil([&] { return rig.session().isBusy(); });
+}
+
 struct Ended
 {
     std::string name;
@@ -114,11 +123,8 @@ TEST(SessionEnd, AReadPendingWhenTheConnectionGoesEndsCancelledNotFailed)
 {
     auto rig = silentNode();
     ASSERT_TRUE(rig);
-    const auto rows = model::readableRows(rig->dictionary(), rig->simModule().version(), "3");
     std::optional<model::ReadResult> result;
-    rig->access().read(rig->address(), rows, Priority::User,
-                       [&](const model::ReadResult &r) { result = r; });
-    ASSERT_TRUE(waitUntil([&] { return rig->session().isBusy(); }));
+    ASSERT_TRUE(startReadingEverything(*rig, result));
     rig->connection.reset();
     ASSERT_TRUE(result);
     EXPECT_TRUE(result->cancelled);
@@ -132,11 +138,8 @@ TEST(SessionEnd, CompletionsDecidedByALostLinkAreDeliveredWhenTheSessionGoesAtOn
     // request, the destructor delivers what the event loop had not yet.
     auto rig = silentNode();
     ASSERT_TRUE(rig);
-    const auto rows = model::readableRows(rig->dictionary(), rig->simModule().version(), "3");
     std::optional<model::ReadResult> result;
-    rig->access().read(rig->address(), rows, Priority::User,
-                       [&](const model::ReadResult &r) { result = r; });
-    ASSERT_TRUE(waitUntil([&] { return rig->session().isBusy(); }));
+    ASSERT_TRUE(startReadingEverything(*rig, result));
     rig->connection->close();
     EXPECT_FALSE(result);
     rig->connection.reset();
