@@ -61,6 +61,40 @@ void BM_Decimate(benchmark::State &state)
     }
     state.SetItemsProcessed(state.iterations() * kChannels * kRows);
 }
-BENCHMARK(BM_Decimate)->Arg(1000)->Arg(4000);
+BENCHMARK(BM_Decimate)->Arg(1000)->Arg(4000)->Arg(200)->Arg(100);
+
+// The dense case the block summaries are for: a whole hour at 200 Hz (the default ring, 720 000
+// rows, wrapped) in a 1000-pixel plot, 720 rows per slice; noisy values, so the extremes move.
+void BM_DecimateHour(benchmark::State &state)
+{
+    static const SampleStore s = [] {
+        QList<vt::model::SampleChannel> channels;
+        for (int c = 0; c < kChannels; ++c)
+            channels.append({QStringLiteral("d1.%1").arg(7 + c),
+                             QStringLiteral("channel %1").arg(c), QString()});
+        SampleStore filled(channels);
+        quint32 noise = 12345;
+        double values[kChannels] = {};
+        for (qsizetype i = 0; i < filled.capacity() + 1000; ++i) {
+            const double t = static_cast<double>(i) * 0.005;
+            for (int c = 0; c < kChannels; ++c) {
+                noise = noise * 1664525u + 1013904223u;
+                values[c] = std::sin(t * (c + 1)) * 100.0 + static_cast<double>(noise >> 24);
+            }
+            filled.append(t, values);
+        }
+        return filled;
+    }();
+    QList<double> times, values;
+    for (auto _ : state) {
+        for (int c = 0; c < kChannels; ++c) {
+            SampleStore::toPolyline(s.decimate(c, s.firstTime(), s.lastTime(), 1000), times,
+                                    values);
+            benchmark::DoNotOptimize(values.data());
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * kChannels * s.size());
+}
+BENCHMARK(BM_DecimateHour)->Unit(benchmark::kMicrosecond);
 
 } // namespace

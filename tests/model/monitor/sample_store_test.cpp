@@ -41,9 +41,10 @@ TEST(SampleStore, DefaultHoldsOneHourAt200HzWithAStatedFootprint)
 {
     SampleStore s(channels(5));
     EXPECT_EQ(s.capacity(), 720'000);
-    EXPECT_EQ(SampleStore::ringBytes(5, 720'000), 20'160'000); // 28 B per row
-    EXPECT_GE(s.memoryBytes(), 20'160'000);
-    EXPECT_LT(s.memoryBytes(), 20'170'000);
+    // 28 B per row, and 12 B per channel for every 32 rows' summary (22 500 blocks + 2)
+    EXPECT_EQ(SampleStore::ringBytes(5, 720'000), 720'000 * 28 + 22'502 * 5 * 12);
+    EXPECT_GE(s.memoryBytes(), 21'510'120);
+    EXPECT_LT(s.memoryBytes(), 21'520'000);
 }
 
 TEST(SampleStore, MemoryStaysFixedAfterTwoHoursAt200Hz)
@@ -127,14 +128,15 @@ TEST(SampleStore, TimeQueriesAtTheRingEdges)
 namespace {
 
 // What every bucket must hold, computed the slow way.
-void expectMatchesBruteForce(const SampleStore &s, double t0, double t1, int buckets)
+void expectMatchesBruteForce(const SampleStore &s, double t0, double t1, int buckets,
+                             int channel = 0)
 {
-    const std::vector<MinMaxBucket> got = s.decimate(0, t0, t1, buckets);
+    const std::vector<MinMaxBucket> got = s.decimate(channel, t0, t1, buckets);
     std::vector<MinMaxBucket> want;
     int current = -1;
     for (qsizetype i = 0; i < s.size(); ++i) {
         const double t = s.timeAt(i);
-        const double v = s.valueAt(0, i);
+        const double v = s.valueAt(channel, i);
         if (t < t0 || t > t1 || std::isnan(v))
             continue;
         const int b = std::min(buckets - 1, static_cast<int>((t - t0) / ((t1 - t0) / buckets)));
@@ -210,6 +212,49 @@ TEST(SampleStore, DecimationKeepsEveryExtremeAndASingleSpike)
     EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
     EXPECT_TRUE(v.contains(1000.0));
     EXPECT_TRUE(v.contains(-1000.0));
+}
+
+// decimate() takes whole blocks of kBlockRows rows from their summaries. Shapes that could trip
+// that: a capacity that is not a multiple of the block (a block wraps around the ring's end), a
+// ring that wrapped many times, ties (the first occurrence must win, as row by row), runs of NaN
+// longer than a block, many rows at the same time, a clear() in the middle, makeResident() before
+// or after rows arrived. Each is compared with reading every row.
+TEST(SampleStore, DecimationFromBlockSummariesMatchesReadingEveryRow)
+{
+    std::mt19937 rng(21);
+    std::uniform_int_distribution<int> level(-3, 3); // few levels: many ties
+    std::uniform_int_distribution<int> percent(0, 99);
+    for (const qsizetype capacity :
+         {qsizetype(31), qsizetype(32), qsizetype(1000), qsizetype(1003), qsizetype(5000)}) {
+        for (const int rows : {20, 900, 3 * 1003 + 17, 12'345}) {
+            SCOPED_TRACE(testing::Message() << "capacity " << capacity << ", rows " << rows);
+            SampleStore s(channels(2), capacity);
+            if (rows == 900)
+                s.makeResident(); // summaries touched before any row
+            double t = 0;
+            int nanRun = 0;
+            for (int i = 0; i < rows; ++i) {
+                if (rows == 12'345 && i == 5000)
+                    s.clear(); // the row numbers start again at 0
+                if (rows == 3 * 1003 + 17 && i == 2000)
+                    s.makeResident(); // after the ring wrapped
+                t += percent(rng) < 20 ? 0.0 : 0.001 * (1 + percent(rng) % 3); // equal times too
+                if (nanRun == 0 && percent(rng) < 2)
+                    nanRun = 40; // longer than a block
+                const double v = nanRun > 0 ? (--nanRun, kNaN) : double(level(rng));
+                appendRow(s, t, {v, -v});
+            }
+            const double first = s.firstTime();
+            const double last = s.lastTime();
+            for (const int buckets : {1, 3, 7, 50, 800}) {
+                expectMatchesBruteForce(s, first, last, buckets, 1);
+                expectMatchesBruteForce(s, first, last, buckets);
+                expectMatchesBruteForce(s, first + (last - first) / 3, last, buckets);
+                expectMatchesBruteForce(s, first, first + (last - first) / 7, buckets);
+            }
+            expectMatchesBruteForce(s, last + 1, last + 2, 10); // nothing in range
+        }
+    }
 }
 
 TEST(SampleStore, SparseRangesDecimateToEverySample)
