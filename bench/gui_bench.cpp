@@ -165,6 +165,7 @@ void redraw720k()
             plot.graph(i)->setAdaptiveSampling(decimate); // whole: no sampling of any kind
         std::vector<double> ms;
         for (int i = 0; i < times; ++i) {
+            plot.forgetDecimation(); // a full redraw, as after a zoom: every row of the hour
             QElapsedTimer t;
             t.start();
             plot.loadRange(store.firstTime(), store.lastTime());

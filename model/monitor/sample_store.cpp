@@ -1,27 +1,11 @@
 #include "sample_store.h"
 
+#include "model/monitor/ring_segments.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace vt::model {
-
-namespace {
-
-// Calls fn(firstPhysical, lastPhysical) for the (at most two) contiguous pieces of rows [i0, i1).
-template<typename Fn>
-void forEachSegment(std::size_t head, std::size_t capacity, qsizetype i0, qsizetype i1, Fn fn)
-{
-    if (i0 >= i1)
-        return;
-    const std::size_t p0 = (head + static_cast<std::size_t>(i0)) % capacity;
-    const auto n = static_cast<std::size_t>(i1 - i0);
-    const std::size_t first = std::min(n, capacity - p0);
-    fn(p0, p0 + first);
-    if (first < n)
-        fn(std::size_t{0}, n - first);
-}
-
-} // namespace
 
 SampleStore::SampleStore(QList<SampleChannel> channels, qsizetype capacity, qsizetype maxMarkers)
     : m_channels(std::move(channels)), m_capacity(qMax<qsizetype>(1, capacity)),
@@ -134,6 +118,7 @@ void SampleStore::clear()
     m_head = 0;
     m_size = 0;
     m_dropped = 0;
+    ++m_clears;
     m_markers.clear();
 }
 
@@ -146,166 +131,12 @@ double SampleStore::valueAt(int channel, qsizetype i) const
 
 qsizetype SampleStore::lowerBound(double t) const
 {
-    qsizetype lo = 0;
-    qsizetype hi = m_size;
-    while (lo < hi) {
-        const qsizetype mid = lo + (hi - lo) / 2;
-        if (timeAt(mid) < t)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    return firstRowNot(0, m_size, [t](double time) { return time < t; });
 }
 
 qsizetype SampleStore::upperBound(double t) const
 {
-    qsizetype lo = 0;
-    qsizetype hi = m_size;
-    while (lo < hi) {
-        const qsizetype mid = lo + (hi - lo) / 2;
-        if (timeAt(mid) <= t)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
-std::vector<MinMaxBucket> SampleStore::decimate(int channel, double t0, double t1,
-                                                int buckets) const
-{
-    std::vector<MinMaxBucket> out;
-    if (channel < 0 || channel >= channelCount() || buckets <= 0 || !(t0 <= t1))
-        return out;
-    const qsizetype i0 = lowerBound(t0);
-    const qsizetype i1 = upperBound(t1);
-    const double width = (t1 - t0) / buckets;
-    const float *values = column(channel);
-    const auto cap = static_cast<std::size_t>(m_capacity);
-    int bucket = -1;
-    double nextEdge = -std::numeric_limits<double>::infinity(); // first time of the next slice
-    // Row by row: the first row of a slice opens it, later ones fold into it. Ties keep the
-    // first occurrence.
-    const auto fold = [&out](double t, double value) {
-        MinMaxBucket &m = out.back();
-        if (value < m.min) {
-            m.min = value;
-            m.tMin = t;
-        }
-        if (value > m.max) {
-            m.max = value;
-            m.tMax = t;
-        }
-    };
-    const auto row = [&](double t, float v) { // false: the row opened a new slice
-        if (std::isnan(v))
-            return true;
-        const auto value = static_cast<double>(v);
-        if (t >= nextEdge) {
-            const int b = width > 0 ? std::min(buckets - 1, static_cast<int>((t - t0) / width)) : 0;
-            if (b != bucket) {
-                bucket = b;
-                nextEdge = b == buckets - 1 ? std::numeric_limits<double>::infinity()
-                                            : t0 + (b + 1) * width;
-                out.push_back({t, value, t, value});
-                return false;
-            }
-        }
-        fold(t, value);
-        return true;
-    };
-    if ((i1 - i0) / buckets < 4 * kBlockRows) { // sparse: a few blocks per slice at most
-        forEachSegment(m_head, cap, i0, i1, [&](std::size_t p, std::size_t end) {
-            for (; p < end; ++p)
-                row(m_times[p], values[p]);
-        });
-        return out;
-    }
-
-    // Dense: once a row opens a slice, every row before the slice's end (found by galloping
-    // from there) folds into it, so whole blocks in between are taken from their summaries (the
-    // same extremes, in the same order); only the rows before the first and after the last whole
-    // block are read. Positions advance by addition, and a block's extreme's time is read only
-    // when it is a new extreme of the slice: on a large ring the reads that miss the cache, not
-    // the comparisons, are what a redraw costs.
-    const BlockSummary *blocks = summaries(channel);
-    const auto blockCount = static_cast<std::size_t>(m_blockSlots);
-    const auto wrap = [cap](std::size_t p) { return p < cap ? p : p - cap; };
-    const auto foldRows = [&](qsizetype from, qsizetype to) {
-        forEachSegment(m_head, cap, from, to, [&](std::size_t p, std::size_t end) {
-            for (; p < end; ++p)
-                if (!std::isnan(values[p]))
-                    fold(m_times[p], static_cast<double>(values[p]));
-        });
-    };
-    const auto firstAtOrAfter = [this](double t, qsizetype from, qsizetype to) {
-        qsizetype lo = from;
-        qsizetype hi = from;
-        for (qsizetype step = 1; hi < to && timeAt(hi) < t; step *= 2) {
-            lo = hi + 1;
-            hi += step;
-        }
-        hi = std::min(hi, to);
-        while (lo < hi) {
-            const qsizetype mid = lo + (hi - lo) / 2;
-            if (timeAt(mid) < t)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        return lo;
-    };
-    for (qsizetype i = i0; i < i1;) {
-        const std::size_t p = physical(i++);
-        if (row(m_times[p], values[p]))
-            continue;
-        const qsizetype end = std::isinf(nextEdge) ? i1 : firstAtOrAfter(nextEdge, i, i1);
-        const auto intoBlock = static_cast<qsizetype>(rowNumber(i) % kBlockRows);
-        qsizetype block = intoBlock ? i + kBlockRows - intoBlock : i;
-        foldRows(i, std::min(block, end));
-        if (block + kBlockRows <= end) {
-            MinMaxBucket &m = out.back();
-            std::size_t first = physical(block);
-            auto k = static_cast<std::size_t>(rowNumber(block) / kBlockRows % blockCount);
-            for (; block + kBlockRows <= end; block += kBlockRows) {
-                const BlockSummary &s = blocks[k];
-                if (s.minAt >= 0) {
-                    if (static_cast<double>(s.min) < m.min) {
-                        m.min = static_cast<double>(s.min);
-                        m.tMin = m_times[wrap(first + static_cast<std::size_t>(s.minAt))];
-                    }
-                    if (static_cast<double>(s.max) > m.max) {
-                        m.max = static_cast<double>(s.max);
-                        m.tMax = m_times[wrap(first + static_cast<std::size_t>(s.maxAt))];
-                    }
-                }
-                first = wrap(first + kBlockRows);
-                k = k + 1 == blockCount ? 0 : k + 1;
-            }
-        }
-        foldRows(std::max(block, i), end);
-        i = end;
-    }
-    return out;
-}
-
-void SampleStore::toPolyline(const std::vector<MinMaxBucket> &buckets, QList<double> &times,
-                             QList<double> &values)
-{
-    times.clear();
-    values.clear();
-    times.reserve(static_cast<qsizetype>(buckets.size() * 2));
-    values.reserve(static_cast<qsizetype>(buckets.size() * 2));
-    for (const MinMaxBucket &b : buckets) {
-        const bool minFirst = b.tMin <= b.tMax;
-        times.append(minFirst ? b.tMin : b.tMax);
-        values.append(minFirst ? b.min : b.max);
-        if (b.tMin == b.tMax && b.min == b.max)
-            continue;
-        times.append(minFirst ? b.tMax : b.tMin);
-        values.append(minFirst ? b.max : b.min);
-    }
+    return firstRowNot(0, m_size, [t](double time) { return time <= t; });
 }
 
 qsizetype SampleStore::copyRange(int channel, double t0, double t1, QList<double> &times,

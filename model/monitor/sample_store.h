@@ -95,6 +95,10 @@ public:
     qsizetype size() const { return m_size; }
     bool isEmpty() const { return m_size == 0; }
     quint64 droppedCount() const { return m_dropped; } // rows overwritten by the ring
+    // Rows appended since the last clear() (row i is number droppedCount() + i), and how many
+    // clear()s there were: what DecimationCache needs to know which rows it has not read yet.
+    quint64 appendedCount() const { return m_dropped + static_cast<quint64>(m_size); }
+    quint64 clearCount() const { return m_clears; }
 
     // O(1). Times must not go backwards (equal is fine); a missing or non-finite value is stored
     // as NaN ("no value", skipped by decimation). Extra values are ignored. False for a bad time.
@@ -122,6 +126,12 @@ public:
     // Whole blocks of kBlockRows rows inside one slice are taken from their summary; the result
     // is the same as reading every row (first occurrence wins a tie).
     std::vector<MinMaxBucket> decimate(int channel, double t0, double t1, int buckets) const;
+    // Slices on a fixed grid of the time axis, for DecimationCache: from row `from` on, slice k
+    // holds the rows with k·width <= t < (k + 1)·width. Each slice with a value is appended to
+    // `out` and its k to `indices`, made as decimate() makes its buckets. Stops at the first row
+    // of a slice after `last` and returns that row (size() when all were read).
+    qsizetype decimateOnGrid(int channel, qsizetype from, double width, qint64 last,
+                             std::vector<MinMaxBucket> &out, std::vector<qint64> &indices) const;
     // The buckets as a polyline for the plot: min and max of each slice in the order they
     // occurred (one point when they are the same sample).
     static void toPolyline(const std::vector<MinMaxBucket> &buckets, QList<double> &times,
@@ -158,6 +168,26 @@ private:
         qint16 minAt;
         qint16 maxAt;
     };
+    // The slicing decimate() and decimateOnGrid() share (sample_store_slices.cpp): rows
+    // [i0, i1) in time order into slice sliceOf(t) (non-decreasing in t), which ends before
+    // edgeAfter(slice); a row that would open a slice after `last` ends the scan, and its index
+    // is returned (else i1). `dense`: whole blocks inside a slice are taken from their summaries.
+    template<typename SliceOf, typename EdgeAfter>
+    qsizetype scan(int channel, qsizetype i0, qsizetype i1, qint64 last, bool dense,
+                   SliceOf sliceOf, EdgeAfter edgeAfter, std::vector<MinMaxBucket> &out,
+                   std::vector<qint64> *indices) const;
+    // Binary search: the first row in [lo, hi) whose time is not before(time) (size() order).
+    template<typename Before> qsizetype firstRowNot(qsizetype lo, qsizetype hi, Before before) const
+    {
+        while (lo < hi) {
+            const qsizetype mid = lo + (hi - lo) / 2;
+            if (before(timeAt(mid)))
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        return lo;
+    }
     static qsizetype blockSlots(qsizetype capacity) { return capacity / kBlockRows + 2; }
     BlockSummary *summaries(int channel) const
     {
@@ -191,6 +221,7 @@ private:
     std::size_t m_head = 0;                   // physical index of row 0
     qsizetype m_size = 0;
     quint64 m_dropped = 0;
+    quint64 m_clears = 0;
     bool m_resident = false;
     std::deque<SampleMarker> m_markers;
 };

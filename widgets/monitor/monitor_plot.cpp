@@ -95,6 +95,7 @@ void MonitorPlot::setChannels(std::vector<PlotChannel> channels)
     m_unitAxes.clear();
     yAxis2->setVisible(false);
     m_channels = std::move(channels);
+    m_caches.assign(m_channels.size(), model::DecimationCache());
     std::size_t i = 0;
     for (const PlotChannel &channel : m_channels) {
         QCPGraph *graph = addGraph(xAxis, axisFor(channel.unit));
@@ -132,14 +133,23 @@ void MonitorPlot::loadRange(double t0, double t1)
         if (last >= first && store.size() > 0) {
             const double from = store.timeAt(first);
             const double to = store.timeAt(last);
+            // Decimated: one slice more on each side, so the lines reach the borders there, too.
+            const double w = (t1 - t0) / buckets;
             if (m_decimate && last - first + 1 > 2 * static_cast<qsizetype>(buckets))
-                model::SampleStore::toPolyline(store.decimate(channel.column, from, to, buckets),
-                                               m_times, m_values);
+                model::SampleStore::toPolyline(
+                    m_caches[i].slices(store, channel.column, t0 - w, t1 + w, buckets + 2), m_times,
+                    m_values);
             else
                 store.copyRange(channel.column, from, to, m_times, m_values);
         }
         graph(static_cast<int>(i))->setData(m_times, m_values, true);
     }
+}
+
+void MonitorPlot::forgetDecimation()
+{
+    for (model::DecimationCache &cache : m_caches)
+        cache.reset();
 }
 
 void MonitorPlot::rescaleValueAxes()

@@ -1,9 +1,12 @@
 // MonitorPlot: the live monitor's QCustomPlot — one graph per channel read straight from the
-// model's SampleStores, decimated to about one min/max pair per pixel (STYLE.md rule 10), one
+// model's SampleStores, decimated to about one min/max pair per pixel (STYLE.md rule 10; each
+// graph keeps its slices between redraws in a DecimationCache, so a plot that follows the
+// newest samples reads only the rows that arrived since its last redraw), one
 // value axis per unit, the tuning journal's markers on the time axis and a cursor line.
 // It draws only when told (refresh()); the MonitorView coalesces. GUI thread.
 #pragma once
 
+#include "model/monitor/decimation_cache.h"
 #include "model/monitor/sample_store.h"
 #include "model/session/device_access.h"
 
@@ -41,6 +44,9 @@ public:
     // On (default): ranges wider than the plot are reduced to a min/max pair per pixel column.
     // Off: every sample goes to QCustomPlot (the benchmark's baseline).
     void setDecimation(bool on) { m_decimate = on; }
+    // The next loadRange() decimates every graph from its store again, not from the slices kept
+    // since the last one (the benchmark's full redraw; a new width or range start does it, too).
+    void forgetDecimation();
     bool decimation() const { return m_decimate; }
 
     // Loads the samples of [t0, t1] into the graphs and sets the time axis to it.
@@ -90,6 +96,7 @@ private:
     bool exportWithTitle(const std::function<bool(int width, int height)> &save);
 
     std::vector<PlotChannel> m_channels;
+    std::vector<model::DecimationCache> m_caches;          // one per graph, in m_channels' order
     std::vector<std::pair<QString, QCPAxis *>> m_unitAxes; // in order of first use
     std::vector<QCPAbstractItem *> m_markerItems;
     std::vector<model::SampleMarker> m_shownMarkers; // inside the time axis, in order

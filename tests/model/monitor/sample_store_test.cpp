@@ -2,6 +2,7 @@
 // fixed memory footprint, and min/max decimation to about one pair per pixel.
 #include "model/monitor/sample_store.h"
 #include "resident_memory.h"
+#include "sample_store_checks.h"
 
 #include <QBuffer>
 #include <QLocale>
@@ -21,11 +22,7 @@ namespace {
 
 QList<SampleChannel> channels(int n)
 {
-    QList<SampleChannel> out;
-    for (int i = 0; i < n; ++i)
-        out.append({QStringLiteral("d1.%1").arg(7 + i), QStringLiteral("value %1").arg(i),
-                    QStringLiteral("%")});
-    return out;
+    return vt::test::storeChannels(n);
 }
 
 void appendRow(SampleStore &s, double t, std::initializer_list<double> values)
@@ -144,24 +141,10 @@ void expectMatchesBruteForce(const SampleStore &s, double t0, double t1, int buc
             current = b;
             want.push_back({t, v, t, v});
         } else {
-            MinMaxBucket &m = want.back();
-            if (v < m.min) {
-                m.min = v;
-                m.tMin = t;
-            }
-            if (v > m.max) {
-                m.max = v;
-                m.tMax = t;
-            }
+            vt::test::foldRow(want.back(), t, v);
         }
     }
-    ASSERT_EQ(got.size(), want.size());
-    for (std::size_t i = 0; i < got.size(); ++i) {
-        EXPECT_EQ(got[i].min, want[i].min) << i;
-        EXPECT_EQ(got[i].max, want[i].max) << i;
-        EXPECT_EQ(got[i].tMin, want[i].tMin) << i;
-        EXPECT_EQ(got[i].tMax, want[i].tMax) << i;
-    }
+    vt::test::expectSameBuckets(got, want);
 }
 
 } // namespace
