@@ -3,6 +3,7 @@
 #include "link_log.h"
 #include "serial_worker.h"
 
+#include <QPointer>
 #include <utility>
 
 namespace vt::link {
@@ -16,12 +17,15 @@ SerialLink::SerialLink(SerialSettings settings, QObject *parent)
 SerialLink::~SerialLink()
 {
     ++m_session;
+    const QPointer<SerialWorker> worker = m_worker;
     if (m_thread.isRunning()) {
-        // The worker is deleted on its own thread (finished → deleteLater runs there), so its
-        // socket notifier and port are released where they were created.
+        // A worker on the worker thread is deleted there (finished → deleteLater runs there), so
+        // its socket notifiers and port are released where they live.
         m_thread.quit();
         m_thread.wait();
     }
+    // One that lives on this thread (exchanges without line timing) is deleted here.
+    delete worker.data();
 }
 
 void SerialLink::ensureWorker()
@@ -33,8 +37,24 @@ void SerialLink::ensureWorker()
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     connect(m_worker, &SerialWorker::opened, this, &SerialLink::onOpened, Qt::QueuedConnection);
     connect(m_worker, &SerialWorker::failed, this, &SerialLink::onFailed, Qt::QueuedConnection);
-    connect(m_worker, &SerialWorker::received, this, &SerialLink::onReceived, Qt::QueuedConnection);
+    // Queued from the worker thread; direct once the worker is on this thread (exchanges without
+    // line timing). opened() and failed() stay queued: the link reacts outside the worker's calls.
+    connect(m_worker, &SerialWorker::received, this, &SerialLink::onReceived, Qt::AutoConnection);
     m_thread.start();
+}
+
+void SerialLink::takeWorkerHome()
+{
+    m_exchangesHere = false;
+    // Runs where the worker is when it gets there: on this thread it moves the worker back, and
+    // the calls queued after it follow the worker to its thread.
+    QMetaObject::invokeMethod(
+        m_worker,
+        [worker = m_worker, home = &m_thread] {
+            if (worker->thread() != home)
+                worker->moveToThread(home);
+        },
+        Qt::QueuedConnection);
 }
 
 void SerialLink::open()
@@ -44,8 +64,14 @@ void SerialLink::open()
     ensureWorker();
     const quint64 session = ++m_session;
     setState(LinkState::Opening);
+    takeWorkerHome();
+    m_exchangesHereAtOpen = !m_settings.silentInterval && !m_settings.frameEndBySilence;
+    QThread *exchangeThread = m_exchangesHereAtOpen ? thread() : nullptr;
     QMetaObject::invokeMethod(
-        m_worker, [worker = m_worker, session, s = m_settings] { worker->openPort(session, s); },
+        m_worker,
+        [worker = m_worker, session, s = m_settings, exchangeThread] {
+            worker->openPort(session, s, exchangeThread);
+        },
         Qt::QueuedConnection);
 }
 
@@ -55,6 +81,7 @@ void SerialLink::close()
         return;
     ++m_session;
     if (m_worker) {
+        takeWorkerHome();
         QMetaObject::invokeMethod(
             m_worker, [worker = m_worker] { worker->closePort(); }, Qt::QueuedConnection);
     }
@@ -67,6 +94,10 @@ void SerialLink::send(const QByteArray &bytes)
         qCWarning(lcLink).noquote()
             << "send on" << description() << "while" << linkStateText(state()) << "- dropped"
             << bytes.size() << "bytes";
+        return;
+    }
+    if (m_exchangesHere) {
+        m_worker->write(m_session, bytes, std::exchange(m_replyBytes, 0));
         return;
     }
     QMetaObject::invokeMethod(
@@ -87,6 +118,7 @@ void SerialLink::onOpened(quint64 session)
 {
     if (session != m_session || state() != LinkState::Opening)
         return;
+    m_exchangesHere = m_exchangesHereAtOpen; // the worker moved here before it said so
     setState(LinkState::Open);
 }
 

@@ -1,6 +1,11 @@
 // SerialLink: a Link over a serial port (RS232/RS485 adapter, HART modem) through libserialport.
-// All port I/O runs in a SerialWorker on a private worker QThread reached only through queued
-// calls, so the thread that owns the link never waits on the port (STYLE.md rule 9).
+// Port I/O runs in a SerialWorker, opened and closed on a private worker QThread reached only
+// through queued calls, so the thread that owns the link never waits on the port (STYLE.md
+// rule 9). With the Modbus RTU line timing on (the default) the exchanges run there too: the
+// worker waits for the line's silences. Without it nothing waits, and the open worker moves to
+// the link's own thread: a request is written and an answer handed on without a thread hop
+// (two wake-ups less per exchange, which is what a virtual port or gateway without wire time is
+// left with), still without blocking — what the driver cannot take at once goes on later.
 // Owned by whoever opened it (the session); create, use and destroy it on one thread. Destroying
 // it joins the worker thread, which waits at most for a write in progress (bounded timeout).
 #pragma once
@@ -31,6 +36,8 @@ public:
     void send(const QByteArray &bytes) override;
     // For the next send() only.
     void expectReply(qsizetype bytes) override { m_replyBytes = bytes; }
+    // Open, and the exchanges run on the link's own thread (no line timing), not the worker's.
+    bool exchangesOnLinkThread() const { return m_exchangesHere; }
     // "serial /dev/ttyUSB0 19200 8E1"
     QString description() const override;
 
@@ -43,12 +50,18 @@ private:
     void onFailed(quint64 session, const QString &reason);
     void onReceived(quint64 session, const QByteArray &bytes, bool quiet);
     void ensureWorker();
+    // Queues the worker's move back to the worker thread (a no-op when it is there): whatever
+    // is queued for it afterwards runs there.
+    void takeWorkerHome();
 
     SerialSettings m_settings;
     QThread m_thread;
-    SerialWorker *m_worker = nullptr; // lives on m_thread; deleted there when it finishes
+    // Lives on m_thread (on this thread while open without line timing); deleted where it lives.
+    SerialWorker *m_worker = nullptr;
     quint64 m_session = 0;
-    qsizetype m_replyBytes = 0; // expectReply() for the next send()
+    qsizetype m_replyBytes = 0;         // expectReply() for the next send()
+    bool m_exchangesHereAtOpen = false; // the settings of the pending open() have no line timing
+    bool m_exchangesHere = false;       // the worker is on this thread: send() calls it directly
 };
 
 } // namespace vt::link

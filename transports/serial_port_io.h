@@ -40,6 +40,8 @@ public:
     virtual long long read(char *buffer, std::size_t size) = 0;
     // Bytes written before `timeoutMs` passed, or -1 on an error (errorText()).
     virtual long long write(const char *data, std::size_t size, unsigned timeoutMs) = 0;
+    // Bytes the driver took at once (0 when its buffer is full), or -1 on an error: never waits.
+    virtual long long writeSome(const char *data, std::size_t size) = 0;
     // Drops what either direction holds.
     virtual void flush() = 0;
     virtual std::optional<LineFormat> lineFormat() = 0;

@@ -57,6 +57,14 @@ public:
         return n < 0 ? -1 : n;
     }
 
+    long long writeSome(const char *data, std::size_t size) override
+    {
+        const sp_return n = sp_nonblocking_write(m_port, data, size);
+        if (n < 0)
+            m_error = lastError();
+        return n < 0 ? -1 : n;
+    }
+
     void flush() override { sp_flush(m_port, SP_BUF_BOTH); }
 
     std::optional<LineFormat> lineFormat() override

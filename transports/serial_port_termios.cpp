@@ -69,6 +69,11 @@ public:
         return static_cast<long long>(done);
     }
 
+    long long writeSome(const char *data, std::size_t size) override
+    {
+        return write(data, size, 0);
+    }
+
     void flush() override { ::tcflush(m_fd, TCIOFLUSH); }
 
     std::optional<LineFormat> lineFormat() override

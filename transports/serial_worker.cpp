@@ -4,6 +4,8 @@
 #include "serial_port_io.h"
 
 #include <QSocketNotifier>
+#include <QThread>
+#include <QTimer>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -82,7 +84,8 @@ QString SerialWorker::openFailureText(const OpenFailure &failure, const SerialSe
     return tr("Cannot open %1: %2").arg(name, failure.detail);
 }
 
-void SerialWorker::openPort(quint64 session, const SerialSettings &settings)
+void SerialWorker::openPort(quint64 session, const SerialSettings &settings,
+                            QThread *exchangeThread)
 {
     release();
     m_session = session;
@@ -121,6 +124,8 @@ void SerialWorker::openPort(quint64 session, const SerialSettings &settings)
     connect(m_notifier, &QSocketNotifier::activated, this, &SerialWorker::onReadable);
     qCDebug(lcLink).noquote() << "serial open" << settings.portName << settings.baudRate
                               << settings.formatText();
+    if (exchangeThread)
+        moveToThread(exchangeThread); // the notifier (a child) goes along
     emit opened(session);
 }
 
@@ -153,6 +158,11 @@ void SerialWorker::write(quint64 session, const QByteArray &bytes, qsizetype rep
         bytes.size() * m_settings.bitsPerCharacter() * 1000 / std::max(1, m_settings.baudRate);
     const auto timeout = static_cast<unsigned>(std::min<qint64>(2 * wireMs + 500, 60'000));
     const auto size = static_cast<std::size_t>(bytes.size());
+    if (!m_settings.silentInterval && !m_settings.frameEndBySilence) {
+        writeWithoutWaiting(bytes, timeout);
+        m_replyBytes = replyBytes;
+        return;
+    }
     if (m_settings.silentInterval) {
         waitForSilence();
         if (!m_port || session != m_session)
@@ -166,6 +176,48 @@ void SerialWorker::write(quint64 session, const QByteArray &bytes, qsizetype rep
         fail(tr("Write to %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
     else if (static_cast<std::size_t>(written) < size)
         fail(tr("Write to %1 timed out").arg(m_settings.portName));
+}
+
+void SerialWorker::writeWithoutWaiting(const QByteArray &bytes, unsigned timeoutMs)
+{
+    m_output.append(bytes);
+    if (!m_outputDeadline) {
+        m_outputDeadline = new QTimer(this);
+        m_outputDeadline->setSingleShot(true);
+        connect(m_outputDeadline, &QTimer::timeout, this,
+                [this] { fail(tr("Write to %1 timed out").arg(m_settings.portName)); });
+    }
+    if (!m_outputDeadline->isActive())
+        m_outputDeadline->start(static_cast<int>(timeoutMs));
+    writeOut();
+}
+
+void SerialWorker::writeOut()
+{
+    if (!m_port)
+        return;
+    const long long n =
+        m_port->writeSome(m_output.constData(), static_cast<std::size_t>(m_output.size()));
+    if (n < 0) {
+        fail(tr("Write to %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
+        return;
+    }
+    if (n > 0) {
+        m_line->sent(static_cast<std::size_t>(n), nowUs());
+        m_output.remove(0, static_cast<qsizetype>(n));
+    }
+    if (m_output.isEmpty()) {
+        m_outputDeadline->stop();
+        if (m_writeNotifier)
+            m_writeNotifier->setEnabled(false);
+        return;
+    }
+    // The driver's buffer is full (a slow line, a peer that does not read): on when it has room.
+    if (!m_writeNotifier) {
+        m_writeNotifier = new QSocketNotifier(m_port->descriptor(), QSocketNotifier::Write, this);
+        connect(m_writeNotifier, &QSocketNotifier::activated, this, &SerialWorker::writeOut);
+    }
+    m_writeNotifier->setEnabled(true);
 }
 
 void SerialWorker::waitForSilence()
@@ -232,6 +284,9 @@ void SerialWorker::onReadable()
 void SerialWorker::fail(const QString &reason)
 {
     qCDebug(lcLink).noquote() << "serial failed" << m_settings.portName << reason;
+    // Output still waiting is dropped, so closing does not wait for it to drain (a stuck port).
+    if (m_port)
+        m_port->flush();
     // Release first: the device must be free for a reopen by the time the link hears of it.
     release();
     emit failed(m_session, reason);
@@ -239,13 +294,18 @@ void SerialWorker::fail(const QString &reason)
 
 void SerialWorker::release()
 {
-    if (m_notifier) {
-        // Disabled before the port closes, deleted later: release() may run inside the
-        // notifier's own activated() emission.
-        m_notifier->setEnabled(false);
-        m_notifier->deleteLater();
-        m_notifier = nullptr;
+    // Disabled before the port closes, deleted later: release() may run inside a notifier's own
+    // activated() emission.
+    for (QSocketNotifier **notifier : {&m_notifier, &m_writeNotifier}) {
+        if (*notifier) {
+            (*notifier)->setEnabled(false);
+            (*notifier)->deleteLater();
+            *notifier = nullptr;
+        }
     }
+    m_output.clear();
+    if (m_outputDeadline)
+        m_outputDeadline->stop();
     m_port.reset();
 }
 

@@ -7,7 +7,12 @@
 // line was quiet for t3.5, and what arrives is read until the line is quiet for t3.5 and handed
 // on as one frame (Modbus over Serial Line §2.5.1.1): the worker blocks for at most one frame's
 // time plus t3.5, which is what it is for (STYLE.md rule 9).
-// Created and destroyed by SerialLink; touched only on the worker thread once moved there.
+// Without the line timing nothing on the port waits: the worker then moves itself to the link's
+// thread once the port is open (openPort's `exchangeThread`), writes without waiting (what the
+// driver cannot take at once goes on when the port can take more, within the same bound) and
+// hands frames on directly — no thread hop per exchange. Opening and closing stay on the worker
+// thread (an open may wait: a Bluetooth port connects, an adapter enumerates).
+// Created and destroyed by SerialLink; touched only on the thread it lives on.
 #pragma once
 
 #include "modbus/rtu_timing.h"
@@ -20,6 +25,8 @@
 #include <optional>
 
 class QSocketNotifier;
+class QThread;
+class QTimer;
 
 namespace vt::link {
 
@@ -34,7 +41,9 @@ public:
     ~SerialWorker() override;
 
     // Closes whatever is open, then opens and configures the port: opened() or failed().
-    void openPort(quint64 session, const vt::link::SerialSettings &settings);
+    // `exchangeThread` (settings without line timing): the thread to move to once open.
+    void openPort(quint64 session, const vt::link::SerialSettings &settings,
+                  QThread *exchangeThread = nullptr);
     // Silent: the link already considers itself closed.
     void closePort();
     // Writes all bytes or fails; a write of the current session only. With the frame end by
@@ -52,6 +61,9 @@ signals:
 
 private:
     void onReadable();
+    // Without line timing: queues `bytes` and writes what the driver takes now (writeOut()).
+    void writeWithoutWaiting(const QByteArray &bytes, unsigned timeoutMs);
+    void writeOut();
     // Reads until the line is quiet for t3.5 (or a bound of bytes); false when the port failed.
     bool readFrame(QByteArray &frame, bool &quiet);
     // Blocks until t3.5 after the last byte on the line, handing on what arrives meanwhile.
@@ -62,6 +74,9 @@ private:
 
     std::unique_ptr<SerialPortIo> m_port;
     QSocketNotifier *m_notifier = nullptr;
+    QSocketNotifier *m_writeNotifier = nullptr; // while m_output waits for room in the driver
+    QTimer *m_outputDeadline = nullptr;         // m_output not written by then: the write failed
+    QByteArray m_output;                        // written without waiting, not taken yet
     quint64 m_session = 0;
     SerialSettings m_settings;
     std::optional<dev::modbus::RtuLineClock> m_line; // the open port's line timing

@@ -238,6 +238,127 @@ TEST_F(SerialLinkPty, NoParityTwoStopBitsAndSevenDataBits)
     EXPECT_EQ(link.description(), QStringLiteral("serial %1 9600 7N2").arg(portName()));
 }
 
+namespace {
+
+// The line timing off (a virtual port, a gateway that frames itself): nothing on the port waits.
+SerialSettings withoutLineTiming(const QString &port, int baud = 19200)
+{
+    SerialSettings s = SerialSettings::hcsDefault(port);
+    s.baudRate = baud;
+    s.silentInterval = false;
+    s.frameEndBySilence = false;
+    return s;
+}
+
+} // namespace
+
+// Without line timing the open worker runs on the link's thread: a request is written and an
+// answer handed on without a thread hop. Closing takes it back to its thread; a reopen with the
+// timing on keeps it there.
+TEST_F(SerialLinkPty, WithoutLineTimingTheExchangesRunOnTheLinksThread)
+{
+    SerialLink link(withoutLineTiming(portName()));
+    QSignalSpy received(&link, &SerialLink::received);
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    EXPECT_EQ(link.state(), LinkState::Opening); // opening still happens on the worker thread
+    EXPECT_FALSE(link.exchangesOnLinkThread());
+    ASSERT_TRUE(waitForState(link, LinkState::Open))
+        << failed.value(0).value(0).toString().toStdString();
+    EXPECT_TRUE(link.exchangesOnLinkThread());
+    m_pty->startReading();
+
+    for (int round = 0; round < 3; ++round) {
+        const QByteArray request = QByteArray::fromHex("0103000000084a0c");
+        link.send(request);
+        ASSERT_TRUE(vt::test::waitUntil(
+            [&] { return m_pty->received().size() >= (round + 1) * request.size(); },
+            vt::test::kWaitMs));
+        const QByteArray answer = QByteArray::fromHex("010310000100020003000400050006000700089f4b");
+        ASSERT_TRUE(m_pty->write(answer));
+        QByteArray got;
+        received.clear();
+        ASSERT_TRUE(vt::test::collectBytes(received, got, answer.size()));
+        EXPECT_EQ(got, answer);
+    }
+    EXPECT_EQ(m_pty->received(), QByteArray::fromHex("0103000000084a0c").repeated(3));
+
+    link.close();
+    EXPECT_FALSE(link.exchangesOnLinkThread());
+    newPty(); // a pty master stops reading once its slave closed (it polls as hung up)
+    link.setSettings(SerialSettings::hcsDefault(portName()));
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    EXPECT_FALSE(link.exchangesOnLinkThread()); // the line timing waits: on the worker thread
+    m_pty->startReading();
+    link.send(QByteArrayLiteral("again"));
+    ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().endsWith("again"); },
+                                    vt::test::kWaitMs));
+    EXPECT_EQ(failed.count(), 0);
+}
+
+// STYLE.md rule 9 on the link's own thread: a write larger than the driver takes at once (the
+// far end reads nothing yet) returns at once, and the rest goes out as the far end reads.
+// Blocking here would freeze the GUI: the far end below only reads once send() has returned.
+TEST_F(SerialLinkPty, WithoutLineTimingAFullDriverBufferDoesNotBlockTheLinksThread)
+{
+    SerialLink link(withoutLineTiming(portName(), 4'000'000));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    ASSERT_TRUE(link.exchangesOnLinkThread());
+
+    QByteArray big(256 * 1024, Qt::Uninitialized);
+    for (qsizetype i = 0; i < big.size(); ++i)
+        big[i] = static_cast<char>(i * 7 + i / 251);
+    link.send(big);
+    EXPECT_TRUE(m_pty->received().isEmpty());
+    m_pty->startReading();
+    ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().size() >= big.size(); },
+                                    vt::test::kWaitMs));
+    EXPECT_TRUE(m_pty->received() == big);
+    EXPECT_EQ(failed.count(), 0);
+    EXPECT_EQ(link.state(), LinkState::Open);
+}
+
+// A far end that never reads (a stuck adapter): the write fails after its bound (twice the wire
+// time plus 500 ms; 128 KiB at 4 Mbit/s: 1.2 s) with a reason, and the port is free again.
+TEST_F(SerialLinkPty, WithoutLineTimingAWriteThatNeverDrainsFailsAfterItsBound)
+{
+    SerialLink link(withoutLineTiming(portName(), 4'000'000));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    link.send(QByteArray(128 * 1024, 'x'));
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+    EXPECT_TRUE(failed.first().value(0).toString().contains(QStringLiteral("timed out")))
+        << failed.first().value(0).toString().toStdString();
+    link.open(); // the same pty: it opens again
+    EXPECT_TRUE(waitForState(link, LinkState::Open));
+}
+
+// Unplugged while the exchanges run on the link's thread: failed() (later, from the event
+// loop), and a reopen opens on the worker thread again and exchanges on the link's.
+TEST_F(SerialLinkPty, WithoutLineTimingAnUnpluggedPortFailsAndReopens)
+{
+    SerialLink link(withoutLineTiming(portName()));
+    QSignalSpy failed(&link, &SerialLink::failed);
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    m_pty->closeMaster();
+    ASSERT_TRUE(waitForCount(failed, 1));
+    EXPECT_EQ(link.state(), LinkState::Failed);
+    newPty();
+    link.open();
+    ASSERT_TRUE(waitForState(link, LinkState::Open));
+    EXPECT_TRUE(link.exchangesOnLinkThread());
+    m_pty->startReading();
+    link.send(QByteArrayLiteral("again"));
+    ASSERT_TRUE(
+        vt::test::waitUntil([&] { return m_pty->received() == "again"; }, vt::test::kWaitMs));
+}
+
 TEST_F(SerialLinkPty, UnpluggedFarSideFailsAndReopenWorks)
 {
     SerialLink link(SerialSettings::hcsDefault(portName()));
