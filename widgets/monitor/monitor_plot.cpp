@@ -54,6 +54,7 @@ MonitorPlot::~MonitorPlot() = default;
 
 void MonitorPlot::retranslate()
 {
+    setLocale(QLocale()); // tick labels in the UI language's notation ("2,5" / "2.5")
     xAxis->setLabel(tr("time (s)"));
 }
 

@@ -279,6 +279,23 @@ TEST(MonitorView, CursorReadsOutEveryChannelAtOneTime)
     EXPECT_FALSE(number.contains(QLatin1Char('.'))) << german.at(1).toStdString();
 }
 
+// Switching the language at run time: the plot's tick labels follow the new language's number
+// notation too (they kept German commas in an English UI before).
+TEST(MonitorView, ALanguageChangeSwitchesThePlotsNumberNotation)
+{
+    MonitorView view;
+    const QLocale previous;
+    for (const QLocale::Language language : {QLocale::German, QLocale::English}) {
+        QLocale::setDefault(QLocale(language));
+        QEvent change(QEvent::LanguageChange);
+        QCoreApplication::sendEvent(&view, &change);
+        EXPECT_EQ(view.plot()->locale().language(), language);
+        EXPECT_EQ(view.plot()->locale().decimalPoint(),
+                  language == QLocale::German ? QStringLiteral(",") : QStringLiteral("."));
+    }
+    QLocale::setDefault(previous);
+}
+
 TEST(MonitorView, AnyDisplayValueOfAnyModuleAndOneAxisPerUnit)
 {
     auto rig = connectSim("dma-pn-v51", 2);
