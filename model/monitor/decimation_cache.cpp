@@ -72,15 +72,7 @@ std::vector<MinMaxBucket> DecimationCache::slices(const SampleStore &store, int 
             continue;
         }
         // The slice's newest rows: the rows read before came first, so they win a tie.
-        MinMaxBucket &m = m_slices.back().extremes;
-        if (read[j].min < m.min) {
-            m.min = read[j].min;
-            m.tMin = read[j].tMin;
-        }
-        if (read[j].max > m.max) {
-            m.max = read[j].max;
-            m.tMax = read[j].tMax;
-        }
+        m_slices.back().extremes.fold(read[j]);
     }
     while (!m_slices.empty() && m_slices.front().index < first)
         m_slices.pop_front();

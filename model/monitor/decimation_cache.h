@@ -6,11 +6,11 @@
 // k·w <= t < (k + 1)·w, w = (t1 − t0) / buckets — so they stay valid as the window moves; the
 // slices that left the window are dropped. A different width (zoom, resize) or channel, a
 // clear() of the store, rows overwritten by the ring before they were read, or a range that
-// starts before what is cached start again from the store (SampleStore::decimate's cost, once).
+// starts before what is cached start again from the store (reading the whole range, once).
 // Rows the ring overwrote after they were read leave the slices too: what the cache returns is
 // always what the store holds.
 // Each slice keeps its lowest and highest value and when each occurred (the first occurrence
-// wins a tie), as SampleStore::decimate does; only the slices' edges differ (grid, not t0).
+// wins a tie): SampleStore::decimateOnGrid() makes them, MinMaxBucket::fold() adds newer rows.
 // Owner: MonitorPlot, one per graph. GUI thread, like the store.
 #pragma once
 

@@ -4,11 +4,10 @@
 // Owner: the monitor's session owner; GUI thread only (no locking; the session appends there).
 //
 // Memory is fixed at construction: 8 bytes (double time) + 4 bytes (float) per channel per row,
-// plus each channel's summary of every kBlockRows rows (12 bytes), for decimate(). The default
-// (1 h at 200 Hz = 720 000 rows) with 5 channels: 720 000 × 28 B + 22 502 × 5 × 12 B =
-// 21 510 120 B (20.5 MiB); markers add at most 1000 × (32 B + 256 UTF-16 chars) = 544 000 B
-// (0.52 MiB).
-// The ring is allocated untouched (the system maps its pages on first write); makeResident()
+// plus each channel's summary of every kBlockRows rows (12 bytes), for decimateOnGrid(). The
+// default (1 h at 200 Hz = 720 000 rows) with 5 channels: 720 000 × 28 B + 22 502 × 5 × 12 B = 21
+// 510 120 B (20.5 MiB); markers add at most 1000 × (32 B + 256 UTF-16 chars) = 544 000 B (0.52
+// MiB). The ring is allocated untouched (the system maps its pages on first write); makeResident()
 // touches it all at once, so a monitoring run does not creep up by 28 B a poll for an hour.
 // Values are floats: they come from 16-bit fieldbus words, and a float's 24-bit mantissa
 // resolves more than that.
@@ -50,6 +49,32 @@ struct MinMaxBucket
     double min = 0;
     double tMax = 0;
     double max = 0;
+
+    // A later row of the slice: it replaces an extreme only when strictly beyond it, so the
+    // first occurrence wins a tie.
+    void fold(double t, double value)
+    {
+        if (value < min) {
+            min = value;
+            tMin = t;
+        }
+        if (value > max) {
+            max = value;
+            tMax = t;
+        }
+    }
+    // The extremes of later rows of the same slice, by the same rule.
+    void fold(const MinMaxBucket &later)
+    {
+        if (later.min < min) {
+            min = later.min;
+            tMin = later.tMin;
+        }
+        if (later.max > max) {
+            max = later.max;
+            tMax = later.tMax;
+        }
+    }
 };
 
 // Limits of readCsv(), so a hostile or huge file cannot exhaust memory.
@@ -68,7 +93,7 @@ public:
     static constexpr qsizetype kDefaultCapacity = 3600 * 200; // 1 h at 200 Hz
     static constexpr qsizetype kDefaultMaxMarkers = 1000;
     static constexpr qsizetype kMaxMarkerText = 256; // characters; longer texts are cut
-    // decimate() folds whole blocks of this many rows from their summary (lowest and highest
+    // decimateOnGrid() folds whole blocks of this many rows from their summary (lowest and highest
     // value and where each is) instead of row by row: a redraw of 560 000 rows per channel in
     // 1000 pixels reads about 50 entries per pixel instead of 560.
     static constexpr qsizetype kBlockRows = 32;
@@ -120,16 +145,14 @@ public:
     qsizetype lowerBound(double t) const;
     qsizetype upperBound(double t) const;
 
-    // Rows with t0 <= time <= t1 split into `buckets` equal time slices; each non-empty slice
-    // gives its min and max (NaN-only slices are left out), in time order. Every extreme of the
-    // range survives, so a single-sample spike stays visible. Pick buckets ≈ plot width in pixels.
-    // Whole blocks of kBlockRows rows inside one slice are taken from their summary; the result
-    // is the same as reading every row (first occurrence wins a tie).
-    std::vector<MinMaxBucket> decimate(int channel, double t0, double t1, int buckets) const;
-    // Slices on a fixed grid of the time axis, for DecimationCache: from row `from` on, slice k
-    // holds the rows with k·width <= t < (k + 1)·width. Each slice with a value is appended to
-    // `out` and its k to `indices`, made as decimate() makes its buckets. Stops at the first row
-    // of a slice after `last` and returns that row (size() when all were read).
+    // Min/max slices on a fixed grid of the time axis (what DecimationCache keeps, and the plot
+    // draws): from row `from` on, slice k holds the rows with k·width <= t < (k + 1)·width. Each
+    // slice with a value (NaN-only slices are left out) is appended to `out` with its lowest and
+    // highest value and when each occurred, and its k to `indices`, in time order. Every extreme
+    // survives, so a single-sample spike stays visible. Whole blocks of kBlockRows rows inside
+    // one slice are taken from their summary; the result is the same as reading every row (the
+    // first occurrence wins a tie). Stops at the first row of a slice after `last` and returns
+    // that row (size() when all were read).
     qsizetype decimateOnGrid(int channel, qsizetype from, double width, qint64 last,
                              std::vector<MinMaxBucket> &out, std::vector<qint64> &indices) const;
     // The buckets as a polyline for the plot: min and max of each slice in the order they
@@ -168,7 +191,7 @@ private:
         qint16 minAt;
         qint16 maxAt;
     };
-    // The slicing decimate() and decimateOnGrid() share (sample_store_slices.cpp): rows
+    // decimateOnGrid()'s slicing (sample_store_slices.cpp): rows
     // [i0, i1) in time order into slice sliceOf(t) (non-decreasing in t), which ends before
     // edgeAfter(slice); a row that would open a slice after `last` ends the scan, and its index
     // is returned (else i1). `dense`: whole blocks inside a slice are taken from their summaries.

@@ -1,5 +1,5 @@
-// SampleStore's min/max slicing: decimate() (slices of a range) and decimateOnGrid() (slices on
-// a fixed grid of the time axis, for DecimationCache), both through scan().
+// SampleStore's min/max slicing: decimateOnGrid() (slices on a fixed grid of the time axis, for
+// DecimationCache) through scan().
 #include "model/monitor/ring_segments.h"
 #include "sample_store.h"
 
@@ -17,19 +17,8 @@ qsizetype SampleStore::scan(int channel, qsizetype i0, qsizetype i1, qint64 last
     const auto cap = static_cast<std::size_t>(m_capacity);
     qint64 slice = std::numeric_limits<qint64>::min();
     double nextEdge = -std::numeric_limits<double>::infinity(); // first time of the next slice
-    // Row by row: the first row of a slice opens it, later ones fold into it. Ties keep the
-    // first occurrence.
-    const auto fold = [&out](double t, double value) {
-        MinMaxBucket &m = out.back();
-        if (value < m.min) {
-            m.min = value;
-            m.tMin = t;
-        }
-        if (value > m.max) {
-            m.max = value;
-            m.tMax = t;
-        }
-    };
+    // Row by row: the first row of a slice opens it, later ones fold into it
+    // (MinMaxBucket::fold: ties keep the first occurrence).
     enum class Row { Folded, Opened, Beyond };
     const auto row = [&](double t, float v) {
         if (std::isnan(v))
@@ -48,7 +37,7 @@ qsizetype SampleStore::scan(int channel, qsizetype i0, qsizetype i1, qint64 last
                 return Row::Opened;
             }
         }
-        fold(t, value);
+        out.back().fold(t, value);
         return Row::Folded;
     };
     if (!dense) { // a few blocks per slice at most: every row
@@ -66,7 +55,8 @@ qsizetype SampleStore::scan(int channel, qsizetype i0, qsizetype i1, qint64 last
     // same extremes, in the same order); only the rows before the first and after the last whole
     // block are read. Positions advance by addition, and a block's extreme's time is read only
     // when it is a new extreme of the slice: on a large ring the reads that miss the cache, not
-    // the comparisons, are what a redraw costs.
+    // the comparisons, are what a redraw costs (so this is MinMaxBucket::fold with the time
+    // read late).
     const BlockSummary *blocks = summaries(channel);
     const auto blockCount = static_cast<std::size_t>(m_blockSlots);
     const auto wrap = [cap](std::size_t p) { return p < cap ? p : p - cap; };
@@ -74,7 +64,7 @@ qsizetype SampleStore::scan(int channel, qsizetype i0, qsizetype i1, qint64 last
         forEachSegment(m_head, cap, from, to, [&](std::size_t p, std::size_t end) {
             for (; p < end; ++p)
                 if (!std::isnan(values[p]))
-                    fold(m_times[p], static_cast<double>(values[p]));
+                    out.back().fold(m_times[p], static_cast<double>(values[p]));
         });
     };
     const auto firstAtOrAfter = [this](double t, qsizetype from, qsizetype to) {
@@ -122,28 +112,6 @@ qsizetype SampleStore::scan(int channel, qsizetype i0, qsizetype i1, qint64 last
         i = end;
     }
     return i1;
-}
-
-std::vector<MinMaxBucket> SampleStore::decimate(int channel, double t0, double t1,
-                                                int buckets) const
-{
-    std::vector<MinMaxBucket> out;
-    if (channel < 0 || channel >= channelCount() || buckets <= 0 || !(t0 <= t1))
-        return out;
-    const qsizetype i0 = lowerBound(t0);
-    const qsizetype i1 = upperBound(t1);
-    const double width = (t1 - t0) / buckets;
-    scan(
-        channel, i0, i1, std::numeric_limits<qint64>::max(), (i1 - i0) / buckets >= 4 * kBlockRows,
-        [&](double t) -> qint64 {
-            return width > 0 ? std::min(buckets - 1, static_cast<int>((t - t0) / width)) : 0;
-        },
-        [&](qint64 b) {
-            return b == buckets - 1 ? std::numeric_limits<double>::infinity()
-                                    : t0 + static_cast<double>(b + 1) * width;
-        },
-        out, nullptr);
-    return out;
 }
 
 qsizetype SampleStore::decimateOnGrid(int channel, qsizetype from, double width, qint64 last,

@@ -24,27 +24,12 @@ QList<SampleChannel> channels(int n)
     return vt::test::storeChannels(n);
 }
 
-// Every row of the store, grouped by floor(t / width) for the slices first..last, the first
-// occurrence winning a tie. Times and widths in the tests are binary fractions, so the division
-// is exact and there is no doubt which slice a row is in.
+// Times and widths in these tests are binary fractions, so the division is exact and there is
+// no doubt which slice a row is in.
 std::vector<MinMaxBucket> everyRow(const SampleStore &s, int channel, double width, qint64 first,
                                    qint64 last)
 {
-    std::map<qint64, MinMaxBucket> slices;
-    for (qsizetype i = 0; i < s.size(); ++i) {
-        const double t = s.timeAt(i);
-        const double v = s.valueAt(channel, i);
-        const auto k = static_cast<qint64>(std::floor(t / width));
-        if (std::isnan(v) || k < first || k > last)
-            continue;
-        const auto [at, added] = slices.try_emplace(k, MinMaxBucket{t, v, t, v});
-        if (!added)
-            vt::test::foldRow(at->second, t, v);
-    }
-    std::vector<MinMaxBucket> out;
-    for (const auto &[k, b] : slices)
-        out.push_back(b);
-    return out;
+    return vt::test::gridByEveryRow(s, channel, width, first, last);
 }
 
 } // namespace
@@ -91,13 +76,15 @@ TEST(SampleStoreGrid, SlicesOnTheGridAreWhatEveryRowGives)
 
 // A plot that follows: 20 redraws a second while rows arrive, the ring wraps, values are missing
 // now and then. Every redraw returns what reading every row gives for the window, and reads only
-// the rows that arrived since the last one.
+// the rows that arrived since the last one. The second channel has a few levels only, so a
+// slice's newest rows often tie with its extremes of the redraw before (the earlier must win).
 TEST(DecimationCache, FollowingTheNewestRowsReadsOnlyTheNewOnesAndMatchesEveryRow)
 {
     std::mt19937 rng(11);
     std::normal_distribution<double> noise(0.0, 1.0);
-    SampleStore s(channels(1), 40'000);
+    SampleStore s(channels(2), 40'000);
     DecimationCache cache;
+    DecimationCache coarse;
     constexpr double kWindow = 10.0;
     constexpr int kBuckets = 640; // width 10/640 = 1/64 s
     qint64 rows = 0;
@@ -106,18 +93,21 @@ TEST(DecimationCache, FollowingTheNewestRowsReadsOnlyTheNewOnesAndMatchesEveryRo
         for (int i = 0; i < arriving; ++i, ++rows) {
             const double v =
                 rows % 997 == 0 ? kNaN : std::sin(0.001 * static_cast<double>(rows)) + noise(rng);
-            s.append(static_cast<double>(rows) / 4096.0, std::vector<double>{v});
+            s.append(static_cast<double>(rows) / 4096.0, std::vector<double>{v, std::round(v)});
         }
         const double t1 = s.lastTime();
         const double t0 = t1 - kWindow;
-        const std::vector<MinMaxBucket> got = cache.slices(s, 0, t0, t1, kBuckets);
         const double width = kWindow / kBuckets;
-        vt::test::expectSameBuckets(got, everyRow(s, 0, width,
-                                                  static_cast<qint64>(std::floor(t0 / width)),
-                                                  static_cast<qint64>(std::floor(t1 / width))));
+        const auto first = static_cast<qint64>(std::floor(t0 / width));
+        const auto last = static_cast<qint64>(std::floor(t1 / width));
+        vt::test::expectSameBuckets(cache.slices(s, 0, t0, t1, kBuckets),
+                                    everyRow(s, 0, width, first, last));
+        vt::test::expectSameBuckets(coarse.slices(s, 1, t0, t1, kBuckets),
+                                    everyRow(s, 1, width, first, last));
         if (redraw > 0) {
             EXPECT_FALSE(cache.lastRebuilt()) << redraw;
             EXPECT_EQ(cache.lastRowsRead(), arriving) << redraw;
+            EXPECT_FALSE(coarse.lastRebuilt()) << redraw;
         }
     }
     EXPECT_GT(s.droppedCount(), 0u); // the ring wrapped while following
