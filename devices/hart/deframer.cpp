@@ -23,7 +23,9 @@ void Deframer::drain(std::vector<DeframerEvent> &events, std::vector<std::uint8_
 {
     // Replayed bytes come before the rest of the input; a failure inside them puts its own
     // replay in front again. Each failure drops one false delimiter, so this ends, and the queue
-    // never holds more than one maximum frame.
+    // never holds more than one maximum frame. Nothing to replay (nearly every byte): no queue.
+    if (replay.empty())
+        return;
     std::deque<std::uint8_t> work(replay.begin(), replay.end());
     replay.clear();
     while (!work.empty()) {
