@@ -37,6 +37,7 @@ FaultLink::FaultLink(std::unique_ptr<Link> inner, const FaultSpec &spec, QObject
         if (state() == LinkState::Open)
             emit lineQuiet();
     });
+    connect(m_inner, &Link::frameOnWire, this, &Link::frameOnWire);
     setState(m_inner->state());
 }
 

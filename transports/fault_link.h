@@ -44,6 +44,7 @@ public:
     void close() override;
     void send(const QByteArray &bytes) override;
     void expectReply(qsizetype bytes) override { m_inner->expectReply(bytes); }
+    bool reportsWireTime() const override { return m_inner->reportsWireTime(); }
     // "sim opat [fault drop=0.02,seed=7]"
     QString description() const override;
 

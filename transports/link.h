@@ -34,6 +34,10 @@ public:
     // "serial /dev/ttyUSB0 19200 8E1", "tcp 127.0.0.1:502", "sim opat" — for the status bar
     // and the telegram log.
     virtual QString description() const = 0;
+    // True when the link says with frameOnWire() when each frame given to send() went to the
+    // line. A serial link can hold a request back (the Modbus RTU master's t3.5 of silence, a
+    // thread hop to its worker); the others send at once, so the send() is the time.
+    virtual bool reportsWireTime() const { return false; }
 
     LinkState state() const { return m_state; }
 
@@ -44,6 +48,11 @@ signals:
     // a frame yet never will be — except, to the adapter, the start of the answer it awaits (a PC
     // sees the bytes in its driver's bursts, devices/access/modbus_adapter.cpp).
     void lineQuiet();
+    // The oldest frame given to send() and not reported yet went to the driver (its first byte)
+    // at this std::chrono::steady_clock time, ns since the clock's epoch. Only from links whose
+    // reportsWireTime() is true; a frame that never went out (the link failed first) is not
+    // reported.
+    void frameOnWire(qint64 steadyNs);
     void failed(const QString &reason);
     void stateChanged(vt::link::LinkState state);
 

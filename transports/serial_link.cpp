@@ -40,6 +40,7 @@ void SerialLink::ensureWorker()
     // Queued from the worker thread; direct once the worker is on this thread (exchanges without
     // line timing). opened() and failed() stay queued: the link reacts outside the worker's calls.
     connect(m_worker, &SerialWorker::received, this, &SerialLink::onReceived, Qt::AutoConnection);
+    connect(m_worker, &SerialWorker::wrote, this, &SerialLink::onWrote, Qt::AutoConnection);
     m_thread.start();
 }
 
@@ -130,6 +131,12 @@ void SerialLink::onFailed(quint64 session, const QString &reason)
         return;
     setState(LinkState::Failed);
     emit failed(reason);
+}
+
+void SerialLink::onWrote(quint64 session, qint64 steadyNs)
+{
+    if (session == m_session && state() == LinkState::Open)
+        emit frameOnWire(steadyNs);
 }
 
 void SerialLink::onReceived(quint64 session, const QByteArray &bytes, bool quiet)

@@ -40,6 +40,8 @@ public:
     bool exchangesOnLinkThread() const { return m_exchangesHere; }
     // "serial /dev/ttyUSB0 19200 8E1"
     QString description() const override;
+    // frameOnWire(): when the worker handed each frame to the driver, after the t3.5 wait.
+    bool reportsWireTime() const override { return true; }
 
     const SerialSettings &settings() const { return m_settings; }
     // Takes effect at the next open().
@@ -49,6 +51,7 @@ private:
     void onOpened(quint64 session);
     void onFailed(quint64 session, const QString &reason);
     void onReceived(quint64 session, const QByteArray &bytes, bool quiet);
+    void onWrote(quint64 session, qint64 steadyNs);
     void ensureWorker();
     // Queues the worker's move back to the worker thread (a no-op when it is there): whatever
     // is queued for it afterwards runs there.

@@ -39,6 +39,12 @@ std::int64_t nowUs()
     return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
 }
 
+qint64 nowNs()
+{
+    using namespace std::chrono;
+    return duration_cast<nanoseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
 // Waits at most `us` (microsecond precision, unlike a QTimer) for input on `fd`: true when
 // something can be read (or the line hung up), false when the time passed.
 bool inputWithin(int fd, std::int64_t us)
@@ -168,9 +174,12 @@ void SerialWorker::write(quint64 session, const QByteArray &bytes, qsizetype rep
         if (!m_port || session != m_session)
             return; // the port failed while the line was watched
     }
+    const qint64 startNs = nowNs();
     const long long written = m_port->write(bytes.constData(), size, timeout);
-    if (written > 0)
+    if (written > 0) {
         m_line->sent(static_cast<std::size_t>(written), nowUs());
+        emit wrote(session, startNs);
+    }
     m_replyBytes = replyBytes;
     if (written < 0)
         fail(tr("Write to %1 failed: %2").arg(m_settings.portName, m_port->errorText()));
@@ -180,6 +189,7 @@ void SerialWorker::write(quint64 session, const QByteArray &bytes, qsizetype rep
 
 void SerialWorker::writeWithoutWaiting(const QByteArray &bytes, unsigned timeoutMs)
 {
+    m_frameStarts.push_back(m_output.size());
     m_output.append(bytes);
     if (!m_outputDeadline) {
         m_outputDeadline = new QTimer(this);
@@ -203,8 +213,21 @@ void SerialWorker::writeOut()
         return;
     }
     if (n > 0) {
+        const qint64 takenNs = nowNs();
         m_line->sent(static_cast<std::size_t>(n), nowUs());
         m_output.remove(0, static_cast<qsizetype>(n));
+        std::vector<qint64> started; // reported after the bookkeeping: a slot may close the port
+        while (!m_frameStarts.empty() && m_frameStarts.front() < n) {
+            m_frameStarts.pop_front();
+            started.push_back(takenNs);
+        }
+        for (qsizetype &start : m_frameStarts)
+            start -= static_cast<qsizetype>(n);
+        const quint64 session = m_session;
+        for (const qint64 ns : started)
+            emit wrote(session, ns);
+        if (!m_port || session != m_session)
+            return;
     }
     if (m_output.isEmpty()) {
         m_outputDeadline->stop();
@@ -304,6 +327,7 @@ void SerialWorker::release()
         }
     }
     m_output.clear();
+    m_frameStarts.clear();
     if (m_outputDeadline)
         m_outputDeadline->stop();
     m_port.reset();

@@ -21,6 +21,7 @@
 #include <QByteArray>
 #include <QObject>
 #include <QString>
+#include <deque>
 #include <memory>
 #include <optional>
 
@@ -58,6 +59,9 @@ signals:
     void failed(quint64 session, const QString &reason);
     // `quiet`: the line went quiet for t3.5 after these bytes (the frame has ended).
     void received(quint64 session, const QByteArray &bytes, bool quiet);
+    // The driver took the first byte of the oldest frame write() was given and not reported yet
+    // at this steady_clock time (ns since its epoch): with the line timing, after the t3.5 wait.
+    void wrote(quint64 session, qint64 steadyNs);
 
 private:
     void onReadable();
@@ -77,6 +81,7 @@ private:
     QSocketNotifier *m_writeNotifier = nullptr; // while m_output waits for room in the driver
     QTimer *m_outputDeadline = nullptr;         // m_output not written by then: the write failed
     QByteArray m_output;                        // written without waiting, not taken yet
+    std::deque<qsizetype> m_frameStarts; // where in m_output the frames not reported yet start
     quint64 m_session = 0;
     SerialSettings m_settings;
     std::optional<dev::modbus::RtuLineClock> m_line; // the open port's line timing

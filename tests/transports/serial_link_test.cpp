@@ -15,6 +15,7 @@
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <chrono>
 #include <cstring>
 #include <gtest/gtest.h>
 #include <memory>
@@ -29,6 +30,13 @@ using vt::link::StopBits;
 using vt::test::PtyPair;
 using vt::test::waitForCount;
 using vt::test::waitForState;
+
+// std::chrono::steady_clock, as Link::frameOnWire() reports it.
+qint64 steadyNs()
+{
+    using namespace std::chrono;
+    return duration_cast<nanoseconds>(steady_clock::now().time_since_epoch()).count();
+}
 
 class SerialLinkPty : public ::testing::Test
 {
@@ -179,16 +187,26 @@ TEST_F(SerialLinkPty, KeepsTheSilentIntervalBeforeARequest)
     link.open();
     ASSERT_TRUE(waitForState(link, LinkState::Open));
     m_pty->startReading();
+    ASSERT_TRUE(link.reportsWireTime());
+    QSignalSpy onWire(&link, &SerialLink::frameOnWire);
     const QByteArray request = QByteArray::fromHex("0103000000084a0c");
     QElapsedTimer sinceAnswer;
     QObject::connect(
         &link, &SerialLink::received, &link, [&] { link.send(request); }, Qt::SingleShotConnection);
     sinceAnswer.start(); // before the write: the link reads the answer after this
+    const qint64 answerNs = steadyNs();
     ASSERT_TRUE(m_pty->write(QByteArray::fromHex("0103020001")));
     ASSERT_TRUE(vt::test::waitUntil([&] { return m_pty->received().size() >= request.size(); }));
     // A lower bound: the link cannot have sent before the interval it must keep.
-    EXPECT_GE(sinceAnswer.nsecsElapsed(), vt::dev::modbus::silentIntervalUs(1200, 11) * 1000);
+    const qint64 t35Ns = vt::dev::modbus::silentIntervalUs(1200, 11) * 1000;
+    EXPECT_GE(sinceAnswer.nsecsElapsed(), t35Ns);
     EXPECT_EQ(m_pty->received(), request);
+    // The time the link reports for the request is when it went out, after the interval: what
+    // the telegram list shows (not when send() was called, right after the answer).
+    ASSERT_TRUE(waitForCount(onWire, 1));
+    const qint64 onWireNs = onWire.value(0).value(0).toLongLong();
+    EXPECT_GE(onWireNs - answerNs, t35Ns);
+    EXPECT_LE(onWireNs, steadyNs());
 }
 
 TEST_F(SerialLinkPty, HcsDefaultIs19200Baud8E1OnTheLine)
@@ -268,9 +286,15 @@ TEST_F(SerialLinkPty, WithoutLineTimingTheExchangesRunOnTheLinksThread)
     EXPECT_TRUE(link.exchangesOnLinkThread());
     m_pty->startReading();
 
+    QSignalSpy onWire(&link, &SerialLink::frameOnWire);
     for (int round = 0; round < 3; ++round) {
         const QByteArray request = QByteArray::fromHex("0103000000084a0c");
+        const qint64 beforeNs = steadyNs();
         link.send(request);
+        // Written within send() (the driver took it at once): reported there and then.
+        ASSERT_EQ(onWire.count(), round + 1);
+        EXPECT_GE(onWire.last().value(0).toLongLong(), beforeNs);
+        EXPECT_LE(onWire.last().value(0).toLongLong(), steadyNs());
         ASSERT_TRUE(vt::test::waitUntil(
             [&] { return m_pty->received().size() >= (round + 1) * request.size(); },
             vt::test::kWaitMs));
