@@ -33,16 +33,15 @@ constexpr qsizetype kMaxFrameRead = 1024;
 // Waits for silence before a write are bounded too (a line that never goes quiet).
 constexpr int kMaxSilenceWaits = 64;
 
-std::int64_t nowUs()
-{
-    using namespace std::chrono;
-    return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
-}
-
 qint64 nowNs()
 {
     using namespace std::chrono;
     return duration_cast<nanoseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+std::int64_t nowUs()
+{
+    return nowNs() / 1000;
 }
 
 // Waits at most `us` (microsecond precision, unlike a QTimer) for input on `fd`: true when
@@ -216,16 +215,14 @@ void SerialWorker::writeOut()
         const qint64 takenNs = nowNs();
         m_line->sent(static_cast<std::size_t>(n), nowUs());
         m_output.remove(0, static_cast<qsizetype>(n));
-        std::vector<qint64> started; // reported after the bookkeeping: a slot may close the port
-        while (!m_frameStarts.empty() && m_frameStarts.front() < n) {
+        int started = 0; // reported after the bookkeeping: a slot may close the port
+        for (; !m_frameStarts.empty() && m_frameStarts.front() < n; ++started)
             m_frameStarts.pop_front();
-            started.push_back(takenNs);
-        }
         for (qsizetype &start : m_frameStarts)
             start -= static_cast<qsizetype>(n);
         const quint64 session = m_session;
-        for (const qint64 ns : started)
-            emit wrote(session, ns);
+        for (; started > 0 && m_port && session == m_session; --started)
+            emit wrote(session, takenNs);
         if (!m_port || session != m_session)
             return;
     }

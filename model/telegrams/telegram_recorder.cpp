@@ -73,9 +73,14 @@ void TelegramRecorder::append(TelegramRecord record)
     flushPending(); // what came before this goes in before it
     if (!m_log)
         return;
+    label(record);
+    m_log->append(std::move(record));
+}
+
+void TelegramRecorder::label(TelegramRecord &record) const
+{
     record.link = m_session.link().description();
     record.protocol = QString::fromLatin1(dev::key(m_session.adapter().protocol()));
-    m_log->append(std::move(record));
 }
 
 void TelegramRecorder::onSent(const QByteArray &bytes, int module)
@@ -89,8 +94,7 @@ void TelegramRecorder::onSent(const QByteArray &bytes, int module)
         return;
     }
     flushPending();
-    r.link = m_session.link().description();
-    r.protocol = QString::fromLatin1(dev::key(m_session.adapter().protocol()));
+    label(r);
     r.monotonicNs = m_log->elapsedNs(); // the hand-over, should the line's time not come
     r.wallClock = QDateTime::currentDateTimeUtc();
     m_pending = std::move(r);

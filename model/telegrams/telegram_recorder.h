@@ -29,6 +29,8 @@ private:
     void onSent(const QByteArray &bytes, int module);
     void onOnWire(qint64 steadyNs);
     void append(TelegramRecord record);
+    // The link and protocol the session uses now.
+    void label(TelegramRecord &record) const;
     // The request held back goes in now, with the time it was handed to the link.
     void flushPending();
 
